@@ -1,0 +1,63 @@
+"""Exceptions and warnings of machdyn: one base class each.
+
+Every message names the field, the rule and the value received, e.g.
+``The length of body 'crank' must be > 0 m; got -0.15 m.``
+"""
+
+from __future__ import annotations
+
+
+class MachdynError(Exception):
+    """Base class of every error machdyn raises on purpose."""
+
+
+class InputError(MachdynError, ValueError):
+    """An input value breaks a rule (non-positive length, NaN, unknown name, ...)."""
+
+
+class AssemblyError(MachdynError):
+    """A linkage cannot be assembled (closed) at some or all of the requested crank angles."""
+
+
+class SingularPositionError(MachdynError):
+    """A linkage passes through a dead (toggle) position where velocities or forces are undefined."""
+
+
+class ProblemFileError(MachdynError):
+    """A problem file has one or more mistakes; ``problems`` lists each as (path, message)."""
+
+    def __init__(self, problems: list[tuple[str, str]], source: str | None = None):
+        self.problems = list(problems)
+        self.source = source
+        where = f" in {source}" if source else ""
+        lines = [f"{len(self.problems)} problem(s){where}:"]
+        lines += [f"  {path}: {message}" if path else f"  {message}" for path, message in self.problems]
+        super().__init__("\n".join(lines))
+
+
+class MachdynWarning(UserWarning):
+    """Base class of every warning machdyn emits (a check near its limit, a paper's value differing, ...)."""
+
+
+def check_finite(name: str, value, unit: str = "") -> None:
+    """Raise :class:`InputError` if ``value`` (scalar or array) holds NaN or infinity."""
+    import numpy as np
+
+    arr = np.asarray(value, dtype=float)
+    if not np.all(np.isfinite(arr)):
+        bad = arr[~np.isfinite(arr)].ravel()[0] if arr.ndim else arr
+        raise InputError(f"The {name} must be a finite number; got {bad}{' ' + unit if unit else ''}.")
+
+
+def check_positive(name: str, value, unit: str = "", *, allow_zero: bool = False) -> None:
+    """Raise :class:`InputError` unless every element of ``value`` is finite and > 0 (or >= 0)."""
+    import numpy as np
+
+    check_finite(name, value, unit)
+    arr = np.asarray(value, dtype=float)
+    bad = arr < 0 if allow_zero else arr <= 0
+    if np.any(bad):
+        got = arr[bad].ravel()[0] if arr.ndim else float(arr)
+        rule = ">= 0" if allow_zero else "> 0"
+        suffix = f" {unit}" if unit else ""
+        raise InputError(f"The {name} must be {rule}{suffix}; got {got:g}{suffix}.")

@@ -1,0 +1,35 @@
+"""The planar linkage engine: exact kinematics, kinetostatics and energy, vectorised over crank positions
+and design variants. See :mod:`machdyn.linkage.model` for the model and its conventions."""
+
+from .analysis import Analysis, analyse
+from .builders import double_slider_crank, four_bar, inverted_slider_crank, six_bar, slider_crank
+from .diagnostics import Diagnostics, diagnose, grashof_type
+from .energy import Energy, WorkBalance, energy
+from .harmonics import Harmonics, harmonics
+from .kinematics import Kinematics, SlideMotion, angle_ranges, crank_angles, kinematics
+from .kinetostatics import Forces, Joint, Reaction, kinetostatics
+from .model import (
+    PRP,
+    RPR,
+    RRP,
+    RRR,
+    Body,
+    BodyTorque,
+    Crank,
+    Guide,
+    Mechanism,
+    PointForce,
+    PointMass,
+    Spring,
+    joints,
+)
+from .state import BodyState, PointState
+from .sweep import SweepResult, sweep
+
+__all__ = [
+    "PRP", "RPR", "RRP", "RRR", "Analysis", "Body", "BodyState", "BodyTorque", "Crank", "Diagnostics", "Energy",
+    "Forces", "Guide", "Harmonics", "Joint", "Kinematics", "Mechanism", "PointForce", "PointMass", "PointState",
+    "Reaction", "SlideMotion", "Spring", "SweepResult", "WorkBalance", "analyse", "angle_ranges", "crank_angles",
+    "diagnose", "double_slider_crank", "energy", "four_bar", "grashof_type", "harmonics", "inverted_slider_crank",
+    "joints", "kinematics", "kinetostatics", "six_bar", "slider_crank", "sweep",
+]

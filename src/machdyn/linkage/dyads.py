@@ -1,0 +1,322 @@
+"""Closed-form solutions of the class-II dyads (Assur groups): position with an explicit assembly branch,
+velocity, acceleration, and the joint reactions of kinetostatics.
+
+Each position solution is the intersection of two loci (circle-circle, circle-line, line through a pivot at
+a fixed offset, line-line). Velocities and accelerations follow from differentiating the loop-closure
+equation once and twice; each gives a 2x2 linear system solved by Cramer's rule. Reactions follow from the
+equilibrium of the dyad's two bodies (3 equations each) with the loads on them known: the Assur-group method
+of kinetostatics. Sources: Artobolevsky, *Theory of Mechanisms and Machines*, ch. 4-5 (Assur groups and their
+kinetostatics); Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th ed., ch. 2-4 and 13;
+the closed form of seed 003 as corrected in seed-reproduction.md §003.2.
+
+Vector notation: cross(a, b) = a_x b_y - a_y b_x, k x a = (-a_y, a_x). All inputs broadcast (designs x
+positions). Each kinematic solver returns the two new body states, an ``assembled`` mask, the determinant
+``det`` of its linear system (zero at a dead/toggle position), the transmission angle [rad] and slides.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .state import BodyState, PointState, body_from_point
+
+# Relative tolerance on the squared closure distance below which a position counts as just assembled
+# (a toggle position computed in floating point may come out as -1e-16 * L^2).
+ASSEMBLY_TOL = 1e-12
+
+
+@dataclass(slots=True)
+class DyadMotion:
+    a: BodyState
+    b: BodyState
+    assembled: np.ndarray
+    det: np.ndarray
+    transmission: np.ndarray
+    slides: dict  # body name -> (s, ds, dds)
+    inner: PointState | None  # the inner revolute joint, where there is one
+
+
+def _line(local_from, local_to):
+    """Length and unit direction (in the body frame) from one local point to another."""
+    dx = local_to[0] - local_from[0]
+    dy = local_to[1] - local_from[1]
+    length = np.hypot(dx, dy)
+    return length, dx / length, dy / length
+
+
+def _orient(px, py, length, cd, sd):
+    """cos/sin of a body's angle given the global vector (px, py) of its body-frame segment (length, cd, sd)."""
+    c = (px * cd + py * sd) / length
+    s = (py * cd - px * sd) / length
+    return c, s
+
+
+def rrr_motion(P: PointState, Q: PointState, a_pin, a_inner, b_pin, b_inner, branch: int) -> DyadMotion:
+    """RRR dyad: link a (pin P to inner joint B), link b (pin Q to B).
+
+    Position: B = P + a u + branch * h n with d = |Q - P|, u = (Q - P)/d, n = k x u,
+    a = (La^2 - Lb^2 + d^2)/(2 d), h = sqrt(La^2 - a^2) (circle-circle intersection; seed 003 eqs 2-7 as
+    corrected in seed-reproduction.md §003.2). Assembles where |La - Lb| <= d <= La + Lb.
+    Velocity: omega_a = (w . q)/cross(p, q), omega_b = (w . p)/cross(p, q), p = B - P, q = B - Q,
+    w = v_Q - v_P; acceleration the same with w' = a_Q - a_P - omega_b^2 q + omega_a^2 p.
+    Dead (toggle) position: cross(p, q) = 0 (the links in line).
+    """
+    La, cda, sda = _line(a_pin, a_inner)
+    Lb, cdb, sdb = _line(b_pin, b_inner)
+    dx = Q.x - P.x
+    dy = Q.y - P.y
+    d2 = dx * dx + dy * dy
+    d = np.sqrt(d2)
+    along = (La * La - Lb * Lb + d2) / (2.0 * d)
+    h2 = La * La - along * along
+    assembled = h2 >= -ASSEMBLY_TOL * La * La
+    h = np.sqrt(np.where(assembled, np.maximum(h2, 0.0), np.nan))
+    ux = dx / d
+    uy = dy / d
+    bx = P.x + along * ux - branch * h * uy
+    by = P.y + along * uy + branch * h * ux
+    px, py = bx - P.x, by - P.y
+    qx, qy = bx - Q.x, by - Q.y
+    det = px * qy - py * qx
+    wx, wy = Q.vx - P.vx, Q.vy - P.vy
+    om_a = (wx * qx + wy * qy) / det
+    om_b = (wx * px + wy * py) / det
+    wax = Q.ax - P.ax - om_b * om_b * qx + om_a * om_a * px
+    way = Q.ay - P.ay - om_b * om_b * qy + om_a * om_a * py
+    al_a = (wax * qx + way * qy) / det
+    al_b = (wax * px + way * py) / det
+    B = PointState(
+        bx,
+        by,
+        P.vx - om_a * py,
+        P.vy + om_a * px,
+        P.ax - al_a * py - om_a * om_a * px,
+        P.ay + al_a * px - om_a * om_a * py,
+    )
+    ca, sa = _orient(px, py, La, cda, sda)
+    cb, sb = _orient(qx, qy, Lb, cdb, sdb)
+    body_a = body_from_point(B, a_inner, np.arctan2(sa, ca), om_a, al_a, ca, sa)
+    body_b = body_from_point(B, b_inner, np.arctan2(sb, cb), om_b, al_b, cb, sb)
+    # Angle between the two links at B, 0..pi.
+    transmission = np.arccos(np.clip((px * qx + py * qy) / (La * Lb), -1.0, 1.0))
+    return DyadMotion(body_a, body_b, assembled, det / (La * Lb), transmission, {}, B)
+
+
+def _guide_frame(S: BodyState, g_local, angle):
+    """Global point G, unit direction u of a guide fixed in body S, and the guide's global angle."""
+    G = S.point(*g_local)
+    ca, sa = np.cos(angle), np.sin(angle)
+    ux = S.cos * ca - S.sin * sa
+    uy = S.sin * ca + S.cos * sa
+    return G, ux, uy, S.angle + angle
+
+
+def rrp_motion(P: PointState, S: BodyState, g_local, g_angle, a_pin, a_inner, b_inner, branch) -> DyadMotion:
+    """RRP dyad: link a (pin P to inner joint B), slider b whose point B moves along a guide line of body S.
+
+    Position: B = G + s u, s = t0 + branch * sqrt(La^2 - e^2), with t0 = (P - G) . u and
+    e = cross(u, P - G) the distance of P from the line (circle-line intersection; the exact offset
+    slider-crank of seed 000 eqs 5-7 and seed 002 eqs 1-3 is the special case of a ground guide).
+    Velocity: omega_a (k x p) - s' u = v_B|S - v_P with p = B - P, solved by dotting with n = k x u and u;
+    acceleration likewise, with the Coriolis term 2 s' omega_S n of a moving guide.
+    Dead (toggle) position: p . u = 0 (the link perpendicular to the guide).
+    """
+    La, cda, sda = _line(a_pin, a_inner)
+    G, ux, uy, g_ang = _guide_frame(S, g_local, g_angle)
+    rx, ry = P.x - G.x, P.y - G.y
+    t0 = rx * ux + ry * uy
+    e = ux * ry - uy * rx
+    disc = La * La - e * e
+    assembled = disc >= -ASSEMBLY_TOL * La * La
+    s = t0 + branch * np.sqrt(np.where(assembled, np.maximum(disc, 0.0), np.nan))
+    bx = G.x + s * ux
+    by = G.y + s * uy
+    px, py = bx - P.x, by - P.y
+    nx, ny = -uy, ux
+    det = px * ux + py * uy
+    cross_pu = px * uy - py * ux
+    gx, gy = bx - G.x, by - G.y
+    vbx = G.vx - S.omega * gy
+    vby = G.vy + S.omega * gx
+    wx, wy = vbx - P.vx, vby - P.vy
+    om_a = (wx * nx + wy * ny) / det
+    ds = om_a * cross_pu - (wx * ux + wy * uy)
+    w2s = S.omega * S.omega
+    abx = G.ax - S.alpha * gy - w2s * gx + 2.0 * ds * S.omega * nx
+    aby = G.ay + S.alpha * gx - w2s * gy + 2.0 * ds * S.omega * ny
+    wax = abx - P.ax + om_a * om_a * px
+    way = aby - P.ay + om_a * om_a * py
+    al_a = (wax * nx + way * ny) / det
+    dds = al_a * cross_pu - (wax * ux + way * uy)
+    B = PointState(
+        bx,
+        by,
+        P.vx - om_a * py,
+        P.vy + om_a * px,
+        P.ax - al_a * py - om_a * om_a * px,
+        P.ay + al_a * px - om_a * om_a * py,
+    )
+    ca, sa = _orient(px, py, La, cda, sda)
+    body_a = body_from_point(B, a_inner, np.arctan2(sa, ca), om_a, al_a, ca, sa)
+    body_b = body_from_point(B, b_inner, g_ang, S.omega, S.alpha, ux, uy)
+    transmission = np.arcsin(np.clip(np.abs(det) / La, 0.0, 1.0))
+    return DyadMotion(body_a, body_b, assembled, det / La, transmission, {"b": (s, ds, dds)}, B)
+
+
+def rpr_motion(P: PointState, Q: PointState, a_pin, b_pin, slide_local, slide_angle, branch) -> DyadMotion:
+    """RPR dyad: block a pinned at P slides along a line of rocker b, which is pinned at Q.
+
+    The line passes at the signed offset e = cross(u_b, c - q) from the rocker's pin (c: the slide point,
+    q: the pin, u_b: slide direction, all in b's frame). Position: psi = atan2(P - Q) - asin(e/D) for
+    branch +1 (pi - asin(e/D) for -1), D = |P - Q|, theta_b = psi - slide_angle; block travel
+    t = u . (P - Q - R(theta_b)(c - q)). Assembles where D >= |e|.
+    Velocity: omega_b (k x d) + t' u = v_P - v_Q (d = P - Q); acceleration with the Coriolis term
+    2 omega_b t' n. Dead position: d . u = 0. (Inverted slider-crank: Uicker et al., §3.6.)
+    """
+    cx = slide_local[0] - b_pin[0]
+    cy = slide_local[1] - b_pin[1]
+    cb, sb_ = np.cos(slide_angle), np.sin(slide_angle)
+    e = cb * cy - sb_ * cx
+    dx, dy = P.x - Q.x, P.y - Q.y
+    D = np.hypot(dx, dy)
+    ratio = e / D
+    assembled = np.abs(ratio) <= 1.0 + ASSEMBLY_TOL
+    shift = np.arcsin(np.clip(np.where(assembled, ratio, np.nan), -1.0, 1.0))
+    psi = np.arctan2(dy, dx) - (shift if branch == 1 else np.pi - shift)
+    ux, uy = np.cos(psi), np.sin(psi)
+    theta_b = psi - slide_angle
+    c_b, s_b = np.cos(theta_b), np.sin(theta_b)
+    rcx = c_b * cx - s_b * cy
+    rcy = s_b * cx + c_b * cy
+    t = ux * (dx - rcx) + uy * (dy - rcy)
+    nx, ny = -uy, ux
+    det = dx * ux + dy * uy
+    cross_du = dx * uy - dy * ux
+    wx, wy = P.vx - Q.vx, P.vy - Q.vy
+    om = (wx * nx + wy * ny) / det
+    dt = (wx * ux + wy * uy) - om * cross_du
+    wax = P.ax - Q.ax + om * om * dx - 2.0 * om * dt * nx
+    way = P.ay - Q.ay + om * om * dy - 2.0 * om * dt * ny
+    al = (wax * nx + way * ny) / det
+    ddt = (wax * ux + way * uy) - al * cross_du
+    rocker = body_from_point(Q, b_pin, theta_b, om, al, c_b, s_b)
+    block = body_from_point(P, a_pin, psi, om, al, ux, uy)
+    transmission = np.arcsin(np.clip(np.abs(det) / D, 0.0, 1.0))
+    return DyadMotion(block, rocker, assembled, det / D, transmission, {"a": (t, dt, ddt)}, None)
+
+
+def prp_motion(Si: BodyState, g1_local, g1_angle, Sj: BodyState, g2_local, g2_angle, a_inner, b_inner) -> DyadMotion:
+    """PRP dyad: slider a on a guide of body Si, slider b on a guide of body Sj, pinned together at B.
+
+    Position: B = G1 + s1 u1 = G2 + s2 u2 with s1 = cross(G2 - G1, u2)/cross(u1, u2),
+    s2 = cross(G2 - G1, u1)/cross(u1, u2) (line-line intersection). Velocity and acceleration from the same
+    2x2 system with the guides' own motion and Coriolis terms. Dead position: parallel guides.
+    """
+    G1, u1x, u1y, ang1 = _guide_frame(Si, g1_local, g1_angle)
+    G2, u2x, u2y, ang2 = _guide_frame(Sj, g2_local, g2_angle)
+    cr = u1x * u2y - u1y * u2x
+    assembled = np.abs(cr) > 1e-12
+    cr = np.where(assembled, cr, np.nan)
+    Dx, Dy = G2.x - G1.x, G2.y - G1.y
+    s1 = (Dx * u2y - Dy * u2x) / cr
+    s2 = (Dx * u1y - Dy * u1x) / cr
+    bx, by = G1.x + s1 * u1x, G1.y + s1 * u1y
+    g1x, g1y = bx - G1.x, by - G1.y
+    g2x, g2y = bx - G2.x, by - G2.y
+    vix, viy = G1.vx - Si.omega * g1y, G1.vy + Si.omega * g1x
+    vjx, vjy = G2.vx - Sj.omega * g2y, G2.vy + Sj.omega * g2x
+    wx, wy = vjx - vix, vjy - viy
+    ds1 = (wx * u2y - wy * u2x) / cr
+    ds2 = (wx * u1y - wy * u1x) / cr
+    wi2, wj2 = Si.omega * Si.omega, Sj.omega * Sj.omega
+    aix = G1.ax - Si.alpha * g1y - wi2 * g1x - 2.0 * ds1 * Si.omega * u1y
+    aiy = G1.ay + Si.alpha * g1x - wi2 * g1y + 2.0 * ds1 * Si.omega * u1x
+    ajx = G2.ax - Sj.alpha * g2y - wj2 * g2x - 2.0 * ds2 * Sj.omega * u2y
+    ajy = G2.ay + Sj.alpha * g2x - wj2 * g2y + 2.0 * ds2 * Sj.omega * u2x
+    wax, way = ajx - aix, ajy - aiy
+    dds1 = (wax * u2y - way * u2x) / cr
+    dds2 = (wax * u1y - way * u1x) / cr
+    B = PointState(bx, by, vix + ds1 * u1x, viy + ds1 * u1y, aix + dds1 * u1x, aiy + dds1 * u1y)
+    body_a = body_from_point(B, a_inner, ang1, Si.omega, Si.alpha, u1x, u1y)
+    body_b = body_from_point(B, b_inner, ang2, Sj.omega, Sj.alpha, u2x, u2y)
+    transmission = np.arcsin(np.clip(np.abs(cr), 0.0, 1.0))
+    return DyadMotion(body_a, body_b, assembled, cr, transmission, {"a": (s1, ds1, dds1), "b": (s2, ds2, dds2)}, B)
+
+
+# ------------------------------------------------------------------------------------------ kinetostatics
+# Loads on a body are (Fx, Fy, M) with M about the global origin. The moment about a point X is
+# M - cross(X, F). Each solver returns the reactions ON the dyad's bodies.
+
+
+def _moment_about(load, x, y):
+    fx, fy, m = load
+    return m - (x * fy - y * fx)
+
+
+def rrr_forces(load_a, load_b, P, Q, B):
+    """RRR reactions: F_P on a at its pin, F_Q on b at its pin, F_ab on b from a at B.
+
+    Moments about B: cross(p, F_P) = -M_a^B, cross(q, F_Q) = -M_b^B with p = P - B, q = Q - B, and
+    F_P + F_Q = -(F_a + F_b); solved by Cramer's rule (Artobolevsky, ch. 5, the RRR group).
+    """
+    Sx = -(load_a[0] + load_b[0])
+    Sy = -(load_a[1] + load_b[1])
+    px, py = P.x - B.x, P.y - B.y
+    qx, qy = Q.x - B.x, Q.y - B.y
+    c1 = -_moment_about(load_a, B.x, B.y)
+    c2 = (qx * Sy - qy * Sx) + _moment_about(load_b, B.x, B.y)
+    det = px * qy - py * qx
+    fpx = (c1 * qx - px * c2) / det
+    fpy = (qy * c1 - py * c2) / det
+    fqx, fqy = Sx - fpx, Sy - fpy
+    return (fpx, fpy), (fqx, fqy), (fpx + load_a[0], fpy + load_a[1])
+
+
+def rrp_forces(load_a, load_b, P, B, ux, uy):
+    """RRP reactions: F_P on link a at its pin, F_ab on the slider from a at B, and the guide's normal force
+    N (along n = k x u, at B) and couple C on the slider.
+
+    N = (cross(p, S) + M_a^B)/cross(p, n), p = P - B, S = -(F_a + F_b); C = -M_b^B (Artobolevsky, ch. 5).
+    """
+    Sx = -(load_a[0] + load_b[0])
+    Sy = -(load_a[1] + load_b[1])
+    px, py = P.x - B.x, P.y - B.y
+    nx, ny = -uy, ux
+    N = ((px * Sy - py * Sx) + _moment_about(load_a, B.x, B.y)) / (px * ny - py * nx)
+    fpx, fpy = Sx - N * nx, Sy - N * ny
+    couple = -_moment_about(load_b, B.x, B.y)
+    return (fpx, fpy), (fpx + load_a[0], fpy + load_a[1]), N, couple
+
+
+def rpr_forces(load_a, load_b, P, Q, ux, uy):
+    """RPR reactions: F_P on the block at its pin, F_Q on the rocker at its pin, and the slide's normal force
+    N (along n = k x u, acting on the block at P) and couple C on the block.
+
+    C = -M_a^P; N = (M_b^Q + M_a^P)/cross(P - Q, n); F_P = -N n - F_a; F_Q = N n - F_b.
+    """
+    nx, ny = -uy, ux
+    ma_p = _moment_about(load_a, P.x, P.y)
+    mb_q = _moment_about(load_b, Q.x, Q.y)
+    dx, dy = P.x - Q.x, P.y - Q.y
+    N = (mb_q + ma_p) / (dx * ny - dy * nx)
+    fp = (-N * nx - load_a[0], -N * ny - load_a[1])
+    fq = (N * nx - load_b[0], N * ny - load_b[1])
+    return fp, fq, N, -ma_p
+
+
+def prp_forces(load_a, load_b, B, u1, u2):
+    """PRP reactions: guide normal forces N_a (on a along n1), N_b (on b along n2) at B, their couples, and
+    F_ab on b from a at B. N_a = cross(S, n2)/cross(n1, n2), N_b = cross(n1, S)/cross(n1, n2)."""
+    Sx = -(load_a[0] + load_b[0])
+    Sy = -(load_a[1] + load_b[1])
+    n1x, n1y = -u1[1], u1[0]
+    n2x, n2y = -u2[1], u2[0]
+    cr = n1x * n2y - n1y * n2x
+    Na = (Sx * n2y - Sy * n2x) / cr
+    Nb = (n1x * Sy - n1y * Sx) / cr
+    ca = -_moment_about(load_a, B.x, B.y)
+    cb = -_moment_about(load_b, B.x, B.y)
+    f_ab = (Na * n1x + load_a[0], Na * n1y + load_a[1])
+    return Na, ca, Nb, cb, f_ab

@@ -1,0 +1,51 @@
+"""Harmonic content of a periodic result over one crank revolution (orders of the crank frequency).
+
+For N samples evenly spaced over one revolution, the discrete Fourier transform gives the exact
+coefficients of a trigonometric polynomial of degree < N/2: value(phi) = mean + sum_k A_k cos(k phi + psi_k)
+(Oppenheim & Schafer, *Discrete-Time Signal Processing*, 3rd ed., §8.1). Order 1 is the crank frequency.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import InputError
+
+
+@dataclass(frozen=True)
+class Harmonics:
+    """Mean, and amplitude and phase [rad] of orders 1..n (cosine form), along the last axis."""
+
+    orders: np.ndarray
+    mean: np.ndarray
+    amplitude: np.ndarray
+    phase: np.ndarray
+
+
+def harmonics(values, crank_angle, orders: int = 6) -> Harmonics:
+    """Harmonic orders 1..``orders`` of ``values`` sampled at ``crank_angle`` [rad] (the last axis).
+
+    The crank angles must be evenly spaced over exactly one revolution without repeating the first angle
+    (as :func:`~machdyn.linkage.kinematics.crank_angles` makes them), and ``orders`` < N/2.
+    """
+    phi = np.asarray(crank_angle, dtype=float)
+    y = np.asarray(values, dtype=float)
+    n = phi.size
+    if phi.ndim != 1 or n < 4:
+        raise InputError(f"Harmonics need a 1-D array of at least 4 crank angles; got shape {phi.shape}.")
+    if not np.allclose(np.diff(phi), 2 * np.pi / n, rtol=1e-9, atol=1e-12):
+        raise InputError(
+            "Harmonics need crank angles evenly spaced over one full revolution (end point excluded); "
+            f"got {n} angles from {np.degrees(phi[0]):.3f}° to {np.degrees(phi[-1]):.3f}°."
+        )
+    if not 1 <= orders < n / 2:
+        raise InputError(f"The number of harmonic orders must be between 1 and {n // 2 - 1}; got {orders}.")
+    if not np.all(np.isfinite(y)):
+        raise InputError("Harmonics need finite values at every crank angle; got NaN or infinity.")
+    spectrum = np.fft.rfft(y, axis=-1) / n
+    # Samples start at phi[0], not 0: shift the phase so it refers to phi = 0.
+    k = np.arange(orders + 1)
+    spectrum = spectrum[..., : orders + 1] * np.exp(-1j * k * phi[0])
+    return Harmonics(k[1:], spectrum[..., 0].real, 2.0 * np.abs(spectrum[..., 1:]), np.angle(spectrum[..., 1:]))

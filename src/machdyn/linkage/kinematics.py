@@ -1,0 +1,287 @@
+"""Exact kinematics of a linkage over crank angles and design variants: the crank, then each dyad in turn.
+
+``kinematics(mech, phi, speed, acceleration)`` returns positions, velocities and accelerations of every body
+and every named point. Arrays of design parameters (N,) and crank angles (M,) broadcast to (N, M).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import AssemblyError, InputError, check_finite
+from . import dyads as dy
+from .model import GROUND, PRP, RPR, RRP, RRR, Mechanism, split_ref
+from .state import BodyState, PointState, body_from_point, ground_state
+
+
+def _col(value):
+    """A design parameter as a column (N, 1) so that it broadcasts against crank angles (M,)."""
+    arr = np.asarray(value, dtype=float)
+    if arr.ndim == 0:
+        return float(arr)
+    return arr[:, None] if arr.ndim == 1 else arr
+
+
+def _local(mech: Mechanism, body: str, point: str):
+    if body == GROUND:
+        x, y = mech.ground[point]
+    else:
+        x, y = mech.body(body).points[point]
+    return _col(x), _col(y)
+
+
+@dataclass(frozen=True)
+class SlideMotion:
+    """Travel of a slider or block along its guide: s [m], its rate v [m/s] and acceleration a [m/s^2]."""
+
+    s: np.ndarray
+    v: np.ndarray
+    a: np.ndarray
+
+
+@dataclass(frozen=True)
+class DyadReport:
+    """Per-dyad quantities for diagnostics: the normalised determinant (0 at a dead position) and the
+    transmission angle [rad]."""
+
+    kind: str
+    bodies: tuple[str, str]
+    det: np.ndarray
+    transmission: np.ndarray
+
+
+@dataclass(frozen=True)
+class Kinematics:
+    """Motion of every body and point of ``mechanism`` at each crank angle (see :func:`kinematics`)."""
+
+    mechanism: Mechanism
+    crank_angle: np.ndarray
+    speed: np.ndarray
+    acceleration: np.ndarray
+    assembled: np.ndarray
+    bodies: dict
+    slides: dict
+    dyad_reports: tuple
+    _points: dict = field(default_factory=dict, repr=False)
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        return np.shape(self.assembled)
+
+    def body(self, name: str) -> BodyState:
+        """Angle [rad], omega [rad/s], alpha [rad/s^2] and frame-origin motion of a body."""
+        if name == GROUND:
+            return ground_state()
+        try:
+            return self.bodies[name]
+        except KeyError:
+            raise InputError(f"No body '{name}' in mechanism '{self.mechanism.name}'.") from None
+
+    def point(self, ref: str) -> PointState:
+        """Motion of the point ``"body.point"``: x, y [m], vx, vy [m/s], ax, ay [m/s^2]."""
+        if ref not in self._points:
+            body, point = split_ref(ref)
+            if body == GROUND:
+                x, y = self.mechanism.ground[point]
+                z = np.zeros(self.shape)
+                self._points[ref] = PointState(z + x, z + y, z, z, z, z)
+            else:
+                b = self.mechanism.body(body)
+                if point not in b.points:
+                    raise InputError(
+                        f"Body '{body}' has no point '{point}'; its points: {', '.join(b.points)}."
+                    )
+                self._points[ref] = self._broadcast(self.body(body).point(*map(_col, b.points[point])))
+        return self._points[ref]
+
+    def com(self, body: str) -> PointState:
+        """Motion of the centre of mass of ``body``."""
+        b = self.mechanism.body(body)
+        return self._broadcast(self.body(body).point(*map(_col, b.com)))
+
+    def local_point(self, body: str, xy) -> PointState:
+        """Motion of an arbitrary body-frame point ``xy`` [m] of ``body``."""
+        return self._broadcast(self.body(body).point(*map(_col, xy)))
+
+    def slide(self, body: str) -> SlideMotion:
+        """Travel of the slider/block ``body`` along its guide."""
+        try:
+            return self.slides[body]
+        except KeyError:
+            raise InputError(
+                f"Body '{body}' is not a slider or block; sliders: {', '.join(self.slides) or 'none'}."
+            ) from None
+
+    def _broadcast(self, p: PointState) -> PointState:
+        shape = self.shape
+        return PointState(*(np.broadcast_to(v, shape) for v in (p.x, p.y, p.vx, p.vy, p.ax, p.ay)))
+
+
+def crank_angles(count: int = 360, start: float = 0.0) -> np.ndarray:
+    """``count`` crank angles [rad] evenly over one revolution from ``start`` (end point excluded), the
+    sampling that makes cycle integrals and harmonics exact for smooth periodic results."""
+    if int(count) != count or count < 2:
+        raise InputError(f"The number of crank positions must be an integer >= 2; got {count!r}.")
+    return start + np.arange(int(count)) * (2.0 * np.pi / count)
+
+
+def kinematics(
+    mech: Mechanism,
+    crank_angle,
+    speed=1.0,
+    acceleration=0.0,
+    *,
+    on_fail: str = "raise",
+) -> Kinematics:
+    """Positions, velocities and accelerations of every body of ``mech`` at each crank angle.
+
+    Parameters
+    ----------
+    mech : the linkage (parameters may be arrays of N design variants).
+    crank_angle : crank angles phi [rad], scalar or (M,).
+    speed : crank angular velocity [rad/s], scalar or broadcastable to phi (a given speed law).
+    acceleration : crank angular acceleration [rad/s^2], scalar or broadcastable to phi.
+    on_fail : "raise" raises :class:`AssemblyError` listing the crank-angle ranges where the linkage cannot
+        close; "mask" returns NaN there, flagged ``assembled = False``.
+
+    Closed form per dyad (see :mod:`machdyn.linkage.dyads`), valid at every assembled, non-dead position.
+    """
+    if on_fail not in ("raise", "mask"):
+        raise InputError(f"on_fail must be 'raise' or 'mask'; got {on_fail!r}.")
+    phi = np.asarray(crank_angle, dtype=float)
+    check_finite("crank angle", phi, "rad")
+    check_finite("crank speed", speed, "rad/s")
+    check_finite("crank acceleration", acceleration, "rad/s^2")
+    omega = np.asarray(speed, dtype=float)
+    eps = np.asarray(acceleration, dtype=float)
+    if mech.design_count is not None:
+        omega = _col(omega) if omega.ndim == 1 and omega.shape != phi.shape else omega
+    states: dict[str, BodyState] = {GROUND: ground_state()}
+    slides: dict[str, SlideMotion] = {}
+    reports = []
+    # Crank: its frame turns with phi about the pivot.
+    crank = mech.body(mech.crank.body)
+    _, pivot_name = split_ref(mech.crank.pivot)
+    ox, oy = _local(mech, GROUND, pivot_name)
+    cu, cv = _local(mech, crank.name, pivot_name)
+    with np.errstate(all="ignore"):
+        c, s = np.cos(phi), np.sin(phi)
+        zero = np.zeros(np.broadcast_shapes(np.shape(phi), np.shape(ox), np.shape(omega), np.shape(eps)))
+        pivot = PointState(ox + zero, oy + zero, zero, zero, zero, zero)
+        states[crank.name] = body_from_point(pivot, (cu, cv), phi + zero, omega + zero, eps + zero, c, s)
+        assembled = np.ones(zero.shape, dtype=bool)
+        for d in mech.dyads:
+            motion = _solve_dyad(mech, d, states)
+            states[d.a], states[d.b] = motion.a, motion.b
+            assembled = assembled & motion.assembled
+            for key, (sv, dsv, ddsv) in motion.slides.items():
+                slides[d.a if key == "a" else d.b] = SlideMotion(sv, dsv, ddsv)
+            reports.append(DyadReport(type(d).__name__, (d.a, d.b), motion.det, motion.transmission))
+    assembled = np.broadcast_to(assembled, zero.shape)
+    if on_fail == "raise" and not np.all(assembled):
+        raise AssemblyError(_assembly_message(mech, phi, assembled))
+    states.pop(GROUND)
+    return Kinematics(
+        mech, phi, np.broadcast_to(omega, zero.shape), np.broadcast_to(eps, zero.shape), assembled,
+        states, slides, tuple(reports),
+    )
+
+
+def _point(mech: Mechanism, states, ref: str) -> PointState:
+    body, point = split_ref(ref)
+    return states[body].point(*_local(mech, body, point))
+
+
+def _solve_dyad(mech: Mechanism, d, states) -> dy.DyadMotion:
+    if isinstance(d, RRR):
+        pa = split_ref(d.pin_a)[1]
+        pb = split_ref(d.pin_b)[1]
+        return dy.rrr_motion(
+            _point(mech, states, d.pin_a),
+            _point(mech, states, d.pin_b),
+            _local(mech, d.a, pa),
+            _local(mech, d.a, d.inner),
+            _local(mech, d.b, pb),
+            _local(mech, d.b, d.inner),
+            d.branch,
+        )
+    if isinstance(d, RRP):
+        gb, gp = split_ref(d.guide.point)
+        return dy.rrp_motion(
+            _point(mech, states, d.pin_a),
+            states[gb],
+            _local(mech, gb, gp),
+            _col(d.guide.angle),
+            _local(mech, d.a, split_ref(d.pin_a)[1]),
+            _local(mech, d.a, d.inner),
+            _local(mech, d.b, d.inner),
+            d.branch,
+        )
+    if isinstance(d, RPR):
+        return dy.rpr_motion(
+            _point(mech, states, d.pin_a),
+            _point(mech, states, d.pin_b),
+            _local(mech, d.a, split_ref(d.pin_a)[1]),
+            _local(mech, d.b, split_ref(d.pin_b)[1]),
+            _local(mech, d.b, d.slide[0]),
+            _col(d.slide[1]),
+            d.branch,
+        )
+    if isinstance(d, PRP):
+        b1, p1 = split_ref(d.guide_a.point)
+        b2, p2 = split_ref(d.guide_b.point)
+        return dy.prp_motion(
+            states[b1],
+            _local(mech, b1, p1),
+            _col(d.guide_a.angle),
+            states[b2],
+            _local(mech, b2, p2),
+            _col(d.guide_b.angle),
+            _local(mech, d.a, d.inner),
+            _local(mech, d.b, d.inner),
+        )
+    raise InputError(f"Unknown dyad type {type(d).__name__!r}; expected RRR, RRP, RPR or PRP.")
+
+
+def angle_ranges(phi: np.ndarray, mask: np.ndarray) -> list[tuple[float, float]]:
+    """Contiguous runs of ``mask`` over sorted crank angles ``phi`` as (start, end) [rad] pairs."""
+    phi = np.asarray(phi, dtype=float).ravel()
+    mask = np.asarray(mask, dtype=bool).ravel()
+    order = np.argsort(phi)
+    phi, mask = phi[order], mask[order]
+    runs, start = [], None
+    for i, flag in enumerate(mask):
+        if flag and start is None:
+            start = i
+        if start is not None and (not flag or i == len(mask) - 1):
+            end = i if flag else i - 1
+            runs.append((float(phi[start]), float(phi[end])))
+            start = None
+    return runs
+
+
+def _assembly_message(mech: Mechanism, phi, assembled) -> str:
+    from .diagnostics import grashof_type
+
+    fails = ~assembled
+    design_note = ""
+    if assembled.ndim == 2:
+        bad = np.flatnonzero(fails.any(axis=1))
+        design_note = f" (design variants {', '.join(map(str, bad[:10]))}{'...' if len(bad) > 10 else ''})"
+        fails = fails.any(axis=0)
+    phi_row = np.broadcast_to(phi, fails.shape)
+    ranges = angle_ranges(phi_row, fails)
+    text = ", ".join(f"{np.degrees(a):.1f}°–{np.degrees(b):.1f}°" for a, b in ranges[:6])
+    kind = grashof_type(mech)
+    kind_note = f" Grashof type: {kind}." if kind else ""
+    if np.all(fails):
+        return (
+            f"Mechanism '{mech.name}' cannot be assembled at any of the requested crank angles"
+            f"{design_note}: the links are too short or too long to close the loop.{kind_note}"
+        )
+    return (
+        f"Mechanism '{mech.name}' cannot be assembled for crank angles {text}{design_note}; "
+        f"restrict the crank angles to where it closes or change the link lengths.{kind_note}"
+    )

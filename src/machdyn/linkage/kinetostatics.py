@@ -1,0 +1,291 @@
+"""Kinetostatics: joint reactions, driving torque, input power, and the force and moment on the frame.
+
+d'Alembert's principle turns each body's motion into loads (inertia force -m a_G at the centre of mass,
+inertia moment -I alpha), added to gravity, external forces and torques and springs. The dyads are then
+solved in reverse order, each in closed form (:mod:`machdyn.linkage.dyads`), passing their reactions back
+to the bodies they hang on; the crank's equilibrium gives the pivot reaction and the driving torque
+(Artobolevsky, *Theory of Mechanisms and Machines*, ch. 5; seed 003 eqs 13-17).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import InputError
+from . import dyads as dy
+from .kinematics import Kinematics, _col, _local, kinematics
+from .loads import applied_forces, applied_torques, mass_elements, spring_states
+from .model import GROUND, PRP, RPR, RRP, RRR, Mechanism, split_ref
+
+
+@dataclass(frozen=True)
+class Reaction:
+    """The force [N] on the later body of a joint from the earlier one (global axes). Prismatic joints also
+    carry the signed normal force [N] along the guide's left normal and the couple [N*m]."""
+
+    fx: np.ndarray
+    fy: np.ndarray
+    normal: np.ndarray | None = None
+    couple: np.ndarray | None = None
+
+    @property
+    def magnitude(self) -> np.ndarray:
+        return np.hypot(self.fx, self.fy)
+
+
+@dataclass(frozen=True)
+class Joint:
+    """A joint: its name, kind ('R' revolute, 'P' prismatic) and the two bodies (earlier, later)."""
+
+    name: str
+    kind: str
+    body_1: str
+    body_2: str
+
+
+@dataclass(frozen=True)
+class Forces:
+    """Kinetostatic results at every position: joint reactions, driving torque and the frame loads."""
+
+    kinematics: Kinematics
+    joint_list: tuple[Joint, ...]
+    reactions: dict
+    driving_torque: np.ndarray
+    frame_fx: np.ndarray
+    frame_fy: np.ndarray
+    frame_moment_origin: np.ndarray
+
+    @property
+    def mechanism(self) -> Mechanism:
+        return self.kinematics.mechanism
+
+    @property
+    def joints(self) -> tuple[Joint, ...]:
+        return self.joint_list
+
+    def joint(self, name: str) -> Reaction:
+        """Reaction of the joint ``name`` (see :attr:`joints` for the names)."""
+        try:
+            return self.reactions[name]
+        except KeyError:
+            raise InputError(f"No joint '{name}'; joints: {', '.join(self.reactions)}.") from None
+
+    @property
+    def input_power(self) -> np.ndarray:
+        """Power delivered by the drive [W]: driving torque x crank speed."""
+        return self.driving_torque * self.kinematics.speed
+
+    @property
+    def frame_force(self) -> tuple[np.ndarray, np.ndarray]:
+        """Total force [N] the moving mechanism puts on the frame (shaking force), global axes."""
+        return self.frame_fx, self.frame_fy
+
+    @property
+    def shaking_force(self) -> np.ndarray:
+        """Magnitude of the shaking force [N]."""
+        return np.hypot(self.frame_fx, self.frame_fy)
+
+    def shaking_moment(self, about=(0.0, 0.0)) -> np.ndarray:
+        """Moment [N*m] of all loads on the frame about the point ``about`` [m], including the reaction of
+        the driving torque on the motor's stator (counter-clockwise positive)."""
+        zx, zy = about
+        return self.frame_moment_origin - (zx * self.frame_fy - zy * self.frame_fx)
+
+
+def _add(loads, body, fx, fy, m):
+    if body == GROUND:
+        return
+    lfx, lfy, lm = loads[body]
+    loads[body] = (lfx + fx, lfy + fy, lm + m)
+
+
+def _add_force_at(loads, body, x, y, fx, fy):
+    _add(loads, body, fx, fy, x * fy - y * fx)
+
+
+class _Frame:
+    """Accumulates the loads the mechanism puts on the frame: force and moment about the origin."""
+
+    def __init__(self):
+        self.fx = 0.0
+        self.fy = 0.0
+        self.m = 0.0
+
+    def force_at(self, x, y, fx, fy):
+        self.fx = self.fx + fx
+        self.fy = self.fy + fy
+        self.m = self.m + (x * fy - y * fx)
+
+    def couple(self, c):
+        self.m = self.m + c
+
+
+def body_loads(kin: Kinematics) -> tuple[dict, _Frame]:
+    """Resultant load (Fx, Fy, M about the origin) on every moving body from inertia, gravity, external forces
+    and torques and springs; and what springs anchored to the frame put on the frame."""
+    mech = kin.mechanism
+    gx, gy = (_col(v) for v in mech.gravity)
+    loads = {name: (0.0, 0.0, 0.0) for name in mech.moving_bodies}
+    frame = _Frame()
+    for m in mass_elements(kin):
+        G = m.motion
+        fx = m.mass * (gx - G.ax)
+        fy = m.mass * (gy - G.ay)
+        _add(loads, m.body, fx, fy, G.x * fy - G.y * fx - m.inertia * kin.body(m.body).alpha)
+    for f in applied_forces(kin):
+        _add_force_at(loads, f.body, f.motion.x, f.motion.y, f.fx, f.fy)
+    for t in applied_torques(kin):
+        _add(loads, t.body, 0.0, 0.0, t.torque)
+    for s in spring_states(kin):
+        # A stretched spring pulls point 1 towards point 2 and point 2 towards point 1.
+        f1x, f1y = s.tension * s.ex, s.tension * s.ey
+        for body, p, sx, sy in ((s.body_1, s.p1, f1x, f1y), (s.body_2, s.p2, -f1x, -f1y)):
+            if body == GROUND:
+                frame.force_at(p.x, p.y, sx, sy)
+            else:
+                _add_force_at(loads, body, p.x, p.y, sx, sy)
+    return loads, frame
+
+
+def kinetostatics(
+    mech: Mechanism,
+    crank_angle=None,
+    speed=1.0,
+    acceleration=0.0,
+    *,
+    kinematics_result: Kinematics | None = None,
+) -> Forces:
+    """Joint reactions, driving torque and frame loads of ``mech`` at each crank angle.
+
+    Parameters
+    ----------
+    mech : the linkage; crank_angle [rad]; speed [rad/s]; acceleration [rad/s^2] (as for
+        :func:`~machdyn.linkage.kinematics.kinematics`), or an already computed ``kinematics_result``.
+
+    Valid away from dead positions, where the reactions grow without bound (the dyad determinant vanishes).
+    """
+    kin = kinematics_result or kinematics(mech, crank_angle, speed, acceleration)
+    states = kin.bodies
+    loads, frame = body_loads(kin)
+    reactions: dict = {}
+    joint_list: list[Joint] = []
+
+    def record(name, kind, body_1, body_2, reaction):
+        key = name if name not in reactions else f"{name}:{body_2}"
+        reactions[key] = reaction
+        joint_list.append(Joint(key, kind, body_1, body_2))
+
+    def point_of(ref):
+        body, point = split_ref(ref)
+        if body == GROUND:
+            x, y = mech.ground[point]
+            return _PointXY(_col(x), _col(y))
+        st = states[body]
+        px, py = st.offset(*_local(mech, body, point))
+        return _PointXY(st.x + px, st.y + py)
+
+    def transmit(body, x, y, fx, fy):
+        """The known body carries the opposite of a reaction it exerts at (x, y)."""
+        if body == GROUND:
+            frame.force_at(x, y, -fx, -fy)
+        else:
+            _add_force_at(loads, body, x, y, -fx, -fy)
+
+    for d in reversed(mech.dyads):
+        la, lb = loads[d.a], loads[d.b]
+        if isinstance(d, RRR):
+            ka, kb = split_ref(d.pin_a)[0], split_ref(d.pin_b)[0]
+            P, Q = point_of(d.pin_a), point_of(d.pin_b)
+            B = _point_on(states[d.a], _local(mech, d.a, d.inner))
+            fp, fq, fab = dy.rrr_forces(la, lb, P, Q, B)
+            record(split_ref(d.pin_a)[1], "R", ka, d.a, Reaction(*fp))
+            record(split_ref(d.pin_b)[1], "R", kb, d.b, Reaction(*fq))
+            record(d.inner, "R", d.a, d.b, Reaction(*fab))
+            transmit(ka, P.x, P.y, *fp)
+            transmit(kb, Q.x, Q.y, *fq)
+        elif isinstance(d, RRP):
+            ka = split_ref(d.pin_a)[0]
+            gb = d.guide.body
+            P = point_of(d.pin_a)
+            B = _point_on(states[d.a], _local(mech, d.a, d.inner))
+            slider = states[d.b]
+            fp, fab, N, couple = dy.rrp_forces(la, lb, P, B, slider.cos, slider.sin)
+            nx, ny = -slider.sin, slider.cos
+            record(split_ref(d.pin_a)[1], "R", ka, d.a, Reaction(*fp))
+            record(d.inner, "R", d.a, d.b, Reaction(*fab))
+            record(f"{d.b}/{gb}", "P", gb, d.b, Reaction(N * nx, N * ny, N, couple))
+            transmit(ka, P.x, P.y, *fp)
+            transmit(gb, B.x, B.y, N * nx, N * ny)
+            _couple_back(loads, frame, gb, couple)
+        elif isinstance(d, RPR):
+            ka, kb = split_ref(d.pin_a)[0], split_ref(d.pin_b)[0]
+            P, Q = point_of(d.pin_a), point_of(d.pin_b)
+            block = states[d.a]
+            fp, fq, N, couple = dy.rpr_forces(la, lb, P, Q, block.cos, block.sin)
+            nx, ny = -block.sin, block.cos
+            record(split_ref(d.pin_a)[1], "R", ka, d.a, Reaction(*fp))
+            record(split_ref(d.pin_b)[1], "R", kb, d.b, Reaction(*fq))
+            record(f"{d.a}/{d.b}", "P", d.b, d.a, Reaction(N * nx, N * ny, N, couple))
+            transmit(ka, P.x, P.y, *fp)
+            transmit(kb, Q.x, Q.y, *fq)
+        elif isinstance(d, PRP):
+            B = _point_on(states[d.a], _local(mech, d.a, d.inner))
+            sa, sb = states[d.a], states[d.b]
+            Na, ca, Nb, cb, fab = dy.prp_forces(la, lb, B, (sa.cos, sa.sin), (sb.cos, sb.sin))
+            g1, g2 = d.guide_a.body, d.guide_b.body
+            n1 = (-sa.sin, sa.cos)
+            n2 = (-sb.sin, sb.cos)
+            record(f"{d.a}/{g1}", "P", g1, d.a, Reaction(Na * n1[0], Na * n1[1], Na, ca))
+            record(f"{d.b}/{g2}", "P", g2, d.b, Reaction(Nb * n2[0], Nb * n2[1], Nb, cb))
+            record(d.inner, "R", d.a, d.b, Reaction(*fab))
+            transmit(g1, B.x, B.y, Na * n1[0], Na * n1[1])
+            transmit(g2, B.x, B.y, Nb * n2[0], Nb * n2[1])
+            _couple_back(loads, frame, g1, ca)
+            _couple_back(loads, frame, g2, cb)
+
+    crank = mech.crank.body
+    O = point_of(mech.crank.pivot)
+    cfx, cfy, cm = loads[crank]
+    torque = -(cm - (O.x * cfy - O.y * cfx))
+    record(split_ref(mech.crank.pivot)[1], "R", GROUND, crank, Reaction(-cfx, -cfy))
+    frame.force_at(O.x, O.y, cfx, cfy)
+    frame.couple(-torque)
+    joint_list.reverse()
+    shape = kin.shape
+    ordered = {j.name: _broadcast_reaction(reactions[j.name], shape) for j in joint_list}
+    return Forces(
+        kin,
+        tuple(joint_list),
+        ordered,
+        np.broadcast_to(torque, shape),
+        np.broadcast_to(frame.fx, shape),
+        np.broadcast_to(frame.fy, shape),
+        np.broadcast_to(frame.m, shape),
+    )
+
+
+@dataclass(slots=True)
+class _PointXY:
+    x: object
+    y: object
+
+
+def _point_on(state, local):
+    px, py = state.offset(*local)
+    return _PointXY(state.x + px, state.y + py)
+
+
+def _couple_back(loads, frame, body, couple):
+    if body == GROUND:
+        frame.couple(-couple)
+    else:
+        _add(loads, body, 0.0, 0.0, -couple)
+
+
+def _broadcast_reaction(r: Reaction, shape) -> Reaction:
+    def b(v):
+        return None if v is None else np.broadcast_to(v, shape)
+
+    return Reaction(b(r.fx), b(r.fy), b(r.normal), b(r.couple))

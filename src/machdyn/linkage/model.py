@@ -1,0 +1,428 @@
+"""The frozen model of a planar linkage: bodies, ground points, the driving crank, dyads and loads.
+
+A class-II planar linkage is a driving crank plus a sequence of dyads (Assur groups of two bodies and three
+joints). Each dyad connects two new bodies to points that are already known (on the ground, the crank or the
+bodies of earlier dyads). Joints are identified by name: the joint ``"B"`` between bodies ``coupler`` and
+``rocker`` is the point ``"B"`` of each body. A known point is written ``"body.point"``; ground points are
+``"ground.NAME"``.
+
+Every numeric parameter may be a float or an array of design variants (leading axis = designs); all
+analyses broadcast over designs x crank positions. Values are SI: m, kg, kg*m^2, rad, N, N*m, N/m.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field, fields, is_dataclass, replace
+from typing import Any
+
+import numpy as np
+
+from ..errors import InputError, check_finite, check_positive
+
+Array = np.ndarray
+Number = float | Array
+Vec = tuple[Number, Number]
+
+GROUND = "ground"
+
+
+@dataclass(frozen=True)
+class Body:
+    """A rigid body: mass [kg], centroidal moment of inertia [kg*m^2], centre of mass and named points [m]
+    in the body frame."""
+
+    name: str
+    points: Mapping[str, Vec]
+    mass: Number = 0.0
+    inertia: Number = 0.0
+    com: Vec = (0.0, 0.0)
+
+
+@dataclass(frozen=True)
+class PointMass:
+    """A mass rigidly attached to a body, e.g. a counterweight on the crank; reported on its own in energy.
+
+    ``position`` [m] is in the frame of ``body``; ``inertia`` [kg*m^2] is about the mass's own centre.
+    """
+
+    name: str
+    body: str
+    mass: Number
+    position: Vec
+    inertia: Number = 0.0
+
+
+@dataclass(frozen=True)
+class Crank:
+    """The driver: ``body`` turns about the ground point ``pivot`` (written ``"ground.O"``).
+
+    The crank body must have a point with the pivot's name. Its frame turns with the crank angle phi, so a
+    crank pin at angle ``beta`` in the body frame sits at phi + beta: several mechanisms sharing one shaft
+    with different phase angles are pins at different angles on the one crank body.
+    """
+
+    body: str
+    pivot: str
+
+
+@dataclass(frozen=True)
+class Guide:
+    """A straight slide line fixed in a known body: through ``point`` (``"body.point"``) with direction
+    ``angle`` [rad] measured in that body's frame (0 = along the body's x axis)."""
+
+    point: str
+    angle: Number = 0.0
+
+    @property
+    def body(self) -> str:
+        return self.point.split(".", 1)[0]
+
+
+@dataclass(frozen=True)
+class RRR:
+    """Dyad of two links joined by revolute joints: ``a`` pinned at the known point ``pin_a``, ``b`` at
+    ``pin_b``, and a to b at the inner joint ``inner``.
+
+    ``branch`` = +1 puts the inner joint to the left of the line from pin_a to pin_b, -1 to the right.
+    """
+
+    a: str
+    b: str
+    pin_a: str
+    pin_b: str
+    inner: str
+    branch: int = 1
+
+
+@dataclass(frozen=True)
+class RRP:
+    """Dyad link + slider: link ``a`` pinned at the known point ``pin_a`` and to slider ``b`` at ``inner``;
+    the slider's point ``inner`` moves along ``guide`` (a line fixed in a known body).
+
+    ``branch`` = +1 puts the slider ahead of the foot of pin_a on the guide (along the guide direction),
+    -1 behind it.
+    """
+
+    a: str
+    b: str
+    pin_a: str
+    inner: str
+    guide: Guide
+    branch: int = 1
+
+
+@dataclass(frozen=True)
+class RPR:
+    """Dyad block + rocker: block ``a`` pinned at the known point ``pin_a`` slides along a line fixed in
+    rocker ``b``; the rocker is pinned at the known point ``pin_b``.
+
+    The slide line is ``slide`` = (point name in b, angle [rad] in b's frame); the block's frame is aligned
+    with it. ``branch`` = +1 points the slide direction from the rocker side towards the block, -1 away.
+    """
+
+    a: str
+    b: str
+    pin_a: str
+    pin_b: str
+    slide: tuple[str, Number]
+    branch: int = 1
+
+
+@dataclass(frozen=True)
+class PRP:
+    """Dyad of two sliders joined by a revolute joint ``inner``: ``a`` slides along ``guide_a``, ``b`` along
+    ``guide_b`` (lines fixed in known bodies). The joint sits where the two lines cross (no branch)."""
+
+    a: str
+    b: str
+    inner: str
+    guide_a: Guide
+    guide_b: Guide
+
+
+Dyad = RRR | RRP | RPR | PRP
+
+#: A load value: a constant, or a function of the crank angle phi [rad] (array in, array out).
+LoadValue = Number | Callable[[Array], Array]
+
+
+@dataclass(frozen=True)
+class PointForce:
+    """An external force [N] at a named point, in global axes; ``fx``/``fy`` may be functions of the crank
+    angle. ``active`` = (start, end) [rad] limits it to part of the cycle (wrapping through 2*pi allowed)."""
+
+    name: str
+    point: str
+    fx: LoadValue = 0.0
+    fy: LoadValue = 0.0
+    active: tuple[float, float] | None = None
+
+
+@dataclass(frozen=True)
+class BodyTorque:
+    """An external torque [N*m] on a body (counter-clockwise positive), constant or a function of phi."""
+
+    name: str
+    body: str
+    torque: LoadValue
+    active: tuple[float, float] | None = None
+
+
+@dataclass(frozen=True)
+class Spring:
+    """A linear spring [N/m] between two named points: force = stiffness * (length - free_length), pulling
+    the points together when stretched."""
+
+    name: str
+    point_1: str
+    point_2: str
+    stiffness: Number
+    free_length: Number
+
+
+@dataclass(frozen=True)
+class Mechanism:
+    """A planar linkage: ground points, bodies, the driving crank, dyads in solution order, and loads.
+
+    ``gravity`` [m/s^2] is a vector (default 9.80665 m/s^2 towards -y); use (0, 0) to switch it off.
+    """
+
+    name: str
+    ground: Mapping[str, Vec]
+    bodies: tuple[Body, ...]
+    crank: Crank
+    dyads: tuple[Dyad, ...] = ()
+    point_masses: tuple[PointMass, ...] = ()
+    forces: tuple[PointForce, ...] = ()
+    torques: tuple[BodyTorque, ...] = ()
+    springs: tuple[Spring, ...] = ()
+    gravity: Vec = (0.0, -9.80665)
+    _index: dict = field(default=None, init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "bodies", tuple(self.bodies))
+        object.__setattr__(self, "dyads", tuple(self.dyads))
+        object.__setattr__(self, "_index", {b.name: b for b in self.bodies})
+        validate(self)
+
+    def body(self, name: str) -> Body:
+        try:
+            return self._index[name]
+        except KeyError:
+            raise InputError(
+                f"Mechanism '{self.name}' has no body '{name}'; bodies: {', '.join(self._index)}."
+            ) from None
+
+    @property
+    def moving_bodies(self) -> tuple[str, ...]:
+        names = [self.crank.body]
+        for d in self.dyads:
+            names += [d.a, d.b]
+        return tuple(names)
+
+    @property
+    def design_count(self) -> int | None:
+        """The number of design variants (length of the array parameters), or None if all are scalars."""
+        sizes = {np.size(v) for v in _numeric_leaves(self) if np.ndim(v) > 0}
+        return sizes.pop() if sizes else None
+
+    def point_local(self, ref: str) -> Vec:
+        """The body-frame coordinates [m] of a point written ``"body.point"``."""
+        body, point = split_ref(ref)
+        if body == GROUND:
+            return self.ground[point]
+        return self.body(body).points[point]
+
+    def take_designs(self, index) -> Mechanism:
+        """The mechanism restricted to the design variants ``index`` (slice or index array)."""
+        return _take(self, index, self.design_count)
+
+
+def split_ref(ref: str) -> tuple[str, str]:
+    """Split ``"body.point"`` into its two names."""
+    if not isinstance(ref, str) or ref.count(".") != 1:
+        raise InputError(f"A point reference must be written 'body.point'; got {ref!r}.")
+    body, point = ref.split(".")
+    return body, point
+
+
+def joints(mech: Mechanism) -> list[tuple[str, str, str, str]]:
+    """Every joint as (name, kind 'R' or 'P', body 1, body 2), body 1 being the earlier (known) body."""
+    out = [(mech.crank.pivot.split(".")[1], "R", GROUND, mech.crank.body)]
+    for d in mech.dyads:
+        if isinstance(d, RRR):
+            out += [
+                (split_ref(d.pin_a)[1], "R", split_ref(d.pin_a)[0], d.a),
+                (split_ref(d.pin_b)[1], "R", split_ref(d.pin_b)[0], d.b),
+                (d.inner, "R", d.a, d.b),
+            ]
+        elif isinstance(d, RRP):
+            out += [
+                (split_ref(d.pin_a)[1], "R", split_ref(d.pin_a)[0], d.a),
+                (d.inner, "R", d.a, d.b),
+                (f"{d.b}/{d.guide.body}", "P", d.guide.body, d.b),
+            ]
+        elif isinstance(d, RPR):
+            out += [
+                (split_ref(d.pin_a)[1], "R", split_ref(d.pin_a)[0], d.a),
+                (split_ref(d.pin_b)[1], "R", split_ref(d.pin_b)[0], d.b),
+                (f"{d.a}/{d.b}", "P", d.b, d.a),
+            ]
+        elif isinstance(d, PRP):
+            out += [
+                (f"{d.a}/{d.guide_a.body}", "P", d.guide_a.body, d.a),
+                (f"{d.b}/{d.guide_b.body}", "P", d.guide_b.body, d.b),
+                (d.inner, "R", d.a, d.b),
+            ]
+    return out
+
+
+# ---------------------------------------------------------------------------------------------- validation
+
+
+def validate(mech: Mechanism) -> None:
+    """Check names, references, masses and finiteness; raise :class:`InputError` naming field and value."""
+    label = f"mechanism '{mech.name}'"
+    names = [b.name for b in mech.bodies]
+    if GROUND in names:
+        raise InputError(f"The body name '{GROUND}' is reserved for the frame in {label}.")
+    dupes = sorted({n for n in names if names.count(n) > 1})
+    if dupes:
+        raise InputError(f"Body names must be unique in {label}; got {', '.join(dupes)} more than once.")
+    for b in mech.bodies:
+        check_positive(f"mass of body '{b.name}'", b.mass, "kg", allow_zero=True)
+        check_positive(f"moment of inertia of body '{b.name}'", b.inertia, "kg*m^2", allow_zero=True)
+        for coord in b.com:
+            check_finite(f"centre of mass of body '{b.name}'", coord, "m")
+        for pname, xy in b.points.items():
+            for coord in xy:
+                check_finite(f"point '{pname}' of body '{b.name}'", coord, "m")
+    for gname, xy in mech.ground.items():
+        for coord in xy:
+            check_finite(f"ground point '{gname}'", coord, "m")
+    for pm in mech.point_masses:
+        check_positive(f"mass of '{pm.name}'", pm.mass, "kg", allow_zero=True)
+        check_positive(f"moment of inertia of '{pm.name}'", pm.inertia, "kg*m^2", allow_zero=True)
+        mech.body(pm.body)
+
+    known = {GROUND}
+    _require_point(mech, mech.crank.pivot, "crank.pivot", known)
+    if split_ref(mech.crank.pivot)[0] != GROUND:
+        raise InputError(f"The crank pivot must be a ground point 'ground.NAME'; got {mech.crank.pivot!r}.")
+    crank = mech.body(mech.crank.body)
+    pivot = split_ref(mech.crank.pivot)[1]
+    if pivot not in crank.points:
+        raise InputError(f"The crank body '{crank.name}' needs a point '{pivot}' at the pivot.")
+    known.add(crank.name)
+    placed = {crank.name}
+    for i, d in enumerate(mech.dyads):
+        where = f"dyad {i + 1} ({type(d).__name__} {d.a}-{d.b})"
+        for body in (d.a, d.b):
+            mech.body(body)
+            if body in placed:
+                raise InputError(f"Body '{body}' of {where} is already placed by an earlier group.")
+        if d.a == d.b:
+            raise InputError(f"The two bodies of {where} must differ; got '{d.a}' twice.")
+        if isinstance(d, RRR | RRP | RPR) and d.branch not in (1, -1):
+            raise InputError(f"The branch of {where} must be +1 or -1; got {d.branch!r}.")
+        for attr in ("pin_a", "pin_b"):
+            if hasattr(d, attr):
+                _require_point(mech, getattr(d, attr), f"{where}.{attr}", known)
+        for attr in ("guide", "guide_a", "guide_b"):
+            if hasattr(d, attr):
+                g = getattr(d, attr)
+                _require_point(mech, g.point, f"{where}.{attr}", known)
+                check_finite(f"angle of {where}.{attr}", g.angle, "rad")
+        _require_own_points(mech, d, where)
+        known |= {d.a, d.b}
+        placed |= {d.a, d.b}
+    moving = set(mech.moving_bodies)
+    stray = [b.name for b in mech.bodies if b.name not in moving]
+    if stray:
+        raise InputError(
+            f"Body '{stray[0]}' of {label} is not moved by the crank or any dyad; add it to a dyad or remove it."
+        )
+    for f in mech.forces:
+        _require_point(mech, f.point, f"force '{f.name}'.point", known)
+    for t in mech.torques:
+        mech.body(t.body)
+    for s in mech.springs:
+        _require_point(mech, s.point_1, f"spring '{s.name}'.point_1", known)
+        _require_point(mech, s.point_2, f"spring '{s.name}'.point_2", known)
+        check_positive(f"stiffness of spring '{s.name}'", s.stiffness, "N/m", allow_zero=True)
+        check_positive(f"free length of spring '{s.name}'", s.free_length, "m", allow_zero=True)
+    for coord in mech.gravity:
+        check_finite("gravity", coord, "m/s^2")
+    sizes = {np.size(v) for v in _numeric_leaves(mech) if np.ndim(v) > 0}
+    if len(sizes) > 1:
+        raise InputError(
+            f"All design-variant arrays of {label} must have the same length; got lengths {sorted(sizes)}."
+        )
+
+
+def _require_point(mech: Mechanism, ref: str, field_name: str, known: set[str]) -> None:
+    body, point = split_ref(ref)
+    if body == GROUND:
+        if point not in mech.ground:
+            raise InputError(
+                f"The {field_name} refers to ground point '{point}', which does not exist; "
+                f"ground points: {', '.join(mech.ground) or 'none'}."
+            )
+        return
+    b = mech.body(body)
+    if body not in known:
+        raise InputError(
+            f"The {field_name} refers to '{ref}' on body '{body}', which is not placed before this group."
+        )
+    if point not in b.points:
+        raise InputError(
+            f"The {field_name} refers to point '{point}' of body '{body}', which has points "
+            f"{', '.join(b.points) or 'none'}."
+        )
+
+
+def _require_own_points(mech: Mechanism, d: Dyad, where: str) -> None:
+    needs: list[tuple[str, str]] = []
+    if isinstance(d, RRR):
+        needs = [(d.a, split_ref(d.pin_a)[1]), (d.a, d.inner), (d.b, split_ref(d.pin_b)[1]), (d.b, d.inner)]
+    elif isinstance(d, RRP):
+        needs = [(d.a, split_ref(d.pin_a)[1]), (d.a, d.inner), (d.b, d.inner)]
+    elif isinstance(d, RPR):
+        needs = [(d.a, split_ref(d.pin_a)[1]), (d.b, split_ref(d.pin_b)[1]), (d.b, d.slide[0])]
+    elif isinstance(d, PRP):
+        needs = [(d.a, d.inner), (d.b, d.inner)]
+    for body, point in needs:
+        if point not in mech.body(body).points:
+            raise InputError(f"Body '{body}' of {where} needs a point '{point}' for its joint.")
+
+
+# ---------------------------------------------------------------------------------------- design variants
+
+
+def _numeric_leaves(obj: Any):
+    if isinstance(obj, np.ndarray):
+        yield obj
+    elif is_dataclass(obj) and not isinstance(obj, type):
+        for f in fields(obj):
+            if f.init:
+                yield from _numeric_leaves(getattr(obj, f.name))
+    elif isinstance(obj, Mapping):
+        for v in obj.values():
+            yield from _numeric_leaves(v)
+    elif isinstance(obj, tuple | list):
+        for v in obj:
+            yield from _numeric_leaves(v)
+
+
+def _take(obj: Any, index, n: int | None):
+    if isinstance(obj, np.ndarray):
+        return obj[index] if obj.ndim > 0 and n is not None else obj
+    if is_dataclass(obj) and not isinstance(obj, type):
+        changes = {f.name: _take(getattr(obj, f.name), index, n) for f in fields(obj) if f.init}
+        return replace(obj, **changes)
+    if isinstance(obj, Mapping):
+        return {k: _take(v, index, n) for k, v in obj.items()}
+    if isinstance(obj, tuple):
+        return tuple(_take(v, index, n) for v in obj)
+    return obj

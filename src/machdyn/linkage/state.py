@@ -1,0 +1,105 @@
+"""Rigid-body motion state and the transfer of motion to points of a body.
+
+A body's state is the position, velocity and acceleration of its frame origin and its angle, angular
+velocity and angular acceleration. For a point with body-frame coordinates c and r = R(theta) c:
+
+    x = x0 + r,   v = v0 + omega k x r,   a = a0 + alpha k x r - omega^2 r
+
+(rigid-body kinematics; Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th ed., ch. 3-4).
+Arrays broadcast over designs x crank positions; scalars are allowed anywhere.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+
+@dataclass(slots=True)
+class PointState:
+    """Position [m], velocity [m/s] and acceleration [m/s^2] of a point, global axes."""
+
+    x: np.ndarray
+    y: np.ndarray
+    vx: np.ndarray
+    vy: np.ndarray
+    ax: np.ndarray
+    ay: np.ndarray
+
+    @property
+    def speed(self) -> np.ndarray:
+        """|v| [m/s]."""
+        return np.hypot(self.vx, self.vy)
+
+    @property
+    def accel(self) -> np.ndarray:
+        """|a| [m/s^2]."""
+        return np.hypot(self.ax, self.ay)
+
+
+@dataclass(slots=True)
+class BodyState:
+    """Frame origin (x, y) [m] with its velocity and acceleration, angle [rad], omega [rad/s], alpha [rad/s^2];
+    cos/sin of the angle are kept because every point transform needs them."""
+
+    x: np.ndarray
+    y: np.ndarray
+    vx: np.ndarray
+    vy: np.ndarray
+    ax: np.ndarray
+    ay: np.ndarray
+    angle: np.ndarray
+    omega: np.ndarray
+    alpha: np.ndarray
+    cos: np.ndarray
+    sin: np.ndarray
+
+    def offset(self, u, v) -> tuple[np.ndarray, np.ndarray]:
+        """The body-frame vector (u, v) [m] rotated into global axes."""
+        return self.cos * u - self.sin * v, self.sin * u + self.cos * v
+
+    def point(self, u, v) -> PointState:
+        """Motion of the point with body-frame coordinates (u, v) [m]."""
+        rx, ry = self.offset(u, v)
+        w2 = self.omega * self.omega
+        return PointState(
+            self.x + rx,
+            self.y + ry,
+            self.vx - self.omega * ry,
+            self.vy + self.omega * rx,
+            self.ax - self.alpha * ry - w2 * rx,
+            self.ay + self.alpha * rx - w2 * ry,
+        )
+
+
+def ground_state() -> BodyState:
+    """The frame: at rest, unrotated."""
+    z = np.float64(0.0)
+    one = np.float64(1.0)
+    return BodyState(z, z, z, z, z, z, z, z, z, one, z)
+
+
+def body_from_point(p: PointState, local: tuple, angle, omega, alpha, cos=None, sin=None) -> BodyState:
+    """The state of a body whose point with body-frame coordinates ``local`` [m] moves as ``p``."""
+    c = np.cos(angle) if cos is None else cos
+    s = np.sin(angle) if sin is None else sin
+    u, v = local
+    if isinstance(u, float | int) and isinstance(v, float | int) and u == 0 and v == 0:
+        return BodyState(p.x, p.y, p.vx, p.vy, p.ax, p.ay, angle, omega, alpha, c, s)
+    rx = c * u - s * v
+    ry = s * u + c * v
+    w2 = omega * omega
+    return BodyState(
+        p.x - rx,
+        p.y - ry,
+        p.vx + omega * ry,
+        p.vy - omega * rx,
+        p.ax + alpha * ry + w2 * rx,
+        p.ay - alpha * rx + w2 * ry,
+        angle,
+        omega,
+        alpha,
+        c,
+        s,
+    )

@@ -1,0 +1,103 @@
+"""The single unit registry of machdyn and the helpers that parse and format quantities.
+
+Units live at the boundary only: problem files and the command line say ``"45 mm"``, ``"21 rad/s"``,
+``"300 rpm"``, ``"1.2 t/m^3"``; the core computes in SI floats and never imports pint.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import pint
+
+from .errors import InputError
+
+ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+ureg.formatter.default_format = "~P"
+Q_ = ureg.Quantity
+
+#: The SI unit in which the core computes each physical kind of quantity.
+SI_UNITS: dict[str, str] = {
+    "length": "m",
+    "mass": "kg",
+    "time": "s",
+    "angle": "rad",
+    "angular_velocity": "rad/s",
+    "angular_acceleration": "rad/s^2",
+    "velocity": "m/s",
+    "acceleration": "m/s^2",
+    "force": "N",
+    "moment": "N*m",
+    "torque": "N*m",
+    "power": "W",
+    "energy": "J",
+    "inertia": "kg*m^2",
+    "stiffness": "N/m",
+    "density": "kg/m^3",
+    "mass_flow": "kg/s",
+    "volume_flow": "m^3/s",
+    "pressure": "Pa",
+    "stress": "Pa",
+    "frequency": "Hz",
+    "dimensionless": "",
+}
+
+
+@lru_cache(maxsize=256)
+def _unit(unit: str) -> pint.Unit:
+    return ureg.Unit(unit)
+
+
+def parse_quantity(value: str | float | int, unit: str, *, field: str = "value") -> float:
+    """Convert ``value`` (a string such as ``"45 mm"`` or a bare number already in ``unit``) to a float in ``unit``.
+
+    Raises :class:`~machdyn.errors.InputError` naming ``field`` when the text is not a quantity, when its
+    dimension does not match ``unit`` (a mass given in mm), or when it is NaN or infinite.
+    """
+    target = _unit(unit) if unit else ureg.dimensionless
+    if isinstance(value, bool):
+        raise InputError(f"The {field} must be a quantity in {unit or 'no unit'}; got {value!r}.")
+    if isinstance(value, int | float):
+        magnitude = float(value)
+        if target != ureg.dimensionless and not _is_angle(target):
+            raise InputError(
+                f"The {field} needs a unit (e.g. \"{value} {unit}\"); got the bare number {value!r}."
+            )
+    else:
+        try:
+            quantity = Q_(str(value).strip())
+        except Exception as exc:  # pint raises several unrelated exception types for bad text
+            raise InputError(f"The {field} is not a quantity with a unit; got {value!r} ({exc}).") from None
+        if not isinstance(quantity, pint.Quantity):
+            quantity = Q_(float(quantity), "")
+        try:
+            magnitude = float(quantity.to(target).magnitude)
+        except pint.DimensionalityError:
+            raise InputError(
+                f"The {field} must be in units of {_describe(target)} (like {unit}); "
+                f"got {value!r}, which is {_describe(quantity.units)}."
+            ) from None
+    if magnitude != magnitude or magnitude in (float("inf"), float("-inf")):
+        raise InputError(f"The {field} must be a finite number; got {value!r}.")
+    return magnitude
+
+
+def _is_angle(unit: pint.Unit) -> bool:
+    return unit.dimensionality == ureg.radian.dimensionality and str(unit) in ("radian", "degree")
+
+
+def _describe(unit) -> str:
+    dims = ureg.Unit(unit).dimensionality if not isinstance(unit, pint.Unit) else unit.dimensionality
+    text = str(dims)
+    return "a pure number" if text == "dimensionless" else text
+
+
+def convert(value: float, from_unit: str, to_unit: str) -> float:
+    """Convert a float between two units (used by reports to show SI results in the user's units)."""
+    return float(Q_(value, from_unit).to(to_unit).magnitude)
+
+
+def format_quantity(value: float, unit: str, digits: int = 4) -> str:
+    """Format ``value`` (already in ``unit``) with ``digits`` significant digits and its unit symbol."""
+    symbol = f"{_unit(unit):~P}" if unit else ""
+    return f"{value:.{digits}g} {symbol}".strip()
