@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .state import BodyState, PointState, body_from_point
+from .state import BodyState, PointState, body_from_point, is_origin
 
 # Relative tolerance on the squared closure distance below which a position counts as just assembled
 # (a toggle position computed in floating point may come out as -1e-16 * L^2).
@@ -33,9 +33,20 @@ class DyadMotion:
     b: BodyState
     assembled: np.ndarray
     det: np.ndarray
-    transmission: np.ndarray
+    transmission: object  # callable returning the transmission angle [rad]; computed only when asked for
     slides: dict  # body name -> (s, ds, dds)
     inner: PointState | None  # the inner revolute joint, where there is one
+
+
+def _root(square, assembled):
+    """sqrt of a closure discriminant: rounding below zero at a toggle is clipped, NaN where not assembled."""
+    root = np.sqrt(np.maximum(square, 0.0))
+    return root if np.all(assembled) else np.where(assembled, root, np.nan)
+
+
+def _anchor(pin: PointState, pin_local, other: PointState, other_local):
+    """The joint from which to place a body's frame: its pin when that is the frame origin (cheapest)."""
+    return (pin, pin_local) if is_origin(pin_local) else (other, other_local)
 
 
 def _line(local_from, local_to):
@@ -72,7 +83,7 @@ def rrr_motion(P: PointState, Q: PointState, a_pin, a_inner, b_pin, b_inner, bra
     along = (La * La - Lb * Lb + d2) / (2.0 * d)
     h2 = La * La - along * along
     assembled = h2 >= -ASSEMBLY_TOL * La * La
-    h = np.sqrt(np.where(assembled, np.maximum(h2, 0.0), np.nan))
+    h = _root(h2, assembled)
     ux = dx / d
     uy = dy / d
     bx = P.x + along * ux - branch * h * uy
@@ -97,10 +108,12 @@ def rrr_motion(P: PointState, Q: PointState, a_pin, a_inner, b_pin, b_inner, bra
     )
     ca, sa = _orient(px, py, La, cda, sda)
     cb, sb = _orient(qx, qy, Lb, cdb, sdb)
-    body_a = body_from_point(B, a_inner, np.arctan2(sa, ca), om_a, al_a, ca, sa)
-    body_b = body_from_point(B, b_inner, np.arctan2(sb, cb), om_b, al_b, cb, sb)
-    # Angle between the two links at B, 0..pi.
-    transmission = np.arccos(np.clip((px * qx + py * qy) / (La * Lb), -1.0, 1.0))
+    body_a = body_from_point(*_anchor(P, a_pin, B, a_inner), np.arctan2(sa, ca), om_a, al_a, ca, sa)
+    body_b = body_from_point(*_anchor(Q, b_pin, B, b_inner), np.arctan2(sb, cb), om_b, al_b, cb, sb)
+
+    def transmission():  # angle between the two links at B, 0..pi
+        return np.arccos(np.clip((px * qx + py * qy) / (La * Lb), -1.0, 1.0))
+
     return DyadMotion(body_a, body_b, assembled, det / (La * Lb), transmission, {}, B)
 
 
@@ -130,7 +143,7 @@ def rrp_motion(P: PointState, S: BodyState, g_local, g_angle, a_pin, a_inner, b_
     e = ux * ry - uy * rx
     disc = La * La - e * e
     assembled = disc >= -ASSEMBLY_TOL * La * La
-    s = t0 + branch * np.sqrt(np.where(assembled, np.maximum(disc, 0.0), np.nan))
+    s = t0 + branch * _root(disc, assembled)
     bx = G.x + s * ux
     by = G.y + s * uy
     px, py = bx - P.x, by - P.y
@@ -159,9 +172,12 @@ def rrp_motion(P: PointState, S: BodyState, g_local, g_angle, a_pin, a_inner, b_
         P.ay + al_a * px - om_a * om_a * py,
     )
     ca, sa = _orient(px, py, La, cda, sda)
-    body_a = body_from_point(B, a_inner, np.arctan2(sa, ca), om_a, al_a, ca, sa)
+    body_a = body_from_point(*_anchor(P, a_pin, B, a_inner), np.arctan2(sa, ca), om_a, al_a, ca, sa)
     body_b = body_from_point(B, b_inner, g_ang, S.omega, S.alpha, ux, uy)
-    transmission = np.arcsin(np.clip(np.abs(det) / La, 0.0, 1.0))
+
+    def transmission():
+        return np.arcsin(np.clip(np.abs(det) / La, 0.0, 1.0))
+
     return DyadMotion(body_a, body_b, assembled, det / La, transmission, {"b": (s, ds, dds)}, B)
 
 
@@ -203,7 +219,10 @@ def rpr_motion(P: PointState, Q: PointState, a_pin, b_pin, slide_local, slide_an
     ddt = (wax * ux + way * uy) - al * cross_du
     rocker = body_from_point(Q, b_pin, theta_b, om, al, c_b, s_b)
     block = body_from_point(P, a_pin, psi, om, al, ux, uy)
-    transmission = np.arcsin(np.clip(np.abs(det) / D, 0.0, 1.0))
+
+    def transmission():
+        return np.arcsin(np.clip(np.abs(det) / D, 0.0, 1.0))
+
     return DyadMotion(block, rocker, assembled, det / D, transmission, {"a": (t, dt, ddt)}, None)
 
 
@@ -241,7 +260,10 @@ def prp_motion(Si: BodyState, g1_local, g1_angle, Sj: BodyState, g2_local, g2_an
     B = PointState(bx, by, vix + ds1 * u1x, viy + ds1 * u1y, aix + dds1 * u1x, aiy + dds1 * u1y)
     body_a = body_from_point(B, a_inner, ang1, Si.omega, Si.alpha, u1x, u1y)
     body_b = body_from_point(B, b_inner, ang2, Sj.omega, Sj.alpha, u2x, u2y)
-    transmission = np.arcsin(np.clip(np.abs(cr), 0.0, 1.0))
+
+    def transmission():
+        return np.arcsin(np.clip(np.abs(cr), 0.0, 1.0))
+
     return DyadMotion(body_a, body_b, assembled, cr, transmission, {"a": (s1, ds1, dds1), "b": (s2, ds2, dds2)}, B)
 
 

@@ -49,7 +49,11 @@ class DyadReport:
     kind: str
     bodies: tuple[str, str]
     det: np.ndarray
-    transmission: np.ndarray
+    transmission_fn: object
+
+    @property
+    def transmission(self) -> np.ndarray:
+        return self.transmission_fn()
 
 
 @dataclass(frozen=True)
@@ -166,27 +170,33 @@ def kinematics(
     _, pivot_name = split_ref(mech.crank.pivot)
     ox, oy = _local(mech, GROUND, pivot_name)
     cu, cv = _local(mech, crank.name, pivot_name)
+    designs = (mech.design_count, 1) if mech.design_count is not None else ()
+    shape = np.broadcast_shapes(designs, np.shape(phi), np.shape(omega), np.shape(eps))
     with np.errstate(all="ignore"):
-        c, s = np.cos(phi), np.sin(phi)
-        zero = np.zeros(np.broadcast_shapes(np.shape(phi), np.shape(ox), np.shape(omega), np.shape(eps)))
-        pivot = PointState(ox + zero, oy + zero, zero, zero, zero, zero)
-        states[crank.name] = body_from_point(pivot, (cu, cv), phi + zero, omega + zero, eps + zero, c, s)
-        assembled = np.ones(zero.shape, dtype=bool)
+        # Scalars stay scalars through the solution (cheaper); results are broadcast to full shape at the end.
+        pivot = PointState(ox, oy, 0.0, 0.0, 0.0, 0.0)
+        states[crank.name] = body_from_point(pivot, (cu, cv), phi, omega, eps, np.cos(phi), np.sin(phi))
+        assembled = True
         for d in mech.dyads:
             motion = _solve_dyad(mech, d, states)
             states[d.a], states[d.b] = motion.a, motion.b
             assembled = assembled & motion.assembled
             for key, (sv, dsv, ddsv) in motion.slides.items():
-                slides[d.a if key == "a" else d.b] = SlideMotion(sv, dsv, ddsv)
+                slides[d.a if key == "a" else d.b] = SlideMotion(*(np.broadcast_to(v, shape) for v in (sv, dsv, ddsv)))
             reports.append(DyadReport(type(d).__name__, (d.a, d.b), motion.det, motion.transmission))
-    assembled = np.broadcast_to(assembled, zero.shape)
+    assembled = np.broadcast_to(assembled, shape)
     if on_fail == "raise" and not np.all(assembled):
         raise AssemblyError(_assembly_message(mech, phi, assembled))
-    states.pop(GROUND)
+    states = {name: _broadcast_state(st, shape) for name, st in states.items() if name != GROUND}
     return Kinematics(
-        mech, phi, np.broadcast_to(omega, zero.shape), np.broadcast_to(eps, zero.shape), assembled,
+        mech, phi, np.broadcast_to(omega, shape), np.broadcast_to(eps, shape), assembled,
         states, slides, tuple(reports),
     )
+
+
+def _broadcast_state(st: BodyState, shape) -> BodyState:
+    return BodyState(*(np.broadcast_to(v, shape) for v in (
+        st.x, st.y, st.vx, st.vy, st.ax, st.ay, st.angle, st.omega, st.alpha, st.cos, st.sin)))
 
 
 def _point(mech: Mechanism, states, ref: str) -> PointState:

@@ -199,12 +199,15 @@ class Mechanism:
     springs: tuple[Spring, ...] = ()
     gravity: Vec = (0.0, -9.80665)
     _index: dict = field(default=None, init=False, repr=False, compare=False)
+    _designs: int | None = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "bodies", tuple(self.bodies))
         object.__setattr__(self, "dyads", tuple(self.dyads))
         object.__setattr__(self, "_index", {b.name: b for b in self.bodies})
-        validate(self)
+        sizes = {np.size(v) for v in _numeric_leaves(self) if np.ndim(v) > 0}
+        object.__setattr__(self, "_designs", max(sizes) if sizes else None)
+        validate(self, sizes)
 
     def body(self, name: str) -> Body:
         try:
@@ -224,8 +227,7 @@ class Mechanism:
     @property
     def design_count(self) -> int | None:
         """The number of design variants (length of the array parameters), or None if all are scalars."""
-        sizes = {np.size(v) for v in _numeric_leaves(self) if np.ndim(v) > 0}
-        return sizes.pop() if sizes else None
+        return self._designs
 
     def point_local(self, ref: str) -> Vec:
         """The body-frame coordinates [m] of a point written ``"body.point"``."""
@@ -281,7 +283,7 @@ def joints(mech: Mechanism) -> list[tuple[str, str, str, str]]:
 # ---------------------------------------------------------------------------------------------- validation
 
 
-def validate(mech: Mechanism) -> None:
+def validate(mech: Mechanism, sizes: set[int]) -> None:
     """Check names, references, masses and finiteness; raise :class:`InputError` naming field and value."""
     label = f"mechanism '{mech.name}'"
     names = [b.name for b in mech.bodies]
@@ -354,7 +356,6 @@ def validate(mech: Mechanism) -> None:
         check_positive(f"free length of spring '{s.name}'", s.free_length, "m", allow_zero=True)
     for coord in mech.gravity:
         check_finite("gravity", coord, "m/s^2")
-    sizes = {np.size(v) for v in _numeric_leaves(mech) if np.ndim(v) > 0}
     if len(sizes) > 1:
         raise InputError(
             f"All design-variant arrays of {label} must have the same length; got lengths {sorted(sizes)}."

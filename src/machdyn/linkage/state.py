@@ -57,6 +57,8 @@ class BodyState:
 
     def offset(self, u, v) -> tuple[np.ndarray, np.ndarray]:
         """The body-frame vector (u, v) [m] rotated into global axes."""
+        if isinstance(v, float) and v == 0.0:  # points on a link's axis: half the work
+            return self.cos * u, self.sin * u
         return self.cos * u - self.sin * v, self.sin * u + self.cos * v
 
     def point(self, u, v) -> PointState:
@@ -84,9 +86,9 @@ def body_from_point(p: PointState, local: tuple, angle, omega, alpha, cos=None, 
     """The state of a body whose point with body-frame coordinates ``local`` [m] moves as ``p``."""
     c = np.cos(angle) if cos is None else cos
     s = np.sin(angle) if sin is None else sin
-    u, v = local
-    if isinstance(u, float | int) and isinstance(v, float | int) and u == 0 and v == 0:
+    if is_origin(local):
         return BodyState(p.x, p.y, p.vx, p.vy, p.ax, p.ay, angle, omega, alpha, c, s)
+    u, v = local
     rx = c * u - s * v
     ry = s * u + c * v
     w2 = omega * omega
@@ -103,3 +105,9 @@ def body_from_point(p: PointState, local: tuple, angle, omega, alpha, cos=None, 
         c,
         s,
     )
+
+
+def is_origin(local) -> bool:
+    """True if the body-frame point ``local`` is the frame origin (0, 0) for every design."""
+    u, v = local
+    return isinstance(u, float | int) and isinstance(v, float | int) and u == 0 and v == 0
