@@ -14,8 +14,8 @@ from .kinetostatics import kinetostatics
 from .model import Mechanism
 
 #: Positions (designs x crank angles) evaluated per chunk: large enough to amortise NumPy's per-call cost,
-#: small enough to stay in cache-friendly sizes (about 40 arrays of this many float64 are alive at once).
-DEFAULT_CHUNK_POSITIONS = 1 << 15
+#: small enough that the ~100 float64 arrays alive at once stay near 100 MB.
+DEFAULT_CHUNK_POSITIONS = 1 << 17
 
 
 @dataclass(frozen=True)

@@ -1,0 +1,258 @@
+"""Loads on the screw and the verification checks (seed 004, eqs 2.46-2.54, 2.72-2.80, 2.85-2.98).
+
+Formula functions take and return SI floats (N, m, Pa, rad, W). :class:`Check` holds one verification:
+value, limit, utilisation = value/limit and pass/fail (value ≤ limit).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..errors import InputError
+
+
+@dataclass(frozen=True)
+class Check:
+    """One verification: ``value`` must not exceed ``limit`` (both in ``unit``)."""
+
+    name: str
+    value: float
+    limit: float
+    unit: str
+    source: str = ""
+
+    @property
+    def utilisation(self) -> float:
+        return self.value / self.limit if self.limit else math.inf
+
+    @property
+    def passed(self) -> bool:
+        return self.value <= self.limit * (1.0 + 1e-12)
+
+
+# --------------------------------------------------------------------------------------------- torque
+
+
+def torque_from_power(power: float, speed_rpm: float) -> float:
+    """Shaft torque T = P/ω [N·m] (seed 004, eq 2.85: T = 9.55·10⁶·P/n with T in N·mm, P in kW).
+
+    power P [W], speed_rpm n [rpm] (> 0).
+    """
+    if speed_rpm <= 0:
+        raise InputError(f"The screw speed must be > 0 rpm; got {speed_rpm:g} rpm.")
+    return power / (speed_rpm * 2.0 * math.pi / 60.0)
+
+
+# ----------------------------------------------------------------------------------- screw loads
+
+
+def helix_angle(pitch: float, radius: float) -> float:
+    """Helix (lead) angle α [rad] at radius R: tan α = S/(2πR) (seed 004, eq 2.88, corrected).
+
+    pitch S [m], radius R [m]. The paper substitutes the drive power (1.123) for the pitch and gets
+    α = 0°8′46″; with the real pitch 160 mm and R = 70 mm, α = 19.99°.
+    """
+    return math.atan(pitch / (2.0 * math.pi * radius))
+
+
+def axial_force(torque: float, radius: float, helix: float, friction_coefficient: float) -> float:
+    """Axial force on the screw F_a = T/(R·tan(α + γ)), tan γ = f [N] (seed 004, eq 2.86).
+
+    torque T [N·m], radius R [m] where the material's friction force acts (0.3…0.4·D, eq 2.87),
+    helix α [rad] at R, friction_coefficient f [-] of material on flight. Valid for α + γ < 90°.
+    """
+    gamma = math.atan(friction_coefficient)
+    if helix + gamma >= math.pi / 2:
+        raise InputError(
+            f"The helix angle plus the friction angle must be < 90 deg; got "
+            f"{math.degrees(helix):.4g} + {math.degrees(gamma):.4g} deg."
+        )
+    return torque / (radius * math.tan(helix + gamma))
+
+
+def lateral_load(torque: float, span: float, radius_factor: float, diameter: float, length: float) -> float:
+    """Horizontal (lateral) load on one span of the screw P_n = 2·T·l/(k·D·L) [N] (seed 004, eq 2.91).
+
+    torque T [N·m], span l [m] between hangers, radius_factor k [-] (0.7…0.8), diameter D [m],
+    length L [m].
+    """
+    return 2.0 * torque * span / (radius_factor * diameter * length)
+
+
+def distributed_loads(axial: float, lateral: float, torque: float, span: float, length: float) -> dict:
+    """Loads spread along the screw (seed 004, eqs 2.92-2.94).
+
+    p_d = F_a/L [N/m] (the paper calls it "vertical"; it is the axial force per length),
+    p_n = P_n/l [N/m] (printed "P_n/1"), m_0 = T/L [N·m/m]. axial F_a [N], lateral P_n [N], torque T [N·m],
+    span l [m], length L [m].
+    """
+    return {"p_d": axial / length, "p_n": lateral / span, "m_0": torque / length}
+
+
+# ---------------------------------------------------------------------------------------- torsion
+
+
+def polar_moment_tube(outer_diameter: float, inner_diameter: float = 0.0) -> float:
+    """Polar second moment of a tube J_p = π(d_o⁴ − d_i⁴)/32 [m⁴]."""
+    if not outer_diameter > inner_diameter >= 0:
+        raise InputError(
+            f"The pipe needs outer diameter > inner diameter >= 0; got {outer_diameter:g} m and "
+            f"{inner_diameter:g} m."
+        )
+    return math.pi * (outer_diameter**4 - inner_diameter**4) / 32.0
+
+
+def polar_moment_seed(diameter: float, eta: float) -> float:
+    """The seed's approximation J_p = 0.1·D⁴(1 − η⁴), η = d/D [m⁴] (seed 004, before eq 2.97).
+
+    The seed applies it to the flight diameter (D = 200 mm, η = 0.5), i.e. treats the flight as a tube;
+    machdyn's checks use the pipe section (:func:`polar_moment_tube`) instead.
+    """
+    return 0.1 * diameter**4 * (1.0 - eta**4)
+
+
+def torsion_angle_distributed(torque_per_length: float, length: float, shear_modulus: float,
+                              polar_moment: float) -> float:
+    """Twist [rad] of a shaft of length L loaded by a uniform torque m_0: φ = m_0·L²/(2·G·J_p).
+
+    Seed 004's own integral (φ = ∫M_z dz/(GJ_p), M_z = m_0·z). The printed number 7.3·10⁻⁶ rad uses D²
+    for D⁴ and drops the ½; correctly, with the paper's J_p = 0.1·0.2⁴·(1 − 0.5⁴), φ = 9.10·10⁻⁵ rad.
+    torque_per_length m_0 [N·m/m], length L [m], shear_modulus G [Pa], polar_moment J_p [m⁴].
+    """
+    return torque_per_length * length**2 / (2.0 * shear_modulus * polar_moment)
+
+
+def shear_stress_tube(torque: float, outer_diameter: float, inner_diameter: float = 0.0) -> float:
+    """Torsional shear stress τ = T·(d_o/2)/J_p [Pa] of a tube or solid shaft."""
+    return torque * outer_diameter / 2.0 / polar_moment_tube(outer_diameter, inner_diameter)
+
+
+# ----------------------------------------------------------------- screw stress from pressure (2.46-2.54)
+
+
+def screw_torque_from_pressure(p_max: float, span: float, r1: float, r2: float, tan_beta: float,
+                               pitch: float) -> float:
+    """Torque at the dangerous section M_x = (p_max·l/2)·tan β·(R1³ − R2³)/3·(2π/t) [N·m].
+
+    Seed 004, eq 2.46 corrected to agree with 2.35 (m_x = p·tan β·(R1³ − R2³)/3·2π/t): the printed
+    (p_max·l/2)·(R1³ − R2³)/2·a lacks tan β and has /2 for /3 (printed/correct = 3/(2 tan β)).
+    p_max [Pa], span l [m], r1 = R1, r2 = R2 [m], tan_beta [-], pitch t [m].
+    """
+    return p_max * span / 2.0 * tan_beta * (r1**3 - r2**3) / 3.0 * 2.0 * math.pi / pitch
+
+
+def screw_axial_from_pressure(p_max: float, span: float, r1: float, r2: float, pitch: float) -> float:
+    """Axial force S = (p_max·l/2)·(R1² − R2²)/2·(2π/t) [N] (seed 004, eq 2.47)."""
+    return p_max * span / 2.0 * (r1**2 - r2**2) / 2.0 * 2.0 * math.pi / pitch
+
+
+def screw_axial_from_torque(torque: float, r1: float, r2: float, tan_beta: float) -> float:
+    """Axial force S = 3·M_x·(R1 + R2)/(2·tan β·(R1² + R1·R2 + R2²)) [N] (seed 004, eq 2.52 corrected).
+
+    The print has R1² + R1² + R2² for R1² + R1R2 + R2² (2.51 inverted).
+    """
+    return 3.0 * torque * (r1 + r2) / (2.0 * tan_beta * (r1**2 + r1 * r2 + r2**2))
+
+
+def screw_equivalent_stress(torque: float, r1: float, r2: float, tan_beta: float) -> float:
+    """Tresca equivalent stress of the screw core σ_td = √(σ² + 4τ²) [Pa] (seed 004, eqs 2.48-2.53).
+
+    σ = S/F, F = πR2², τ = M_x/W_c, W_c = πR2³/2 (solid core of radius R2), S from eq 2.52 (corrected):
+    σ_td = M_x·√([3(R1 + R2)/(2 tan β (R1² + R1R2 + R2²)·πR2²)]² + 16/(πR2³)²).
+    torque M_x [N·m], r1 = R1, r2 = R2 [m], tan_beta [-].
+    """
+    sigma = screw_axial_from_torque(torque, r1, r2, tan_beta) / (math.pi * r2**2)
+    tau = torque / (math.pi * r2**3 / 2.0)
+    return math.sqrt(sigma**2 + 4.0 * tau**2)
+
+
+def screw_equivalent_stress_from_pressure(p_max: float, span: float, r1: float, r2: float,
+                                          tan_beta: float, pitch: float) -> float:
+    """σ_td from the flight pressure (seed 004, eq 2.54): eq 2.53 with M_x from the corrected eq 2.46."""
+    m_x = screw_torque_from_pressure(p_max, span, r1, r2, tan_beta, pitch)
+    return screw_equivalent_stress(m_x, r1, r2, tan_beta)
+
+
+# ------------------------------------------------------------------------- bending between hangers
+
+
+def screw_mass_per_length(diameter: float, pipe_outer: float, pipe_inner: float, flight_thickness: float,
+                          pitch: float, density: float = 7850.0) -> float:
+    """Mass of pipe plus helical flight per metre [kg/m].
+
+    The flight per pitch is the annulus (π/4)(D² − d_o²) stretched by 1/cos α_m, α_m the helix angle at the
+    mean radius; diameter D, pipe_outer d_o, pipe_inner d_i, flight_thickness, pitch [m]; density [kg/m³].
+    """
+    pipe = density * math.pi / 4.0 * (pipe_outer**2 - pipe_inner**2)
+    r_mean = (diameter + pipe_outer) / 4.0
+    stretch = 1.0 / math.cos(helix_angle(pitch, r_mean))
+    flight = density * flight_thickness * math.pi / 4.0 * (diameter**2 - pipe_outer**2) * stretch / pitch
+    return pipe + flight
+
+
+def span_bending_moment(load_per_length: float, span: float) -> float:
+    """Largest bending moment of a simply supported span under a uniform load M = q·l²/8 [N·m].
+
+    Conservative for a continuous screw over several hangers (the continuous-beam value is q·l²/10…q·l²/12).
+    """
+    return load_per_length * span**2 / 8.0
+
+
+def span_deflection(load_per_length: float, span: float, elastic_modulus: float, second_moment: float) -> float:
+    """Mid-span deflection of a simply supported span δ = 5·q·l⁴/(384·E·I) [m]."""
+    return 5.0 * load_per_length * span**4 / (384.0 * elastic_modulus * second_moment)
+
+
+# ------------------------------------------------------------------------- elastic-pin coupling
+
+
+def coupling_design_torque(torque: float, service_factor: float) -> float:
+    """Coupling design torque T_t = k·T [N·m] (seed 004, eq 2.97; k = 1.8 for a screw conveyor)."""
+    return service_factor * torque
+
+
+def bushing_bearing_stress(torque: float, service_factor: float, pins: int, pin_circle: float,
+                           pin_diameter: float, bushing_length: float) -> float:
+    """Bearing stress of the rubber bushes σ_d = 2·k·T/(Z·D0·d_c·l3) [Pa] (seed 004, eq 2.98)."""
+    return 2.0 * service_factor * torque / (pins * pin_circle * pin_diameter * bushing_length)
+
+
+def pin_bending_stress(torque: float, service_factor: float, pins: int, pin_circle: float,
+                       pin_diameter: float, pin_lever: float) -> float:
+    """Bending stress of the coupling pins σ_u = k·T·l0/(0.1·d_c³·D0·Z) [Pa] (seed 004, eq 2.98).
+
+    pin_lever l0 = l1 + l2/2 [m] (the paper derives 41.5 mm but substitutes 62 mm).
+    """
+    return service_factor * torque * pin_lever / (0.1 * pin_diameter**3 * pin_circle * pins)
+
+
+# ----------------------------------------------------------------------------------- base bolts
+
+
+def base_bolt_max_force(belt_force: float, belt_preload: float, lever: float, a: float, b: float) -> float:
+    """Largest shear force on one of four base bolts under the belt pull [N] (seed 004, eqs 2.72-2.77).
+
+    F′ = F_r + F_0 (2.72), M = (L + a/2)·F′ (2.73), F_Z = F′/4 (2.74), r = ½√(a² + (2b)²) (2.76),
+    F_M = M·r/Σr_i² = M/(4r) (2.75), F_max² = F_Z² + F_M² + 2·F_Z·F_M·cos θ, cos θ = a/(2r) (2.77).
+    belt_force F_r [N], belt_preload F_0 [N], lever L [m] from the belt line to the bolt group,
+    a, b [m] bolt spacings as in the seed's figure 3.2.
+    """
+    f = belt_force + belt_preload
+    moment = (lever + a / 2.0) * f
+    r = 0.5 * math.sqrt(a**2 + (2.0 * b) ** 2)
+    f_z = f / 4.0
+    f_m = moment * r / (4.0 * r**2)
+    cos_t = a / (2.0 * r)
+    return math.sqrt(f_z**2 + f_m**2 + 2.0 * f_z * f_m * cos_t)
+
+
+def bolt_minor_diameter_required(force: float, allowable_tensile: float, friction: float = 0.2,
+                                 safety: float = 2.0, interfaces: int = 1) -> float:
+    """Minor diameter of a preloaded bolt carrying ``force`` in shear by friction [m] (seed 004, 2.78-2.80).
+
+    V = k·F/(i·f) (2.79), d3 ≥ √(1.3·4·V/(π·[σ_k])) (2.78; 1.3 for the torsion while tightening).
+    force F [N], allowable_tensile [σ_k] [Pa], friction f [-], safety k [-], interfaces i [-].
+    """
+    preload = safety * force / (interfaces * friction)
+    return math.sqrt(1.3 * 4.0 * preload / (math.pi * allowable_tensile))

@@ -1,0 +1,142 @@
+"""Screw size, pitch and speed from the duty (seed 004, eqs 2.83-2.84; Alexandrov's capacity rule).
+
+All functions take and return SI floats: m, s, kg, rad, and rad/s or rpm where the name says so.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..errors import InputError, check_positive
+from . import tables
+
+#: Seconds per minute, used where speeds are given in rpm.
+_MIN = 60.0
+
+
+def volume_capacity(diameter: float, pitch: float, speed_rpm: float, filling: float,
+                    inclination_factor: float = 1.0) -> float:
+    """Volumetric capacity of a screw conveyor [m³/s].
+
+    Q_v = (π/4)·D²·S·n·φ·C / 60 (seed 004, eq 2.83 divided by ρ; Q in m³/h there is 60·π/4·D²·S·n·φ·C).
+
+    diameter D [m], pitch S [m], speed_rpm n [rpm], filling φ [-] (0 < φ ≤ 1), inclination_factor C [-].
+    Valid for control-fed screws with 0 ≤ β ≤ 20°; the whole flight cross-section (no pipe deduction),
+    as in the seed and in Alexandrov.
+    """
+    return math.pi / 4.0 * diameter**2 * pitch * speed_rpm / _MIN * filling * inclination_factor
+
+
+def speed_limit(diameter: float, speed_coefficient: float) -> float:
+    """Highest recommended screw speed [rpm]: n = k/√D (seed 004, after eq 2.83).
+
+    diameter D [m], speed_coefficient k [rpm·m^0.5] (60 light non-abrasive, 45 heavy non-abrasive,
+    30 heavy abrasive; ``data/speed_coefficient.csv``).
+    """
+    return speed_coefficient / math.sqrt(diameter)
+
+
+def diameter_for_duty(volume_flow: float, pitch_ratio: float, speed_coefficient: float, filling: float,
+                      inclination_factor: float = 1.0) -> float:
+    """Smallest screw diameter [m] that carries ``volume_flow`` at the speed limit n = k/√D.
+
+    With S = s·D and n = k/√D, eq 2.83 gives Q = 15π·s·k·φ·C·D^{5/2} [m³/h], so
+    D = (Q/(15π·s·k·φ·C))^{2/5} (seed 004, eq 2.84; 37.7 = 15π·0.8 there).
+
+    volume_flow Q [m³/s], pitch_ratio s = S/D [-], speed_coefficient k [rpm·m^0.5], filling φ [-],
+    inclination_factor C [-]. Seed 004 prints the mass flow divided by ρ twice over ("ρ" cancels) and
+    labels k = 45 as the filling; the result 164.96 mm is the same.
+    """
+    q_h = volume_flow * 3600.0
+    return (q_h / (15.0 * math.pi * pitch_ratio * speed_coefficient * filling * inclination_factor)) ** 0.4
+
+
+def next_standard_diameter(diameter: float) -> float:
+    """The smallest standard nominal diameter [m] ≥ ``diameter`` (``data/standard_diameters.csv``).
+
+    Raises :class:`InputError` if even the largest standard size is too small.
+    """
+    sizes = tables.standard_diameters()
+    for size in sizes:
+        if size >= diameter * (1.0 - 1e-12):
+            return size
+    raise InputError(
+        f"The required screw diameter {diameter * 1000:.0f} mm exceeds the largest standard size "
+        f"{sizes[-1] * 1000:.0f} mm."
+    )
+
+
+@dataclass(frozen=True)
+class ScrewDesign:
+    """The screw chosen for a duty (SI: m, rpm for speeds, kg/s and m³/s for flows)."""
+
+    diameter_required: float
+    diameter: float
+    pitch: float
+    speed_limit: float
+    speed: float
+    inclination_factor: float
+    filling: float
+    volume_flow: float
+    mass_flow: float
+    capacity_volume: float
+    capacity_mass: float
+
+    @property
+    def filling_actual(self) -> float:
+        """The filling the screw runs with at the duty flow [-]."""
+        return self.filling * self.volume_flow / self.capacity_volume
+
+    @property
+    def omega(self) -> float:
+        """Angular speed [rad/s]."""
+        return self.speed * 2.0 * math.pi / _MIN
+
+
+def design_screw(*, mass_flow: float, bulk_density: float, filling: float, speed_coefficient: float,
+                 pitch_ratio: float, inclination_factor: float, diameter: float | None = None,
+                 speed: float | None = None) -> ScrewDesign:
+    """Size the screw for a duty: required and standard diameter, pitch, speed, capacity.
+
+    mass_flow [kg/s], bulk_density [kg/m³], filling φ [-] (≤ 1), speed_coefficient k [rpm·m^0.5],
+    pitch_ratio S/D [-], inclination_factor C [-]; ``diameter`` [m] forces a size (otherwise the next
+    standard size), ``speed`` [rpm] forces a speed (otherwise the speed limit k/√D, as in seed 004).
+    """
+    check_positive("throughput", mass_flow, "kg/s")
+    check_positive("bulk density", bulk_density, "kg/m^3")
+    check_positive("filling coefficient", filling)
+    if filling > 1.0:
+        raise InputError(f"The filling coefficient must be <= 1; got {filling:g}.")
+    check_positive("speed coefficient", speed_coefficient, "rpm*m^0.5")
+    check_positive("pitch ratio", pitch_ratio)
+    check_positive("inclination factor", inclination_factor)
+    if inclination_factor > 1.0:
+        raise InputError(f"The inclination factor must be <= 1; got {inclination_factor:g}.")
+    volume_flow = mass_flow / bulk_density
+    d_req = diameter_for_duty(volume_flow, pitch_ratio, speed_coefficient, filling, inclination_factor)
+    if diameter is None:
+        sizes = tables.standard_diameters()
+        if d_req > sizes[-1]:
+            biggest = sizes[-1]
+            n_big = speed_limit(biggest, speed_coefficient)
+            cap = volume_capacity(biggest, pitch_ratio * biggest, n_big, filling, inclination_factor)
+            raise InputError(
+                f"The throughput {mass_flow * 3.6:.4g} t/h ({volume_flow * 3600:.4g} m^3/h) exceeds the "
+                f"capacity of the largest standard screw ({biggest * 1000:.0f} mm at {n_big:.1f} rpm): "
+                f"{cap * 3600:.4g} m^3/h. Use several screws or a higher filling or speed coefficient."
+            )
+        d = next_standard_diameter(d_req)
+    else:
+        check_positive("screw diameter", diameter, "m")
+        d = diameter
+    pitch = pitch_ratio * d
+    n_lim = speed_limit(d, speed_coefficient)
+    n = n_lim if speed is None else speed
+    check_positive("screw speed", n, "rpm")
+    cap_v = volume_capacity(d, pitch, n, filling, inclination_factor)
+    return ScrewDesign(
+        diameter_required=d_req, diameter=d, pitch=pitch, speed_limit=n_lim, speed=n,
+        inclination_factor=inclination_factor, filling=filling, volume_flow=volume_flow,
+        mass_flow=mass_flow, capacity_volume=cap_v, capacity_mass=cap_v * bulk_density,
+    )

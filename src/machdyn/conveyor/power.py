@@ -1,0 +1,176 @@
+"""Drive power of a screw conveyor by method: seed 004's textbook form, ISO 7119 and CEMA 350.
+
+SI in and out: mass flow [kg/s], lengths [m], power [W]. The textbook and ISO forms are usually printed
+in t/h and kW; the conversions are done here, once.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from ..errors import InputError
+from . import tables
+
+G = 9.80665  # standard gravity [m/s²]
+HP = 745.69987158227022  # mechanical horsepower [W]
+_LB = 0.45359237  # [kg]
+_FT = 0.3048  # [m]
+
+#: ISO 7119 applies to horizontal and inclined screws up to this inclination [rad].
+ISO7119_MAX_INCLINATION = math.radians(20.0)
+
+
+def power_textbook_360(mass_flow: float, length: float, lift: float, resistance: float) -> float:
+    """Shaft power [W] by the textbook rule as printed in seed 004, eq 2.81-2.82.
+
+    P = Q·H/360 + C0·Q·L/360 [kW] with Q in t/h, L and H in m, i.e. g taken as 10 m/s².
+
+    mass_flow [kg/s], length L [m], lift H [m] (H = L·sin β), resistance C0 [-] (2.5 for salt).
+    The paper defines L as the *horizontal* length but substitutes the inclined length (21 m);
+    pass whichever the user intends. With L = 21 m it reproduces the paper's 1.123 kW.
+    """
+    q_th = mass_flow * 3.6
+    return 1000.0 * (q_th * lift / 360.0 + resistance * q_th * length / 360.0)
+
+
+def power_textbook_367(mass_flow: float, length: float, lift: float, resistance: float) -> float:
+    """Shaft power [W] by the usual textbook form P = Q·(C0·L + H)/367 [kW] (Q in t/h; 367 = 3600/g).
+
+    Source: Alexandrov, *Materials Handling Equipment*, screw conveyors (N = Q·(C0·L + H)/367).
+    mass_flow [kg/s], length L [m], lift H [m], resistance C0 [-]. Equal to m·g·(C0·L + H) in SI.
+    """
+    return mass_flow * G * (resistance * length + lift)
+
+
+@dataclass(frozen=True)
+class Iso7119Power:
+    """ISO 7119 drive power and its three parts [W]."""
+
+    progress: float  # P_H
+    no_load: float  # P_N
+    inclination: float  # P_st
+
+    @property
+    def total(self) -> float:
+        return self.progress + self.no_load + self.inclination
+
+
+def power_iso7119(mass_flow: float, length: float, inclination: float, diameter: float,
+                  progress_resistance: float) -> Iso7119Power:
+    """Drive power at the screw shaft by ISO 7119:1981, P = P_H + P_N + P_st.
+
+    P_H = I_m·L·λ·g/3600 [kW] (I_m in t/h)  → m·L·λ·g  [W]   progress of the material
+    P_N = D·L/20 [kW]                        → 50·D·L   [W]   screw running empty (D, L in m)
+    P_st = I_m·H·g/3600 [kW], H = L·sin β    → m·g·H    [W]   lift (negative for a descending screw)
+
+    mass_flow m [kg/s], length L [m] (conveyor length), inclination β [rad] (≤ 20°; the standard excludes
+    steeper and vertical screws), diameter D [m] (nominal), progress_resistance λ [-] (about 1.2…4;
+    ``data/resistance_coefficient.csv``).
+    """
+    if abs(inclination) > ISO7119_MAX_INCLINATION + 1e-12:
+        raise InputError(
+            f"ISO 7119 applies to inclinations up to 20 deg; got {math.degrees(inclination):.4g} deg."
+        )
+    lift = length * math.sin(inclination)
+    return Iso7119Power(
+        progress=mass_flow * length * progress_resistance * G,
+        no_load=1000.0 * diameter * length / 20.0,
+        inclination=mass_flow * G * lift,
+    )
+
+
+@dataclass(frozen=True)
+class CemaPower:
+    """CEMA 350 horsepower method, all in horsepower [hp] except ``total_watts``."""
+
+    friction_hp: float  # HPf
+    material_hp: float  # HPm
+    lift_hp: float
+    overload_factor: float  # Fo
+    efficiency: float  # e
+    total_hp: float
+
+    @property
+    def total_watts(self) -> float:
+        return self.total_hp * HP
+
+    @property
+    def shaft_hp(self) -> float:
+        """(HPf + HPm + lift)·Fo, before drive losses [hp]."""
+        return self.total_hp * self.efficiency
+
+
+def cema_friction_hp(length: float, speed_rpm: float, diameter_factor: float,
+                     hanger_bearing_factor: float) -> float:
+    """CEMA 350 friction horsepower HPf = L·N·Fd·Fb/1 000 000 [hp].
+
+    length L [m] (converted to ft), speed_rpm N [rpm], diameter_factor Fd [-], hanger_bearing_factor Fb [-].
+    Source: CEMA 350 *Screw Conveyors for Bulk Materials*, horsepower requirements.
+    """
+    return (length / _FT) * speed_rpm * diameter_factor * hanger_bearing_factor / 1.0e6
+
+
+def cema_material_hp(volume_flow: float, bulk_density: float, length: float, flight_factor: float,
+                     material_factor: float, paddle_factor: float = 1.0) -> float:
+    """CEMA 350 material horsepower HPm = C·L·W·Ff·Fm·Fp/1 000 000 [hp].
+
+    volume_flow [m³/s] (→ C in ft³/h), bulk_density [kg/m³] (→ W in lb/ft³), length [m] (→ L in ft),
+    flight_factor Ff, material_factor Fm, paddle_factor Fp [-].
+    """
+    c = volume_flow * 3600.0 / _FT**3
+    w = bulk_density * _FT**3 / _LB
+    return c * (length / _FT) * w * flight_factor * material_factor * paddle_factor / 1.0e6
+
+
+def power_cema(*, volume_flow: float, bulk_density: float, length: float, speed_rpm: float,
+               diameter_factor: float, hanger_bearing_factor: float, material_factor: float,
+               flight_factor: float = 1.0, paddle_factor: float = 1.0, efficiency: float = 1.0,
+               lift: float = 0.0) -> CemaPower:
+    """CEMA 350 total horsepower: (HPf + HPm + HP_lift)·Fo/e.
+
+    HPf and HPm as in :func:`cema_friction_hp` and :func:`cema_material_hp`; Fo from the CEMA overload
+    chart for HPf + HPm + HP_lift < 5.2 hp (:func:`tables.cema_overload_factor`); e the drive efficiency.
+    CEMA's equations are for horizontal conveyors; for an inclined screw the lift power m·g·H is added
+    before the overload factor (machdyn's choice, stated in the report). volume_flow [m³/s],
+    bulk_density [kg/m³], length [m], speed_rpm [rpm], lift H [m].
+    """
+    if not 0.0 < efficiency <= 1.0:
+        raise InputError(f"The drive efficiency must be in (0, 1]; got {efficiency:g}.")
+    hpf = cema_friction_hp(length, speed_rpm, diameter_factor, hanger_bearing_factor)
+    hpm = cema_material_hp(volume_flow, bulk_density, length, flight_factor, material_factor, paddle_factor)
+    hpl = volume_flow * bulk_density * G * lift / HP
+    fo = tables.cema_overload_factor(hpf + hpm + hpl)
+    total = (hpf + hpm + hpl) * fo / efficiency
+    return CemaPower(hpf, hpm, hpl, fo, efficiency, total)
+
+
+@dataclass(frozen=True)
+class PowerResult:
+    """One method's shaft power (before drive losses) [W], with its parts for the report."""
+
+    method: str
+    label: str
+    shaft_power: float
+    parts: dict[str, float] = field(default_factory=dict)  # name -> W
+    note: str = ""
+
+
+METHODS = ("textbook_360", "textbook_367", "iso7119", "cema")
+LABELS = {
+    "textbook_360": "Seed 004 textbook rule (as printed, /360)",
+    "textbook_367": "Textbook rule Q(C0·L+H)/367",
+    "iso7119": "ISO 7119 (P_H + P_N + P_st)",
+    "cema": "CEMA 350 horsepower method",
+}
+
+
+def select_motor(required_power: float) -> float:
+    """The smallest IEC 60072-1 motor rating [W] ≥ ``required_power`` [W]."""
+    for rating in tables.motor_ratings():
+        if rating >= required_power * (1.0 - 1e-12):
+            return rating
+    raise InputError(
+        f"The required motor power {required_power / 1000:.4g} kW exceeds the largest tabulated rating "
+        f"{tables.motor_ratings()[-1] / 1000:g} kW."
+    )

@@ -1,0 +1,167 @@
+"""Standard tables of the screw-conveyor module, read from the CSV files in ``data/``.
+
+Each table's source is in ``data/SOURCES.md``. Lookups by name raise :class:`~machdyn.errors.InputError`
+naming the table and the value, with a "did you mean" when a close name exists.
+"""
+
+from __future__ import annotations
+
+import csv
+import difflib
+import math
+from functools import cache
+from pathlib import Path
+
+from ..errors import InputError
+
+DATA = Path(__file__).with_name("data")
+
+
+@cache
+def read_table(name: str) -> tuple[dict[str, str], ...]:
+    """Rows of ``data/<name>.csv`` as dicts of strings (cached)."""
+    with (DATA / f"{name}.csv").open(newline="", encoding="utf-8") as fh:
+        return tuple(dict(row) for row in csv.DictReader(fh))
+
+
+def _suggest(value: str, options: list[str]) -> str:
+    close = difflib.get_close_matches(value, options, n=1)
+    return f" Did you mean '{close[0]}'?" if close else ""
+
+
+def lookup(name: str, key_column: str, key: str, value_column: str, *, what: str) -> float:
+    """Value of ``value_column`` in the row of table ``name`` whose ``key_column`` is ``key``."""
+    rows = read_table(name)
+    options = [row[key_column] for row in rows]
+    for row in rows:
+        if row[key_column] == key:
+            text = row[value_column]
+            if text == "":
+                raise InputError(f"The {what} '{key}' has no value for {value_column} (not recommended).")
+            return float(text)
+    raise InputError(
+        f"The {what} must be one of {', '.join(options)}; got '{key}'.{_suggest(str(key), options)}"
+    )
+
+
+def standard_diameters() -> list[float]:
+    """Nominal screw diameters [m], ascending (ISO 1050 / R10 series)."""
+    return [float(row["diameter_mm"]) / 1000.0 for row in read_table("standard_diameters")]
+
+
+def motor_ratings() -> list[float]:
+    """IEC 60072-1 rated output powers of squirrel-cage motors [W], ascending."""
+    return [float(row["rated_power_kw"]) * 1000.0 for row in read_table("motor_ratings_iec")]
+
+
+def speed_coefficient(material_class: str) -> float:
+    """Speed coefficient k in n = k/√D [rpm·m^0.5] of a material class (see ``speed_coefficient.csv``)."""
+    return lookup("speed_coefficient", "material_class", material_class, "k_rpm_sqrt_m",
+                  what="speed class")
+
+
+def resistance_coefficient(group: str) -> float:
+    """Progress resistance coefficient λ (ISO 7119) = C0 of the textbook method for a material group."""
+    return lookup("resistance_coefficient", "material_group", group, "coefficient", what="material group")
+
+
+def inclination_factor(inclination: float) -> float:
+    """Capacity reduction factor C for an inclined screw, interpolated linearly in the table.
+
+    inclination [rad], 0 ≤ β ≤ 20°. Source: Alexandrov, *Materials Handling Equipment* (Mir), screw
+    conveyors; the same factors as seed 004 ("with β = 10° choose C = 0.8").
+    """
+    rows = read_table("inclination_factor")
+    xs = [float(r["inclination_deg"]) for r in rows]
+    ys = [float(r["factor"]) for r in rows]
+    deg = math.degrees(inclination)
+    if deg < 0 or deg > xs[-1] + 1e-9:
+        raise InputError(
+            f"The inclination factor table covers 0 to {xs[-1]:g} deg; got {deg:g} deg. "
+            "Give screw.inclination_factor explicitly for steeper screws."
+        )
+    for x0, x1, y0, y1 in zip(xs, xs[1:], ys, ys[1:], strict=False):
+        if x0 <= deg <= x1:
+            return y0 + (y1 - y0) * (deg - x0) / (x1 - x0)
+    return ys[-1]
+
+
+def cema_diameter_factor(diameter: float) -> float:
+    """CEMA 350 conveyor diameter factor Fd for a screw diameter [m].
+
+    Tabulated for the inch sizes 4…24 in (``cema_diameter_factor.csv``); a metric size between two of
+    them (e.g. 200 mm = 7.87 in) is interpolated linearly in diameter, which machdyn states in the report.
+    """
+    rows = read_table("cema_diameter_factor")
+    xs = [float(r["diameter_in"]) for r in rows]
+    ys = [float(r["Fd"]) for r in rows]
+    inches = diameter / 0.0254
+    if inches < xs[0] * 0.99 or inches > xs[-1] * 1.01:
+        raise InputError(
+            f"The CEMA diameter factor Fd is tabulated for {xs[0]:g} to {xs[-1]:g} in screws; got "
+            f"{inches:.3g} in ({diameter * 1000:g} mm). Give cema.diameter_factor explicitly."
+        )
+    inches = min(max(inches, xs[0]), xs[-1])
+    for x0, x1, y0, y1 in zip(xs, xs[1:], ys, ys[1:], strict=False):
+        if x0 <= inches <= x1:
+            return y0 + (y1 - y0) * (inches - x0) / (x1 - x0)
+    return ys[-1]
+
+
+def cema_diameter_is_tabulated(diameter: float) -> bool:
+    """True if ``diameter`` [m] is one of the CEMA inch sizes (within 1 %)."""
+    inches = diameter / 0.0254
+    return any(abs(float(r["diameter_in"]) - inches) <= 0.01 * inches for r in read_table("cema_diameter_factor"))
+
+
+def cema_hanger_bearing_factor(bearing: str) -> float:
+    """CEMA 350 hanger bearing factor Fb of a hanger bearing type."""
+    return lookup("cema_hanger_bearing_factor", "bearing", bearing, "Fb", what="hanger bearing")
+
+
+def cema_flight_factor(flight_type: str, loading: float) -> float:
+    """CEMA 350 flight factor Ff for a flight type and trough loading (fraction; 15, 30, 45, 95 % columns).
+
+    The loading is rounded up to the next tabulated column.
+    """
+    columns = [(0.15, "loading_15"), (0.30, "loading_30"), (0.45, "loading_45"), (0.95, "loading_95")]
+    for limit, column in columns:
+        if loading <= limit + 1e-9:
+            return lookup("cema_flight_factor", "flight_type", flight_type, column, what="flight type")
+    raise InputError(f"The trough loading for the CEMA flight factor must be <= 0.95; got {loading:g}.")
+
+
+def cema_paddle_factor(paddles: int) -> float:
+    """CEMA 350 paddle factor Fp for 0…4 paddles per pitch."""
+    return lookup("cema_paddle_factor", "paddles_per_pitch", str(int(paddles)), "Fp",
+                  what="number of paddles per pitch")
+
+
+def cema_overload_factor(horsepower: float) -> float:
+    """CEMA 350 overload factor Fo for (HPf + HPm) [hp].
+
+    The CEMA chart is a straight line on a log scale of horsepower from Fo = 3.0 at 0.2 hp to Fo = 1.0 at
+    5.2 hp; Fo = 3.0 below 0.2 hp and 1.0 from 5.2 hp on. The end points are in ``cema_overload_factor.csv``.
+    """
+    rows = read_table("cema_overload_factor")
+    (h0, f0), (h1, f1) = ((float(r["horsepower"]), float(r["Fo"])) for r in rows)
+    if horsepower <= h0:
+        return f0
+    if horsepower >= h1:
+        return f1
+    return f0 + (f1 - f0) * math.log(horsepower / h0) / math.log(h1 / h0)
+
+
+def cema_material_factor(material: str) -> float:
+    """CEMA 350 material factor Fm of a listed material."""
+    return lookup("cema_materials", "material", material, "Fm", what="CEMA material")
+
+
+def drive_efficiency(drive: str) -> float:
+    """Typical overall efficiency of a drive arrangement (``drive_efficiency.csv``)."""
+    return lookup("drive_efficiency", "drive", drive, "efficiency", what="drive")
+
+
+def metric_bolts() -> list[tuple[str, float]]:
+    """ISO metric coarse bolts as (designation, minor diameter d3 [m]), ascending."""
+    return [(r["designation"], float(r["minor_d3_mm"]) / 1000.0) for r in read_table("iso_metric_bolts")]
