@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputError
-from .kinematics import angle_ranges, crank_angles, kinematics
+from .kinematics import angle_ranges, crank_angles, format_ranges, kinematics
 from .model import GROUND, RPR, RRP, RRR, Mechanism, split_ref
 
 #: Below this transmission angle [deg] force transmission is poor (Norton, §4.10: keep mu >= 40 deg).
@@ -128,7 +128,7 @@ def diagnose(mech: Mechanism, samples: int = 3600) -> Diagnostics:
     gaps = angle_ranges(phi, ~ok)
     kind = grashof_type(mech)
     if gaps:
-        text = ", ".join(f"{np.degrees(a):.1f}°–{np.degrees(b):.1f}°" for a, b in gaps)
+        text = format_ranges(gaps)
         warnings.append(f"The linkage cannot assemble for crank angles {text}" + (f" ({kind})." if kind else "."))
     dead = []
     t_min, t_max = np.inf, -np.inf

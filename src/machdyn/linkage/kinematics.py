@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import AssemblyError, InputError, check_finite
+from ..errors import AssemblyError, InputError, SingularPositionError, check_finite
 from . import dyads as dy
 from .model import GROUND, PRP, RPR, RRP, RRR, Mechanism, split_ref
 from .state import BodyState, PointState, body_from_point, ground_state
@@ -187,6 +187,8 @@ def kinematics(
     assembled = np.broadcast_to(assembled, shape)
     if on_fail == "raise" and not np.all(assembled):
         raise AssemblyError(_assembly_message(mech, phi, assembled))
+    if on_fail == "raise":
+        _check_not_dead(mech, phi, reports, shape)
     states = {name: _broadcast_state(st, shape) for name, st in states.items() if name != GROUND}
     return Kinematics(
         mech, phi, np.broadcast_to(omega, shape), np.broadcast_to(eps, shape), assembled,
@@ -272,6 +274,32 @@ def angle_ranges(phi: np.ndarray, mask: np.ndarray) -> list[tuple[float, float]]
     return runs
 
 
+def format_ranges(ranges, limit: int = 6) -> str:
+    """Crank-angle ranges [rad] as text in degrees: '10.0°–40.0°, 200.0°' (a single angle where a range is one
+    sample)."""
+    parts = [
+        f"{np.degrees(a):.1f}°" if np.isclose(a, b) else f"{np.degrees(a):.1f}°–{np.degrees(b):.1f}°"
+        for a, b in ranges[:limit]
+    ]
+    if len(ranges) > limit:
+        parts.append(f"and {len(ranges) - limit} more")
+    return ", ".join(parts)
+
+
+def _check_not_dead(mech: Mechanism, phi, reports, shape) -> None:
+    """Raise :class:`SingularPositionError` at a dead (toggle) position, where velocities are unbounded."""
+    for rep in reports:
+        dead = np.broadcast_to(rep.det == 0.0, shape)
+        if np.any(dead):
+            at = np.broadcast_to(phi, shape)[dead]
+            text = ", ".join(f"{np.degrees(a):.2f}°" for a in np.unique(at)[:6])
+            raise SingularPositionError(
+                f"Mechanism '{mech.name}' is in a dead (toggle) position of its {rep.kind} dyad "
+                f"{rep.bodies[0]}-{rep.bodies[1]} at crank angle(s) {text}: velocities and forces are unbounded "
+                "there. Leave these angles out or change the geometry."
+            )
+
+
 def _assembly_message(mech: Mechanism, phi, assembled) -> str:
     from .diagnostics import grashof_type
 
@@ -283,7 +311,7 @@ def _assembly_message(mech: Mechanism, phi, assembled) -> str:
         fails = fails.any(axis=0)
     phi_row = np.broadcast_to(phi, fails.shape)
     ranges = angle_ranges(phi_row, fails)
-    text = ", ".join(f"{np.degrees(a):.1f}°–{np.degrees(b):.1f}°" for a, b in ranges[:6])
+    text = format_ranges(ranges)
     kind = grashof_type(mech)
     kind_note = f" Grashof type: {kind}." if kind else ""
     if np.all(fails):
