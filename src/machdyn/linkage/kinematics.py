@@ -78,10 +78,15 @@ class Kinematics:
         """Angle [rad], omega [rad/s], alpha [rad/s^2] and frame-origin motion of a body."""
         if name == GROUND:
             return ground_state()
-        try:
-            return self.bodies[name]
-        except KeyError:
-            raise InputError(f"No body '{name}' in mechanism '{self.mechanism.name}'.") from None
+        key = ("body", name)
+        if key not in self._points:
+            try:
+                raw = self.bodies[name]
+            except KeyError:
+                raise InputError(f"No body '{name}' in mechanism '{self.mechanism.name}'.") from None
+            # Broadcast on first use only: scalars (e.g. a constant crank speed) stay cheap in the solve.
+            self._points[key] = _broadcast_state(raw, self.shape)
+        return self._points[key]
 
     def point(self, ref: str) -> PointState:
         """Motion of the point ``"body.point"``: x, y [m], vx, vy [m/s], ax, ay [m/s^2]."""
@@ -189,7 +194,7 @@ def kinematics(
         raise AssemblyError(_assembly_message(mech, phi, assembled))
     if on_fail == "raise":
         _check_not_dead(mech, phi, reports, shape)
-    states = {name: _broadcast_state(st, shape) for name, st in states.items() if name != GROUND}
+    states.pop(GROUND)
     return Kinematics(
         mech, phi, np.broadcast_to(omega, shape), np.broadcast_to(eps, shape), assembled,
         states, slides, tuple(reports),
