@@ -5,3 +5,20 @@ Everything computes in SI floats; units are parsed and printed at the boundary b
 """
 
 __version__ = "0.1.0"
+
+_LAZY = {
+    "load_problem": "problem",
+    "dump_problem": "problem",
+    "run_problem": "runner",
+    "check_problem": "runner",
+    "RunResult": "runner",
+}
+
+
+def __getattr__(name: str):
+    # Re-exports load on first use so that `machdyn --version` and `import machdyn` stay light.
+    if name in _LAZY:
+        from importlib import import_module
+
+        return getattr(import_module(f".{_LAZY[name]}", __name__), name)
+    raise AttributeError(f"module 'machdyn' has no attribute {name!r}")

@@ -1,0 +1,340 @@
+"""The ``machdyn`` command: run and check problem files, copy out the shipped examples.
+
+Exit codes: 0 success; 1 the analysis failed on a valid problem (or the outputs could not be written);
+2 bad input (the problem file, the command line). Messages about bad input go to stderr, without a traceback.
+Heavy libraries (pandas, matplotlib) are imported only when a command needs them.
+"""
+
+from __future__ import annotations
+
+import sys
+import threading
+import time
+from enum import StrEnum
+from pathlib import Path
+from typing import Annotated, Any
+
+import typer
+
+from . import __version__
+
+EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT = 0, 1, 2
+
+app = typer.Typer(
+    name="machdyn",
+    help="Analyse machine mechanisms and bulk-material machinery from problem files (TOML with units).",
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+    rich_markup_mode=None,
+)
+
+
+FileArg = Annotated[Path, typer.Argument(help="The problem file (TOML).", show_default=False, metavar="FILE")]
+
+
+class TableFormat(StrEnum):
+    table = "table"
+    csv = "csv"
+    json = "json"
+    markdown = "markdown"
+
+
+def _console(stderr: bool = False):
+    from rich.console import Console
+
+    return Console(stderr=stderr, highlight=False, soft_wrap=False)
+
+
+def _fail(message: str, code: int) -> typer.Exit:
+    typer.echo(message, err=True)
+    return typer.Exit(code)
+
+
+def _version(value: bool) -> None:
+    if value:
+        typer.echo(f"machdyn {__version__}")
+        raise typer.Exit(EXIT_OK)
+
+
+@app.callback()
+def main(
+    version: Annotated[
+        bool, typer.Option("--version", callback=_version, is_eager=True, help="Print the version and exit.")
+    ] = False,
+) -> None:
+    """machdyn: exact planar linkage kinematics, kinetostatics and energy; screw conveyors."""
+
+
+# ----------------------------------------------------------------------------------------- progress
+
+
+class Progress:
+    """A progress bar on stderr that appears only once a run has taken more than ``delay`` seconds."""
+
+    def __init__(self, steps: list[str], enabled: bool, delay: float = 1.0):
+        self.steps = steps
+        self.enabled = enabled
+        self.delay = delay
+        self._bar = None
+        self._task = None
+        self._done = 0
+        self._label = "starting"
+        self._lock = threading.Lock()
+        self._timer: threading.Timer | None = None
+
+    def __enter__(self) -> Progress:
+        if self.enabled:
+            self._timer = threading.Timer(self.delay, self._show)
+            self._timer.daemon = True
+            self._timer.start()
+        return self
+
+    def _show(self) -> None:
+        from rich.progress import BarColumn, TextColumn, TimeElapsedColumn
+        from rich.progress import Progress as RichProgress
+
+        with self._lock:
+            if self._bar is not None or self._timer is None:
+                return
+            self._bar = RichProgress(
+                TextColumn("{task.description:<16}"), BarColumn(), TextColumn("{task.completed}/{task.total}"),
+                TimeElapsedColumn(), console=_console(stderr=True), transient=True,
+            )
+            self._task = self._bar.add_task(self._label, total=len(self.steps), completed=self._done)
+            self._bar.start()
+
+    def step(self, label: str) -> None:
+        with self._lock:
+            if label in self.steps:
+                self._done = self.steps.index(label)
+            self._label = label
+            if self._bar is not None:
+                self._bar.update(self._task, description=label, completed=self._done)
+
+    def __exit__(self, *exc: Any) -> None:
+        with self._lock:
+            if self._timer is not None:
+                self._timer.cancel()
+                self._timer = None
+            if self._bar is not None:
+                self._bar.update(self._task, completed=len(self.steps))
+                self._bar.stop()
+                self._bar = None
+
+
+# --------------------------------------------------------------------------------------------- tables
+
+
+def _cell(value: Any) -> str:
+    if isinstance(value, float):
+        return f"{value:.7g}"
+    if isinstance(value, list):
+        return ", ".join(_cell(v) for v in value)
+    return str(value)
+
+
+def _print_rows(rows: list[tuple[str, Any, str]], fmt: TableFormat, title: str, warnings: list[str]) -> None:
+    out = _console()
+    if fmt is TableFormat.table:
+        from rich.table import Table
+
+        table = Table(title=title, title_justify="left", show_lines=False)
+        table.add_column("quantity")
+        table.add_column("value", justify="right")
+        table.add_column("unit")
+        for q, v, u in rows:
+            table.add_row(str(q), _cell(v), str(u or ""))
+        out.print(table)
+        for w in warnings:
+            typer.echo(f"warning: {w}", err=True)
+    elif fmt is TableFormat.csv:
+        import csv
+        import io
+
+        buf = io.StringIO()
+        writer = csv.writer(buf, lineterminator="\n")
+        writer.writerow(["quantity", "value", "unit"])
+        for q, v, u in rows:
+            writer.writerow([q, _cell(v), u or ""])
+        sys.stdout.write(buf.getvalue())
+    elif fmt is TableFormat.json:
+        from .outputs import json_text
+
+        data = {"problem": title, "summary": [{"quantity": q, "value": v, "unit": u or ""} for q, v, u in rows],
+                "warnings": warnings}
+        sys.stdout.write(json_text(data))
+    else:
+        def esc(text: str) -> str:
+            return text.replace("|", "\\|")
+
+        lines = [f"## {esc(title)}", "", "| quantity | value | unit |", "|---|---:|---|"]
+        lines += [f"| {esc(str(q))} | {esc(_cell(v))} | {esc(str(u or ''))} |" for q, v, u in rows]
+        if warnings:
+            lines += ["", "Warnings:", ""] + [f"- {esc(w)}" for w in warnings]
+        sys.stdout.write("\n".join(lines) + "\n")
+
+
+# ------------------------------------------------------------------------------------------- commands
+
+
+def _load(file: Path):
+    """(problem, text) of a problem file, or exit 2 with every problem listed."""
+    from .errors import ProblemFileError
+    from .problem import load_problem
+    from .problem.loader import read_text
+
+    try:
+        text, _ = read_text(file)
+        return load_problem(file), text
+    except ProblemFileError as exc:
+        raise _fail(str(exc), EXIT_BAD_INPUT) from None
+
+
+def _engine_error(exc: Exception, file: Path) -> typer.Exit:
+    from .errors import AssemblyError, InputError, ProblemFileError
+
+    if isinstance(exc, ProblemFileError):
+        return _fail(str(exc), EXIT_BAD_INPUT)
+    if isinstance(exc, AssemblyError):
+        return _fail(f"1 problem(s) in {file}:\n  mechanism: cannot be assembled: {exc}", EXIT_BAD_INPUT)
+    if isinstance(exc, InputError):
+        return _fail(f"1 problem(s) in {file}:\n  {exc}", EXIT_BAD_INPUT)
+    return _fail(f"error: the analysis of {file} failed: {type(exc).__name__}: {exc}", EXIT_FAILED)
+
+
+@app.command()
+def run(
+    file: FileArg,
+    out: Annotated[
+        Path, typer.Option("--out", "-o", help="Directory for results.json, the CSV files and report.html.")
+    ] = Path("out"),
+    format: Annotated[
+        TableFormat, typer.Option("--format", "-f", help="How the summary table is printed.")
+    ] = TableFormat.table,
+    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing but errors.")] = False,
+) -> None:
+    """Analyse a problem file, print a summary table and write the outputs."""
+    from .errors import AssemblyError, InputError, MachdynError, ProblemFileError
+
+    steps = {
+        "mechanism": ["reading", "model", "analysis", "tables", "report"],
+        "rotary_screen": ["reading", "model", "analysis", "energy figures", "tables", "report"],
+        "screw_conveyor": ["reading", "design", "report"],
+    }
+    started = time.perf_counter()
+    show_progress = not quiet and sys.stderr.isatty()
+    with Progress(steps["mechanism"], enabled=show_progress) as progress:
+        progress.step("reading")
+        problem, text = _load(file)
+        from .runner import problem_kind_of, run_problem
+
+        progress.steps = steps[problem_kind_of(problem)]
+
+        try:
+            result = run_problem(problem, text=text, step=progress.step)
+        except (ProblemFileError, AssemblyError, InputError) as exc:
+            raise _engine_error(exc, file) from None
+        except MachdynError as exc:
+            raise _fail(f"error: the analysis of {file} failed: {exc}", EXIT_FAILED) from None
+        except (ArithmeticError, ValueError, FloatingPointError, MemoryError) as exc:
+            raise _engine_error(exc, file) from None
+        try:
+            paths = result.write(out, step=progress.step)
+        except OSError as exc:
+            raise _fail(f"error: cannot write the outputs to '{out}': {exc.strerror or exc}", EXIT_FAILED) from None
+    if quiet:
+        return
+    _print_rows(result.summary_rows, format, result.title, result.warnings)
+    if format is TableFormat.table:
+        elapsed = time.perf_counter() - started
+        typer.echo(f"wrote {len(paths)} file(s) to {out}/ ({', '.join(p.name for p in paths)}) in {elapsed:.2f} s",
+                   err=True)
+
+
+@app.command()
+def check(file: FileArg) -> None:
+    """Validate a problem file without analysing it: units, ranges, names, and that the linkage assembles."""
+    from .errors import AssemblyError, InputError, ProblemFileError
+
+    problem, _ = _load(file)
+    from .runner import check_problem
+
+    try:
+        warnings = check_problem(problem)
+    except (ProblemFileError, AssemblyError, InputError) as exc:
+        raise _engine_error(exc, file) from None
+    for w in warnings:
+        typer.echo(f"warning: {w}", err=True)
+    typer.echo(f"{file}: OK")
+
+
+def _examples_dir() -> Path:
+    from importlib import resources
+
+    return Path(str(resources.files("machdyn") / "data" / "examples"))
+
+
+def _examples() -> dict[str, Path]:
+    return {p.stem: p for p in sorted(_examples_dir().glob("*.toml"))}
+
+
+def _describe(path: Path) -> str:
+    import tomllib
+
+    try:
+        meta = tomllib.loads(path.read_text(encoding="utf-8")).get("meta", {})
+    except (OSError, tomllib.TOMLDecodeError):
+        return ""
+    return str(meta.get("name", ""))
+
+
+@app.command()
+def examples(
+    name: Annotated[
+        str | None, typer.Argument(help="The example to copy out.", show_default=False, metavar="NAME")
+    ] = None,
+    to: Annotated[
+        Path | None, typer.Option("--to", help="Where to copy it (a file or a directory; default ./NAME.toml).")
+    ] = None,
+    force: Annotated[bool, typer.Option("--force", help="Overwrite an existing file.")] = False,
+) -> None:
+    """List the shipped example problems, or copy one out to start from."""
+    found = _examples()
+    if name is None:
+        from rich.table import Table
+
+        table = Table(title="Shipped examples (machdyn examples NAME --to FILE copies one out)", title_justify="left")
+        table.add_column("name")
+        table.add_column("description")
+        for stem, path in found.items():
+            table.add_row(stem, _describe(path))
+        _console().print(table)
+        return
+    key = name.removesuffix(".toml")
+    if key not in found:
+        import difflib
+
+        near = difflib.get_close_matches(key, list(found), n=1)
+        hint = f"; did you mean '{near[0]}'?" if near else ""
+        raise _fail(f"error: no example named '{name}'{hint} (examples: {', '.join(found)})", EXIT_BAD_INPUT)
+    target = to if to is not None else Path(f"{key}.toml")
+    if target.is_dir():
+        target = target / f"{key}.toml"
+    if target.exists() and not force:
+        raise _fail(f"error: '{target}' exists; use --force to overwrite it", EXIT_BAD_INPUT)
+    from .outputs import atomic_write_text
+
+    try:
+        atomic_write_text(target, found[key].read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise _fail(f"error: cannot write '{target}': {exc.strerror or exc}", EXIT_FAILED) from None
+    typer.echo(f"copied example '{key}' to {target}; run it with: machdyn run {target}")
+
+
+def entry() -> None:  # pragma: no cover - the console script calls app() directly
+    app()
+
+
+if __name__ == "__main__":  # pragma: no cover
+    app()

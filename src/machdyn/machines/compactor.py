@@ -1,0 +1,353 @@
+"""Four-bar impact-vibration compactor with an "Archimedes lever" (seed paper 003).
+
+Source: M.A. Asfandiyarov et al., *Mathematical modelling of the modernised impact-vibration mechanism*
+(seed 003, Bulletin of SUSU, Mechanical Engineering, 2019). Corrections follow ``seed-reproduction.md`` section
+003 (cited as "repro 003.x").
+
+Geometry (paper Fig. 4): crank O-A of radius r about O = (0, 0); the compaction plate A-B of length R1 = l
+(eq 6); the pendulum C-B of length R pivoting at C = (l, h). phi is the crank angle, theta2 the direction of
+A->B (plate), theta3 the direction of C->B (pendulum). In the engine this is ``four_bar(crank=r, coupler=l,
+rocker=R, ground=sqrt(l^2 + h^2), ground_angle=atan2(h, l))``: the engine's ``coupler`` body angle is theta2,
+its ``rocker`` body angle is theta3 and ``branch`` is the sigma of repro 003.2 (+1: B to the left of A->C).
+
+The paper gives no dimensions; the defaults of :class:`Compactor` are the illustrative geometry of repro
+003.2 (r = 0.03, l = 0.5, h = 0.25, R = 0.25 m, omega1 = 10 rad/s, sigma = -1), which are not from the paper.
+
+Every function takes and returns SI floats or numpy arrays (m, kg, N, rad, rad/s, N m, kg m^2).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from ..errors import AssemblyError, InputError, check_finite, check_positive
+
+__all__ = [
+    "Compactor",
+    "closed_form",
+    "plate_angles",
+    "line_angle",
+    "line_angle_printed",
+    "force_gain_crank",
+    "force_gain_lever",
+    "plate_normal_force",
+    "transmission_angle",
+    "reduced_inertia_eq18",
+    "reduced_moment",
+    "reduced_moment_eq19_printed",
+    "GAMMA_LIMIT",
+]
+
+#: The design rule of seed 003 (conclusion 2a): the plate's angle to the horizontal must stay below 20 deg.
+GAMMA_LIMIT = np.radians(20.0)
+
+
+def _wrap(angle):
+    """Angle [rad] reduced to (-pi, pi]."""
+    return -np.mod(-np.asarray(angle, dtype=float) + np.pi, 2.0 * np.pi) + np.pi
+
+
+def _check_geometry(r, l, h, R):
+    check_positive("crank radius r", r, "m")
+    check_positive("plate length l", l, "m")
+    check_finite("pivot height h", h, "m")
+    check_positive("pendulum length R", R, "m")
+
+
+def closed_form(phi, r, l, h, R, omega1=1.0, branch=-1):
+    """Exact position, velocity and acceleration of the compactor four-bar (repro 003.2; seed 003 eqs 2-12).
+
+    Position (solution of eq 7): d = C - A, a = (l^2 - R^2 + d^2) / (2 d), eta = sqrt(l^2 - a^2),
+    B = A + a u + sigma eta n (u = d/|d|, n = u turned +90 deg). Velocities (omega1 constant):
+    omega2 = -r omega1 sin(phi - theta3) / (l sin(theta2 - theta3)),
+    omega3 = r omega1 sin(phi - theta2) / (R sin(theta3 - theta2)); accelerations
+    eps2 = [R omega3^2 - r omega1^2 cos(phi - theta3) - l omega2^2 cos(theta2 - theta3)] / (l sin(theta2 - theta3)),
+    eps3 = [r omega1^2 cos(phi - theta2) + l omega2^2 - R omega3^2 cos(theta3 - theta2)] / (R sin(theta3 - theta2)).
+
+    Parameters: phi crank angle [rad]; r crank radius [m] > 0; l plate length = horizontal pivot distance [m]
+    > 0; h pivot height [m]; R pendulum length [m] > 0; omega1 crank speed [rad/s]; branch sigma = +1 or -1.
+    Valid where |l - R| <= |C - A| <= l + R (assembly) and away from sin(theta2 - theta3) = 0 (dead positions).
+    Returns a dict of arrays: xA, yA, xB, yB, theta2, theta3, omega2, omega3, eps2, eps3.
+    """
+    _check_geometry(r, l, h, R)
+    if branch not in (1, -1):
+        raise InputError(f"The branch sigma must be +1 or -1; got {branch!r}.")
+    phi = np.asarray(phi, dtype=float)
+    xa, ya = r * np.cos(phi), r * np.sin(phi)
+    dx, dy = l - xa, h - ya
+    d = np.hypot(dx, dy)
+    a = (l**2 - R**2 + d**2) / (2.0 * d)
+    eta2 = l**2 - a**2
+    if np.any(eta2 < 0):
+        raise AssemblyError(
+            "The compactor four-bar cannot close at some crank angles: it needs |l - R| <= |C - A| <= l + R; "
+            f"got r = {r:g} m, l = {l:g} m, h = {h:g} m, R = {R:g} m."
+        )
+    eta = np.sqrt(eta2)
+    ux, uy = dx / d, dy / d
+    xb = xa + a * ux - branch * eta * uy
+    yb = ya + a * uy + branch * eta * ux
+    th2 = np.arctan2(yb - ya, xb - xa)
+    th3 = np.arctan2(yb - h, xb - l)
+    s23 = np.sin(th2 - th3)
+    w2 = -r * omega1 * np.sin(phi - th3) / (l * s23)
+    w3 = r * omega1 * np.sin(phi - th2) / (R * -s23)
+    e2 = (R * w3**2 - r * omega1**2 * np.cos(phi - th3) - l * w2**2 * np.cos(th2 - th3)) / (l * s23)
+    e3 = (r * omega1**2 * np.cos(phi - th2) + l * w2**2 - R * w3**2 * np.cos(th3 - th2)) / (R * -s23)
+    return {"xA": xa, "yA": ya, "xB": xb, "yB": yb, "theta2": th2, "theta3": th3,
+            "omega2": w2, "omega3": w3, "eps2": e2, "eps3": e3}
+
+
+def plate_angles(phi, theta2, theta3):
+    """Corrected seed 003 eqs 8-10: (alpha, beta, gamma) [rad] from the link directions (repro 003.3).
+
+    alpha = theta2 - phi (crank to plate), beta = theta3 - theta2 (plate to pendulum), both reduced to
+    (-pi, pi]; gamma = theta2 reduced to (-pi, pi] (plate to the horizontal, positive when B is above A).
+    The printed eqs 8-9 put the *product* of the two slopes in the numerator (the angle between two lines is
+    arctan|(m1 - m2)/(1 + m1 m2)|, :func:`line_angle`), and even corrected they return only acute angles, lose
+    the orientation and divide by zero at phi = 90 deg, 270 deg and at alpha = 90 deg; atan2 has none of this.
+
+    Parameters: phi crank angle [rad]; theta2 plate direction A->B [rad]; theta3 pendulum direction C->B [rad].
+    """
+    for label, v in (("phi", phi), ("theta2", theta2), ("theta3", theta3)):
+        check_finite(f"angle {label}", v, "rad")
+    return _wrap(np.asarray(theta2) - phi), _wrap(np.asarray(theta3) - theta2), _wrap(theta2)
+
+
+def line_angle(m1, m2):
+    """Acute angle [rad] between two lines of slopes m1, m2: arctan|(m1 - m2) / (1 + m1 m2)|.
+
+    The textbook form that seed 003 eqs 8-9 intend. Undefined for vertical lines and at 1 + m1 m2 = 0.
+    """
+    m1, m2 = np.asarray(m1, dtype=float), np.asarray(m2, dtype=float)
+    return np.arctan(np.abs((m1 - m2) / (1.0 + m1 * m2)))
+
+
+def line_angle_printed(m1, m2):
+    """Seed 003 eqs 8-9 as extracted (wrong): arctan|m1 m2 / (1 + m1 m2)| [rad]. Kept to document the error;
+    at the illustrative geometry and phi = 60 deg it gives 5.56 deg where the crank-plate angle is 62.93 deg."""
+    m1, m2 = np.asarray(m1, dtype=float), np.asarray(m2, dtype=float)
+    return np.arctan(np.abs(m1 * m2 / (1.0 + m1 * m2)))
+
+
+def force_gain_crank(alpha):
+    """Seed 003 force gain k1 = 1 / cos alpha [-] (eq 1 and Fig. 3b).
+
+    Exact meaning (repro 003.3): by virtual work, a crank force P tangential at A (P = driving torque / r)
+    balances a force P / cos alpha **normal to the plate at A** (V_A . n_plate = r omega1 cos alpha). It is not
+    the force along the plate (that would be P / sin alpha). alpha [rad], |alpha| != 90 deg.
+    Returns 1/cos alpha (negative when the plate's normal opposes the crank's tangent).
+    """
+    check_finite("angle alpha", alpha, "rad")
+    return 1.0 / np.cos(alpha)
+
+
+def force_gain_lever(l, a):
+    """Seed 003 force gain k2 = l / a [-] of the "Archimedes lever" (eq 1).
+
+    The plate is a lever with its fulcrum at B (supported by the near-vertical pendulum): a force at A
+    (distance l from B) gives l/a times that force at a particle a distance a from B. Parameters: l plate length
+    [m] > 0; a distance of the particle from B along the plate [m], 0 < a <= l.
+    """
+    check_positive("plate length l", l, "m")
+    check_positive("lever arm a", a, "m")
+    if np.any(np.asarray(a) > l * (1 + 1e-12)):
+        raise InputError(f"The lever arm a must not exceed the plate length l = {l:g} m; got {np.max(a):g} m.")
+    return l / np.asarray(a, dtype=float)
+
+
+def plate_normal_force(driving_torque, r, alpha):
+    """Force normal to the plate at A [N] that a driving torque balances: F_n = (M / r) k1 = M / (r cos alpha).
+
+    Virtual work on a massless mechanism (repro 003.3). Parameters: driving torque M [N m]; r crank radius [m]
+    > 0; alpha crank-plate angle [rad].
+    """
+    check_positive("crank radius r", r, "m")
+    return np.asarray(driving_torque, dtype=float) / r * force_gain_crank(alpha)
+
+
+def transmission_angle(theta2, theta3):
+    """Transmission angle [rad] between plate and pendulum, |theta2 - theta3| folded into 0 ... pi.
+
+    theta2, theta3 [rad]. For the illustrative geometry it stays within 82.5 ... 97.9 deg (repro 003.2).
+    """
+    return np.abs(_wrap(np.asarray(theta2, dtype=float) - theta3))
+
+
+def reduced_inertia_eq18(omega1, I1, m2, v2, I2, omega2, m3, v3, I3, omega3):
+    """Seed 003 eq 18: I_red = I1 + m2 (V2/w1)^2 + I2 (w2/w1)^2 + m3 (V3/w1)^2 + I3 (w3/w1)^2 [kg m^2].
+
+    Correct if I1 is about the crank pivot O, I2, I3 are centroidal and V2, V3 are centroid speeds (repro 003.3;
+    it equals 2 KE / omega1^2). The paper writes G2/g, G3/g: G are weights there, although listed as "mass".
+    Parameters: omega1 [rad/s] != 0; I1, I2, I3 [kg m^2] >= 0; m2, m3 [kg] >= 0; v2, v3 centroid speeds [m/s];
+    omega2, omega3 [rad/s].
+    """
+    if np.any(np.asarray(omega1) == 0):
+        raise InputError("The crank speed omega1 must be non-zero for a reduced inertia; got 0 rad/s.")
+    return (I1 + m2 * (np.asarray(v2) / omega1) ** 2 + I2 * (np.asarray(omega2) / omega1) ** 2
+            + m3 * (np.asarray(v3) / omega1) ** 2 + I3 * (np.asarray(omega3) / omega1) ** 2)
+
+
+def reduced_moment(omega1, loads):
+    """Corrected seed 003 eq 19: M_red = sum(F . V_F) / omega1 [N m] (repro 003.3).
+
+    Every force is taken with the velocity of **its own point of application**: the compaction force Q with
+    the velocity of the plate point where it acts, each weight G_i with its centroid's velocity, the crank's
+    weight G1 included (eq 19 omits it, which is right only if the crank's centroid is at O).
+
+    Parameters: omega1 crank speed [rad/s] != 0; loads: iterable of ((Fx, Fy) [N], (Vx, Vy) [m/s]) pairs.
+    Positive M_red = the loads drive the crank.
+    """
+    if np.any(np.asarray(omega1) == 0):
+        raise InputError("The crank speed omega1 must be non-zero for a reduced moment; got 0 rad/s.")
+    power = 0.0
+    for (fx, fy), (vx, vy) in loads:
+        power = power + np.asarray(fx) * vx + np.asarray(fy) * vy
+    return power / omega1
+
+
+def reduced_moment_eq19_printed(omega1, g2, v2, q, g3, v3):
+    """Seed 003 eq 19 as printed (wrong): M = (G2 . V2 + Q . V2 + G3 . V3) / omega1 [N m].
+
+    It takes the compaction force Q with the plate-centroid velocity V2 instead of the velocity of Q's point of
+    application and omits the crank weight G1. With the assumed data of repro 003.3 (Q = 2000 N vertical at
+    0.10 m from B) it gives 24.01 N m at phi = 0 where the correct value is 6.02 N m.
+    Parameters: omega1 [rad/s]; g2, q, g3 force vectors (Fx, Fy) [N]; v2, v3 centroid velocities (Vx, Vy) [m/s].
+    """
+    return reduced_moment(omega1, [(g2, v2), (q, v2), (g3, v3)])
+
+
+# ------------------------------------------------------------------------------------------ machine
+
+
+@dataclass(frozen=True)
+class Compactor:
+    """The compactor four-bar with its masses and the compaction force, built on the linkage engine.
+
+    Geometry [m]: r crank radius, l plate length (= horizontal pivot distance, eq 6), h pivot height, R pendulum
+    length; omega1 crank speed [rad/s]; branch sigma (+1/-1). Masses [kg] m1, m2, m3 and centroidal inertias
+    [kg m^2] I1, I2, I3 of crank, plate and pendulum; centroids at ``crank_com`` from O along O->A (default 0:
+    the crank balanced about O), ``plate_com`` from A along A->B (default l/2), ``pendulum_com`` from C along
+    C->B (default R/2). The compaction force ``q_force`` = (Qx, Qy) [N] acts on the plate at ``q_from_b`` [m] from
+    B (towards A), during ``q_active`` = (start, end) [rad] of the crank angle or all the time (None).
+    ``gravity`` [m/s^2] defaults to the engine's. The defaults are the illustrative geometry of repro 003.2.
+    """
+
+    r: float = 0.03
+    l: float = 0.5
+    h: float = 0.25
+    R: float = 0.25
+    omega1: float = 10.0
+    branch: int = -1
+    m1: float = 0.0
+    m2: float = 0.0
+    m3: float = 0.0
+    I1: float = 0.0
+    I2: float = 0.0
+    I3: float = 0.0
+    crank_com: float = 0.0
+    plate_com: float | None = None
+    pendulum_com: float | None = None
+    q_force: tuple[float, float] = (0.0, 0.0)
+    q_from_b: float = 0.0
+    q_active: tuple[float, float] | None = None
+    gravity: tuple[float, float] = field(default=(0.0, -9.80665))
+
+    def __post_init__(self) -> None:
+        _check_geometry(self.r, self.l, self.h, self.R)
+        check_finite("crank speed omega1", self.omega1, "rad/s")
+        if self.branch not in (1, -1):
+            raise InputError(f"The compactor branch must be +1 or -1; got {self.branch!r}.")
+        if not 0.0 <= self.q_from_b <= self.l:
+            raise InputError(
+                f"The compaction force must act on the plate: q_from_b must be within 0 ... {self.l:g} m; "
+                f"got {self.q_from_b:g} m."
+            )
+
+    @property
+    def ground_length(self) -> float:
+        """g = |OC| = sqrt(l^2 + h^2) [m]."""
+        return float(np.hypot(self.l, self.h))
+
+    def mechanism(self):
+        """The engine :class:`~machdyn.linkage.model.Mechanism` (``machdyn.linkage.four_bar``).
+
+        Bodies ``crank`` {O, A}, ``coupler`` = the plate {A, B, Q}, ``rocker`` = the pendulum {D = C, B}; ground
+        points O and D = C = (l, h). The compaction force is the point force ``Q`` at ``coupler.Q``.
+        """
+        from ..linkage import four_bar
+        from ..linkage.model import PointForce
+
+        plate_com = 0.5 * self.l if self.plate_com is None else self.plate_com
+        pendulum_com = 0.5 * self.R if self.pendulum_com is None else self.pendulum_com
+        u = self.l - self.q_from_b
+        mech = four_bar(
+            self.r, self.l, self.R, self.ground_length,
+            ground_angle=float(np.arctan2(self.h, self.l)),
+            branch=self.branch,
+            masses=(self.m1, self.m2, self.m3),
+            inertias=(self.I1, self.I2, self.I3),
+            coms=((self.crank_com, 0.0), (plate_com, 0.0), (pendulum_com, 0.0)),
+            coupler_point=(u, 0.0),
+            name="compactor",
+        )
+        # four_bar names the coupler point "P"; it is the point where Q acts.
+        forces = tuple(mech.forces)
+        if self.q_force != (0.0, 0.0):
+            forces += (PointForce("Q", "coupler.P", self.q_force[0], self.q_force[1], self.q_active),)
+        return replace(mech, forces=forces, gravity=tuple(self.gravity))
+
+    def kinematics(self, phi):
+        """Engine kinematics at crank angles phi [rad] with speed omega1."""
+        from ..linkage import kinematics
+
+        return kinematics(self.mechanism(), phi, speed=self.omega1)
+
+    def angles(self, phi):
+        """(alpha, beta, gamma) [rad] at crank angles phi (corrected eqs 8-10, :func:`plate_angles`), from the
+        engine's link angles."""
+        k = self.kinematics(phi)
+        return plate_angles(k.crank_angle, k.body("coupler").angle, k.body("rocker").angle)
+
+    def gamma_check(self, samples: int = 3601, limit: float = GAMMA_LIMIT) -> dict:
+        """The design rule gamma < 20 deg (seed 003, conclusion 2a) over a crank revolution.
+
+        Returns {"gamma_max": max |gamma| [rad], "at": the crank angle [rad] where it occurs, "limit": limit,
+        "ok": gamma_max < limit, "transmission_min"/"transmission_max": range of :func:`transmission_angle`
+        [rad]}. The extreme is located on a grid of ``samples`` angles and refined by a bounded scalar search.
+        """
+        from scipy.optimize import minimize_scalar
+
+        phi = np.linspace(0.0, 2.0 * np.pi, int(samples))
+        k = self.kinematics(phi)
+        th2, th3 = k.body("coupler").angle, k.body("rocker").angle
+        g = np.abs(_wrap(th2))
+        i = int(np.argmax(g))
+        h = phi[1] - phi[0]
+
+        def neg_gamma(x):
+            return -float(np.abs(_wrap(self.kinematics(np.array([x])).body("coupler").angle))[0])
+
+        res = minimize_scalar(neg_gamma, bounds=(phi[i] - h, phi[i] + h), method="bounded",
+                              options={"xatol": 1e-10})
+        gmax, at = (-res.fun, res.x) if -res.fun >= g[i] else (g[i], phi[i])
+        mu = transmission_angle(th2, th3)
+        return {"gamma_max": float(gmax), "at": float(np.mod(at, 2 * np.pi)), "limit": float(limit),
+                "ok": bool(gmax < limit), "transmission_min": float(mu.min()),
+                "transmission_max": float(mu.max())}
+
+    def reduced_inertia(self, phi):
+        """Reduced moment of inertia [kg m^2] at crank angles phi (seed 003 eq 18) = 2 KE / omega1^2, from the
+        engine's energy."""
+        from ..linkage import energy
+
+        return energy(self.mechanism(), phi, speed=self.omega1).reduced_inertia
+
+    def reduced_moment(self, phi):
+        """Reduced moment of the loads [N m] at crank angles phi (corrected seed 003 eq 19): the power of
+        gravity (G1, G2, G3) and of Q at its own point, divided by omega1, from the engine's energy."""
+        from ..linkage import energy
+
+        return energy(self.mechanism(), phi, speed=self.omega1).reduced_moment

@@ -1,0 +1,245 @@
+"""Build the engine's :class:`~machdyn.linkage.model.Mechanism` from a validated linkage problem.
+
+The geometry comes from the engine's builders (``slider_crank``, ``four_bar``, ...) or, for ``custom``, from
+the bodies and dyads written out; masses, inertias and centres of mass given in the file then replace the
+builders' defaults body by body; gravity, loads and counterweights are added last. References to bodies and
+points are checked here so that a misspelling is reported with its path and a "did you mean".
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+
+from ..errors import InputError, ProblemFileError
+from .errors import did_you_mean
+from .schema import (
+    CustomSpec,
+    DoubleCrankSpec,
+    DoubleSliderCrankSpec,
+    FourBarSpec,
+    InvertedSliderCrankSpec,
+    LinkageProblem,
+    LinkSpec,
+    PRPSpec,
+    RPRSpec,
+    RRPSpec,
+    RRRSpec,
+    SixBarSpec,
+    SliderCrankSpec,
+)
+
+STANDARD_GRAVITY = (0.0, -9.80665)
+
+
+def crank_angles(problem: LinkageProblem) -> np.ndarray:
+    """The crank angles [rad] a problem's ``[drive]`` asks for."""
+    d = problem.drive
+    if d.start is None and d.stop is None:
+        return np.linspace(0.0, 2 * math.pi, d.positions, endpoint=False)
+    start = 0.0 if d.start is None else d.start
+    stop = start + 2 * math.pi if d.stop is None else d.stop
+    return np.linspace(start, stop, d.positions)
+
+
+def gravity_vector(problem: LinkageProblem) -> tuple[float, float]:
+    g = problem.loads.gravity
+    if g == "on":
+        return STANDARD_GRAVITY
+    if g == "off":
+        return (0.0, 0.0)
+    return (float(g[0]), float(g[1]))
+
+
+def _geometry(spec):
+    """The mechanism from its builder (or written out for custom) and the list of (body, spec) overrides."""
+    from .. import linkage as lk
+
+    name = spec.name or spec.type
+    if isinstance(spec, SliderCrankSpec):
+        mech = lk.slider_crank(
+            spec.crank.length, spec.rod.length, spec.offset, slide_angle=spec.slide_angle,
+            branch=spec.branch, linear_density=spec.linear_density, name=name,
+        )
+        return mech, [("crank", spec.crank), ("rod", spec.rod), ("slider", spec.slider)]
+    if isinstance(spec, FourBarSpec):
+        mech = lk.four_bar(
+            spec.crank.length, spec.coupler.length, spec.rocker.length, spec.ground.length,
+            ground_angle=spec.ground.angle, branch=spec.branch, linear_density=spec.linear_density,
+            coupler_point=spec.coupler_point, name=name,
+        )
+        return mech, [("crank", spec.crank), ("coupler", spec.coupler), ("rocker", spec.rocker)]
+    if isinstance(spec, InvertedSliderCrankSpec):
+        mech = lk.inverted_slider_crank(
+            spec.crank.length, spec.ground.length, offset=spec.offset, branch=spec.branch,
+            linear_density=spec.linear_density, rocker_length=spec.rocker.length, name=name,
+        )
+        return mech, [("crank", spec.crank), ("block", spec.block), ("rocker", spec.rocker)]
+    if isinstance(spec, SixBarSpec):
+        mech = lk.six_bar(
+            spec.crank.length, spec.coupler.length, spec.rocker.length, spec.ground.length,
+            spec.coupler_point, spec.link5.length, spec.link6.length, spec.pivot6,
+            branch=spec.branch, branch2=spec.branch2, linear_density=spec.linear_density, name=name,
+        )
+        return mech, [
+            ("crank", spec.crank), ("coupler", spec.coupler), ("rocker", spec.rocker),
+            ("link5", spec.link5), ("link6", spec.link6),
+        ]
+    if isinstance(spec, DoubleSliderCrankSpec):
+        mech = lk.double_slider_crank(
+            spec.crank.length_1, spec.rod_1.length, spec.crank.length_2, spec.rod_2.length,
+            offset_1=spec.offset_1, offset_2=spec.offset_2, phase=spec.crank.phase,
+            slide_angle_1=spec.slide_angle_1, slide_angle_2=spec.slide_angle_2,
+            branch_1=spec.branch_1, branch_2=spec.branch_2, linear_density=spec.linear_density, name=name,
+        )
+        return mech, [
+            ("crank", spec.crank), ("rod_1", spec.rod_1), ("slider_1", spec.slider_1),
+            ("rod_2", spec.rod_2), ("slider_2", spec.slider_2),
+        ]
+    assert isinstance(spec, CustomSpec)
+    return _custom(spec, name), []
+
+
+def _custom(spec: CustomSpec, name: str):
+    from ..linkage import model as m
+
+    problems: list[tuple[str, str]] = []
+    names = [b.name for b in spec.bodies]
+    for i, d in enumerate(spec.dyads):
+        for attr in ("a", "b"):
+            body = getattr(d, attr)
+            if body not in names:
+                problems.append((f"mechanism.dyads[{i}].{attr}", _unknown("body", body, names)))
+    if spec.crank.body not in names:
+        problems.append(("mechanism.crank.body", _unknown("body", spec.crank.body, names)))
+    if problems:
+        raise ProblemFileError(problems)
+    bodies = tuple(m.Body(b.name, dict(b.points), b.mass, b.inertia, tuple(b.com)) for b in spec.bodies)
+    dyads = []
+    for d in spec.dyads:
+        if isinstance(d, RRRSpec):
+            dyads.append(m.RRR(d.a, d.b, d.pin_a, d.pin_b, d.inner, d.branch))
+        elif isinstance(d, RRPSpec):
+            dyads.append(m.RRP(d.a, d.b, d.pin_a, d.inner, m.Guide(d.guide.point, d.guide.angle), d.branch))
+        elif isinstance(d, RPRSpec):
+            dyads.append(m.RPR(d.a, d.b, d.pin_a, d.pin_b, (d.slide.point, d.slide.angle), d.branch))
+        elif isinstance(d, PRPSpec):
+            dyads.append(
+                m.PRP(d.a, d.b, d.inner, m.Guide(d.guide_a.point, d.guide_a.angle),
+                      m.Guide(d.guide_b.point, d.guide_b.angle))
+            )
+    return m.Mechanism(
+        name=name,
+        ground={k: tuple(v) for k, v in spec.ground.items()},
+        bodies=bodies,
+        crank=m.Crank(spec.crank.body, spec.crank.pivot),
+        dyads=tuple(dyads),
+    )
+
+
+def _unknown(what: str, value: str, choices: list[str]) -> str:
+    plural = {"body": "bodies"}.get(what, what + "s")
+    return f"unknown {what} '{value}'{did_you_mean(value, choices)} ({plural}: {', '.join(choices) or 'none'})"
+
+
+def _span(body) -> float:
+    """The distance between a body's first two points (its length as a bar)."""
+    pts = list(body.points.values())
+    if len(pts) < 2:
+        return 0.0
+    return float(math.hypot(pts[1][0] - pts[0][0], pts[1][1] - pts[0][1]))
+
+
+def _override(body, spec) -> object:
+    """``body`` with the mass, inertia and centre of mass the file gives.
+
+    A link given a mass but no inertia gets that of a uniform bar, m L^2/12; a block gets 0; the double
+    crank gets m (L1^2 + L2^2)/6 (as the builder)."""
+    changes: dict = {}
+    if spec.mass is not None:
+        changes["mass"] = spec.mass
+        if spec.inertia is None:
+            if isinstance(spec, LinkSpec):
+                length = spec.length if spec.length is not None else _span(body)
+                changes["inertia"] = spec.mass * length**2 / 12.0
+            elif isinstance(spec, DoubleCrankSpec):
+                changes["inertia"] = spec.mass * (spec.length_1**2 + spec.length_2**2) / 6.0
+            else:
+                changes["inertia"] = 0.0
+    if spec.inertia is not None:
+        changes["inertia"] = spec.inertia
+    if spec.com is not None:
+        changes["com"] = tuple(spec.com)
+    return replace(body, **changes) if changes else body
+
+
+def build_mechanism(problem: LinkageProblem):
+    """The :class:`~machdyn.linkage.model.Mechanism` a linkage problem describes.
+
+    Raises :class:`~machdyn.errors.ProblemFileError` for references to unknown bodies or points and for
+    every rule the engine's model check finds broken (each with its path)."""
+    from ..linkage import model as m
+
+    spec = problem.mechanism
+    try:
+        mech, overrides = _geometry(spec)
+    except InputError as exc:
+        raise ProblemFileError([("mechanism", str(exc))]) from None
+    if overrides:
+        by_name = dict(overrides)
+        bodies = tuple(_override(b, by_name[b.name]) if b.name in by_name else b for b in mech.bodies)
+        mech = replace(mech, bodies=bodies)
+
+    body_names = [b.name for b in mech.bodies]
+    points = [f"ground.{g}" for g in mech.ground] + [f"{b.name}.{p}" for b in mech.bodies for p in b.points]
+    problems: list[tuple[str, str]] = []
+
+    def need_point(path: str, ref: str) -> None:
+        if ref not in points:
+            problems.append((path, _unknown("point", ref, points)))
+
+    def need_body(path: str, body: str) -> None:
+        if body not in body_names:
+            problems.append((path, _unknown("body", body, body_names)))
+
+    loads = problem.loads
+    forces, torques, springs, masses = [], [], [], []
+    for i, f in enumerate(loads.forces):
+        need_point(f"loads.forces[{i}].point", f.point)
+        forces.append(m.PointForce(f.name or f"force_{i + 1}", f.point, f.fx, f.fy, _active(f.active)))
+    for i, t in enumerate(loads.torques):
+        need_body(f"loads.torques[{i}].body", t.body)
+        torques.append(m.BodyTorque(t.name or f"torque_{i + 1}", t.body, t.torque, _active(t.active)))
+    for i, s in enumerate(loads.springs):
+        need_point(f"loads.springs[{i}].point_1", s.point_1)
+        need_point(f"loads.springs[{i}].point_2", s.point_2)
+        springs.append(m.Spring(s.name or f"spring_{i + 1}", s.point_1, s.point_2, s.stiffness, s.free_length))
+    for i, c in enumerate(problem.counterweights):
+        need_body(f"counterweights[{i}].body", c.body)
+        position = (c.radius * math.cos(c.angle), c.radius * math.sin(c.angle))
+        masses.append(m.PointMass(c.name or f"counterweight_{i + 1}", c.body, c.mass, position, c.inertia))
+    names = [x.name for x in (*forces, *torques, *springs, *masses)] + body_names
+    dupes = sorted({n for n in names if names.count(n) > 1})
+    if dupes:
+        problems.append(
+            ("loads", f"names of loads, counterweights and bodies must differ; got {', '.join(dupes)} twice")
+        )
+    if problems:
+        raise ProblemFileError(problems)
+    try:
+        return replace(
+            mech,
+            gravity=gravity_vector(problem),
+            forces=tuple(forces),
+            torques=tuple(torques),
+            springs=tuple(springs),
+            point_masses=tuple(masses),
+        )
+    except InputError as exc:
+        raise ProblemFileError([("mechanism", str(exc))]) from None
+
+
+def _active(active):
+    return None if active is None else (float(active[0]), float(active[1]))

@@ -1,0 +1,99 @@
+"""Quantity fields of problem files: text with a unit in, an SI float out; each field knows its unit.
+
+``Length`` accepts ``"45 mm"``, ``"0.045 m"`` or ``"1.8 in"`` and stores 0.045 (metres). A bare number is
+refused for every dimensional value (angles included: ``30`` could be degrees or radians), so that no value is
+ever read in a unit its author did not mean. The SI unit and the positivity rule of a field are kept in its
+metadata (:class:`Unit`), which the dumper reads to write the value back with its unit.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Annotated, Any
+
+from pydantic import BeforeValidator
+
+from ..errors import InputError
+
+
+@dataclass(frozen=True)
+class Unit:
+    """Metadata of a quantity field: its SI ``unit``, the ``kind`` of quantity and its sign rule."""
+
+    unit: str
+    kind: str
+    rule: str = ""  # "" (any finite value), ">0" or ">=0"
+
+
+#: Units a dump prefers for each kind, when they give back exactly the same float; SI otherwise.
+PREFERRED_UNITS: dict[str, tuple[str, ...]] = {
+    "length": ("mm", "m"),
+    "angle": ("deg", "rad"),
+    "angular_velocity": ("rad/s", "rpm"),
+}
+
+
+class FieldError(ValueError):
+    """A value of a problem file breaks a rule; the message starts with the rule (the path is added later)."""
+
+
+def _example(value: Any, unit: str) -> str:
+    return f'"{value} {unit}"'
+
+
+def to_si(value: Any, meta: Unit) -> float:
+    """Convert a problem-file value to a float in ``meta.unit``; raise :class:`FieldError` saying why not."""
+    from ..units import parse_quantity
+
+    if isinstance(value, bool) or not isinstance(value, str | int | float):
+        raise FieldError(
+            f"must be a quantity with a unit written as text, like {_example(1, _hint(meta))}; "
+            f"got {_show(value)}"
+        )
+    if isinstance(value, int | float) and meta.unit:
+        raise FieldError(f"needs a unit, like {_example(value, _hint(meta))}; got the bare number {value!r}")
+    try:
+        si = parse_quantity(value, meta.unit, field="value")
+    except InputError as exc:
+        text = str(exc)
+        for prefix in ("The value ", "the value "):
+            if text.startswith(prefix):
+                text = text[len(prefix) :]
+        raise FieldError(text.rstrip(".")) from None
+    if meta.rule == ">0" and not si > 0:
+        raise FieldError(f"must be > 0 {meta.unit}; got {_show(value)}")
+    if meta.rule == ">=0" and not si >= 0:
+        raise FieldError(f"must be >= 0 {meta.unit}; got {_show(value)}")
+    return si
+
+
+def _hint(meta: Unit) -> str:
+    return {"angle": "deg", "length": "mm"}.get(meta.kind, meta.unit)
+
+
+def _show(value: Any) -> str:
+    return f"'{value}'" if isinstance(value, str) else repr(value)
+
+
+def quantity(unit: str, kind: str, rule: str = "") -> Any:
+    """An annotated float type for a quantity in ``unit`` (SI), e.g. ``quantity("m", "length", ">0")``."""
+    meta = Unit(unit, kind, rule)
+    return Annotated[float, BeforeValidator(lambda v: to_si(v, meta)), meta]
+
+
+Length = quantity("m", "length")
+PositiveLength = quantity("m", "length", ">0")
+NonNegativeLength = quantity("m", "length", ">=0")
+Mass = quantity("kg", "mass", ">=0")
+PositiveMass = quantity("kg", "mass", ">0")
+Inertia = quantity("kg*m^2", "inertia", ">=0")
+Angle = quantity("rad", "angle")
+AngularVelocity = quantity("rad/s", "angular_velocity")
+AngularAcceleration = quantity("rad/s^2", "angular_acceleration")
+Acceleration = quantity("m/s^2", "acceleration")
+Force = quantity("N", "force")
+Torque = quantity("N*m", "torque")
+Stiffness = quantity("N/m", "stiffness", ">=0")
+LinearDensity = quantity("kg/m", "linear_density", ">0")
+
+Point = tuple[Length, Length]

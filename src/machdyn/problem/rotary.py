@@ -1,0 +1,88 @@
+"""The ``[rotary_screen]`` problem: the rotary grading screen of seed 002 from the paper's inputs.
+
+The table holds the paper's symbols (R, m1, L, m2, m3, l_AS1, l_BS2, l_CS2, m_e, r_e), each with its unit; the
+crank speed omega is ``[drive] speed``. ``spring = true`` adds the energy-storing spring of eq 17 (stiffness
+m_C omega^2 unless ``stiffness`` is given). The run analyses the engine's model of the screen
+(:meth:`machdyn.machines.rotary_screen.RotaryScreen.mechanism`) and reports the paper's energy figures
+(T1max, T2, T3, the range of W) next to the engine's exact values.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from pydantic import Field, ValidationError
+
+from ..errors import InputError, ProblemFileError
+from .errors import problems_from
+from .fields import Mass, NonNegativeLength, PositiveLength, PositiveMass, Stiffness
+from .schema import DriveSpec, Meta, OutputSpec, Spec
+
+
+class RotaryScreenSpec(Spec):
+    """Seed 002's inputs: crank radius R, masses m1 (crank), m2 (rod, i.e. the screen body), m3 (slider);
+    rod length L; centroid distances l_AS1 (crank, from A), l_BS2 and l_CS2 (rod, from B and C); counterweight
+    m_e at radius r_e. ``spring`` adds the compensating spring, of ``stiffness`` (default eq 17)."""
+
+    R: PositiveLength
+    m1: Mass
+    L: PositiveLength
+    m2: PositiveMass
+    m3: Mass
+    l_AS1: NonNegativeLength
+    l_BS2: PositiveLength
+    l_CS2: PositiveLength
+    m_e: Mass
+    r_e: PositiveLength
+    spring: bool = Field(False, strict=True)
+    stiffness: Stiffness | None = None
+
+
+class RotaryScreenProblem(Spec):
+    """A rotary grading screen problem: ``[meta]``, ``[rotary_screen]``, ``[drive]``, ``[output]``."""
+
+    meta: Meta = Meta(name="rotary grading screen")
+    rotary_screen: RotaryScreenSpec
+    drive: DriveSpec
+    output: OutputSpec = OutputSpec()
+
+    def screen(self):
+        """The :class:`~machdyn.machines.rotary_screen.RotaryScreen` of these inputs."""
+        from ..machines.rotary_screen import RotaryScreen
+
+        s = self.rotary_screen
+        return RotaryScreen(
+            R=s.R, m1=s.m1, L=s.L, m2=s.m2, m3=s.m3, l_AS1=s.l_AS1, l_BS2=s.l_BS2, l_CS2=s.l_CS2,
+            m_e=s.m_e, r_e=s.r_e, omega=self.drive.speed,
+        )
+
+    def mechanism(self):
+        """The engine's model of the screen (with the spring if asked for)."""
+        return self.screen().mechanism(spring=self.rotary_screen.spring, stiffness=self.rotary_screen.stiffness)
+
+
+ALLOWED = ("meta", "rotary_screen", "drive", "output")
+
+
+def validate_rotary_screen(data: dict[str, Any], source: str | None = None) -> RotaryScreenProblem:
+    """A :class:`RotaryScreenProblem` from the parsed tables, or one ProblemFileError with every mistake."""
+    from .loader import top_level_problems
+
+    problems = top_level_problems(data, ALLOWED)
+    problem = None
+    try:
+        problem = RotaryScreenProblem.model_validate({k: v for k, v in data.items() if k in ALLOWED})
+    except ValidationError as exc:
+        problems += problems_from(exc, RotaryScreenProblem)
+    if problem is not None and not problems:
+        if problem.drive.speed <= 0:
+            speed = problem.drive.speed
+            problems.append(("drive.speed", f"must be > 0 rad/s for the rotary screen; got {speed:g} rad/s"))
+        else:
+            try:
+                problem.mechanism()
+            except InputError as exc:
+                problems.append(("rotary_screen", str(exc)))
+    if problems:
+        raise ProblemFileError(problems, source)
+    return problem

@@ -1,0 +1,365 @@
+"""The validated content of a linkage problem file (pydantic models; every quantity an SI float).
+
+The models mirror the TOML tables one to one (``[mechanism.crank]`` is ``LinkSpec``); unknown keys are
+refused (``extra="forbid"``). :mod:`machdyn.problem.build` turns them into the engine's frozen
+:class:`~machdyn.linkage.model.Mechanism`.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Any, Literal
+
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, field_validator
+
+from .fields import (
+    Acceleration,
+    Angle,
+    AngularAcceleration,
+    AngularVelocity,
+    FieldError,
+    Force,
+    Inertia,
+    Length,
+    LinearDensity,
+    Mass,
+    NonNegativeLength,
+    Point,
+    PositiveLength,
+    Stiffness,
+    Torque,
+)
+
+
+class Spec(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+def _branch(value: Any) -> int:
+    names = {"open": 1, "crossed": -1, "+1": 1, "-1": -1}
+    if isinstance(value, str) and value.strip().lower() in names:
+        return names[value.strip().lower()]
+    if isinstance(value, int) and not isinstance(value, bool) and value in (1, -1):
+        return value
+    raise FieldError(f"must be \"open\" (+1) or \"crossed\" (-1); got {value!r}")
+
+
+Branch = Annotated[int, BeforeValidator(_branch)]
+
+
+def _reference(value: Any) -> str:
+    if not isinstance(value, str) or value.count(".") != 1 or not all(value.split(".")):
+        raise FieldError(f"must name a point as 'body.point' (e.g. 'ground.O', 'coupler.P'); got {value!r}")
+    return value
+
+
+PointRef = Annotated[str, BeforeValidator(_reference)]
+Name = Annotated[str, Field(min_length=1, pattern=r"^[A-Za-z_][A-Za-z0-9_]*$")]
+
+
+class Meta(Spec):
+    name: str = "problem"
+    description: str = ""
+
+
+# ------------------------------------------------------------------------------------------------ links
+
+
+class LinkSpec(Spec):
+    """A bar between two joints: length; mass, centroidal inertia and centre of mass (body frame).
+
+    Left out, the mass is that of a uniform bar of the mechanism's ``linear_density``, the inertia m L^2/12
+    and the centre of mass mid-length (the builders' defaults)."""
+
+    length: PositiveLength
+    mass: Mass | None = None
+    inertia: Inertia | None = None
+    com: Point | None = None
+
+
+class OptionalLinkSpec(LinkSpec):
+    length: PositiveLength | None = None
+
+
+class BlockSpec(Spec):
+    """A slider or block: mass and centroidal inertia (its centre of mass is at its joint unless given)."""
+
+    mass: Mass | None = None
+    inertia: Inertia | None = None
+    com: Point | None = None
+
+
+class GroundSpec(Spec):
+    """The fixed link between the two ground pivots: length and direction from the crank pivot."""
+
+    length: PositiveLength
+    angle: Angle = 0.0
+
+
+class GroundLengthSpec(Spec):
+    """The fixed link of mechanisms whose ground pivots lie on the x axis: its length only."""
+
+    length: PositiveLength
+
+
+class DoubleCrankSpec(Spec):
+    """The one crank body of a double slider-crank: two pins at radii ``length_1`` (angle 0) and
+    ``length_2`` (angle ``phase``)."""
+
+    length_1: PositiveLength
+    length_2: PositiveLength
+    phase: Angle = 3.141592653589793
+    mass: Mass | None = None
+    inertia: Inertia | None = None
+    com: Point | None = None
+
+
+class _MechanismBase(Spec):
+    name: Name | None = None
+    linear_density: LinearDensity = 1.0
+
+
+class SliderCrankSpec(_MechanismBase):
+    type: Literal["slider_crank"]
+    crank: LinkSpec
+    rod: LinkSpec
+    slider: BlockSpec = BlockSpec()
+    offset: Length = 0.0
+    slide_angle: Angle = 0.0
+    branch: Branch = 1
+
+
+class FourBarSpec(_MechanismBase):
+    type: Literal["four_bar"]
+    crank: LinkSpec
+    coupler: LinkSpec
+    rocker: LinkSpec
+    ground: GroundSpec
+    coupler_point: Point | None = None
+    branch: Branch = 1
+
+
+class InvertedSliderCrankSpec(_MechanismBase):
+    type: Literal["inverted_slider_crank"]
+    crank: LinkSpec
+    ground: GroundLengthSpec
+    block: BlockSpec = BlockSpec()
+    rocker: OptionalLinkSpec = OptionalLinkSpec()
+    offset: Length = 0.0
+    branch: Branch = 1
+
+
+class SixBarSpec(_MechanismBase):
+    type: Literal["six_bar"]
+    crank: LinkSpec
+    coupler: LinkSpec
+    rocker: LinkSpec
+    ground: GroundLengthSpec
+    coupler_point: Point
+    link5: LinkSpec
+    link6: LinkSpec
+    pivot6: Point
+    branch: Branch = 1
+    branch2: Branch = 1
+
+
+class DoubleSliderCrankSpec(_MechanismBase):
+    type: Literal["double_slider_crank"]
+    crank: DoubleCrankSpec
+    rod_1: LinkSpec
+    rod_2: LinkSpec
+    slider_1: BlockSpec = BlockSpec()
+    slider_2: BlockSpec = BlockSpec()
+    offset_1: Length = 0.0
+    offset_2: Length = 0.0
+    slide_angle_1: Angle = 0.0
+    slide_angle_2: Angle = 0.0
+    branch_1: Branch = 1
+    branch_2: Branch = 1
+
+
+# ----------------------------------------------------------------------------------------------- custom
+
+
+class BodySpec(Spec):
+    name: Name
+    points: dict[Name, Point]
+    mass: Mass = 0.0
+    inertia: Inertia = 0.0
+    com: Point = (0.0, 0.0)
+
+
+class DriverSpec(Spec):
+    body: Name
+    pivot: PointRef
+
+
+class GuideSpec(Spec):
+    point: PointRef
+    angle: Angle = 0.0
+
+
+class SlideSpec(Spec):
+    """The slide line of an RPR dyad: a point of the rocker (its name only) and a direction in its frame."""
+
+    point: Name
+    angle: Angle = 0.0
+
+
+class RRRSpec(Spec):
+    type: Literal["RRR"]
+    a: Name
+    b: Name
+    pin_a: PointRef
+    pin_b: PointRef
+    inner: Name
+    branch: Branch = 1
+
+
+class RRPSpec(Spec):
+    type: Literal["RRP"]
+    a: Name
+    b: Name
+    pin_a: PointRef
+    inner: Name
+    guide: GuideSpec
+    branch: Branch = 1
+
+
+class RPRSpec(Spec):
+    type: Literal["RPR"]
+    a: Name
+    b: Name
+    pin_a: PointRef
+    pin_b: PointRef
+    slide: SlideSpec
+    branch: Branch = 1
+
+
+class PRPSpec(Spec):
+    type: Literal["PRP"]
+    a: Name
+    b: Name
+    inner: Name
+    guide_a: GuideSpec
+    guide_b: GuideSpec
+
+
+DYAD_SPECS: dict[str, type[Spec]] = {"RRR": RRRSpec, "RRP": RRPSpec, "RPR": RPRSpec, "PRP": PRPSpec}
+DyadSpec = RRRSpec | RRPSpec | RPRSpec | PRPSpec
+
+
+class CustomSpec(Spec):
+    type: Literal["custom"]
+    name: Name | None = None
+    ground: dict[Name, Point]
+    crank: DriverSpec
+    bodies: list[BodySpec] = Field(min_length=1)
+    dyads: list[Annotated[DyadSpec, Field(discriminator="type")]] = []
+
+
+MECHANISM_SPECS: dict[str, type[Spec]] = {
+    "slider_crank": SliderCrankSpec,
+    "four_bar": FourBarSpec,
+    "inverted_slider_crank": InvertedSliderCrankSpec,
+    "six_bar": SixBarSpec,
+    "double_slider_crank": DoubleSliderCrankSpec,
+    "custom": CustomSpec,
+}
+MechanismSpec = (
+    SliderCrankSpec | FourBarSpec | InvertedSliderCrankSpec | SixBarSpec | DoubleSliderCrankSpec | CustomSpec
+)
+
+
+# ---------------------------------------------------------------------------------------- drive, loads
+
+
+class DriveSpec(Spec):
+    """The crank's motion: speed, angular acceleration and the crank positions analysed.
+
+    Without ``start``/``stop`` the positions divide one full revolution evenly (the last one short of
+    360 deg, so harmonics apply); with them, ``positions`` values run from start to stop inclusive."""
+
+    speed: AngularVelocity
+    acceleration: AngularAcceleration = 0.0
+    positions: int = Field(360, ge=2, le=1_000_000, strict=True)
+    start: Angle | None = None
+    stop: Angle | None = None
+
+    @field_validator("stop")
+    @classmethod
+    def _stop_after_start(cls, stop, info):
+        start = info.data.get("start")
+        if stop is not None and start is not None and not stop > start:
+            raise FieldError(f"must be greater than start ({start:g} rad); got {stop:g} rad")
+        return stop
+
+
+class ForceSpec(Spec):
+    name: Name | None = None
+    point: PointRef
+    fx: Force = 0.0
+    fy: Force = 0.0
+    active: tuple[Angle, Angle] | None = None
+
+
+class TorqueSpec(Spec):
+    name: Name | None = None
+    body: Name
+    torque: Torque
+    active: tuple[Angle, Angle] | None = None
+
+
+class SpringSpec(Spec):
+    name: Name | None = None
+    point_1: PointRef
+    point_2: PointRef
+    stiffness: Stiffness
+    free_length: NonNegativeLength = 0.0
+
+
+def _gravity(value: Any) -> Any:
+    if isinstance(value, str):
+        word = value.strip().lower()
+        if word in ("on", "off"):
+            return word
+        raise FieldError(f'must be "on", "off" or a vector ["0 m/s^2", "-9.81 m/s^2"]; got {value!r}')
+    return value
+
+
+Gravity = Annotated[Literal["on", "off"] | tuple[Acceleration, Acceleration], BeforeValidator(_gravity)]
+
+
+class LoadsSpec(Spec):
+    gravity: Gravity = "on"
+    forces: list[ForceSpec] = []
+    torques: list[TorqueSpec] = []
+    springs: list[SpringSpec] = []
+
+
+class CounterweightSpec(Spec):
+    """A point mass on a body at ``radius`` and ``angle`` in the body frame (angle 0 = towards the body's
+    second joint, e.g. the crank pin; 180 deg = opposite it)."""
+
+    name: Name | None = None
+    body: Name
+    mass: Mass
+    radius: NonNegativeLength
+    angle: Angle
+    inertia: Inertia = 0.0
+
+
+class OutputSpec(Spec):
+    shaking_moment_about: Point = (0.0, 0.0)
+    harmonics: int = Field(6, ge=1, le=100, strict=True)
+
+
+class LinkageProblem(Spec):
+    """A generic linkage problem: ``[meta]``, ``[mechanism]``, ``[drive]``, ``[loads]``,
+    ``[[counterweights]]`` and ``[output]``."""
+
+    meta: Meta = Meta()
+    mechanism: Annotated[MechanismSpec, Field(discriminator="type")]
+    drive: DriveSpec
+    loads: LoadsSpec = LoadsSpec()
+    counterweights: list[CounterweightSpec] = []
+    output: OutputSpec = OutputSpec()

@@ -1,0 +1,710 @@
+"""Plots of linkage results for reports and for use from Python: every function takes a matplotlib ``ax``,
+draws on it and returns it, so the caller owns the figure (pyplot, a notebook or a plain
+:class:`matplotlib.figure.Figure`).
+
+For results of N design variants (arrays of shape (N, M)) a function draws every design unless
+``design=i`` picks one. Crank angles are shown in degrees; every axis is labelled with its unit.
+
+Example (see docs/report.md)::
+
+    import matplotlib.pyplot as plt
+    from machdyn.linkage import analyse, crank_angles, four_bar
+    from machdyn.report import plots
+
+    res = analyse(four_bar(0.05, 0.15, 0.12, 0.14), crank_angles(360), speed=20.0)
+    fig, ax = plt.subplots()
+    plots.plot_torque_power(ax, res.forces)
+    pax = plt.figure().add_subplot(projection="polar")
+    plots.plot_joint_polar(pax, res.forces, "B")
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.patches import Polygon, Rectangle
+from matplotlib.ticker import MaxNLocator, MultipleLocator
+
+from ..linkage import model as _model
+
+#: Line colours (colour-blind safe, Okabe-Ito order).
+PALETTE = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#F0E442", "#000000")
+_GROUND_COLOUR = "#555555"
+
+
+# ------------------------------------------------------------------------------------------------ helpers
+
+
+def _rows(values: Any, design: int | None) -> list[tuple[int | None, np.ndarray]]:
+    """(design index or None, 1-D series) for each design to draw."""
+    arr = np.asarray(values, dtype=float)
+    if arr.ndim <= 1:
+        return [(None, np.atleast_1d(arr))]
+    if design is not None:
+        return [(design, arr[design])]
+    return [(i, arr[i]) for i in range(arr.shape[0])]
+
+
+def _label(base: str, design: int | None) -> str:
+    return base if design is None else f"{base} (design {design})"
+
+
+def _angle_deg(kinematics: Any) -> np.ndarray:
+    return np.degrees(np.asarray(kinematics.crank_angle, dtype=float).ravel())
+
+
+def _crank_axis(ax: Axes, deg: np.ndarray, zero_line: bool = True) -> None:
+    ax.set_xlabel("Crank angle φ [deg]")
+    lo, hi = float(np.nanmin(deg)), float(np.nanmax(deg))
+    if hi > lo:
+        ax.set_xlim(lo, hi)
+    span = hi - lo
+    ax.xaxis.set_major_locator(MultipleLocator(60 if span > 240 else 30 if span > 90 else 10))
+    ax.grid(True, which="major", alpha=0.35, linewidth=0.6)
+    if zero_line:
+        ax.axhline(0.0, color="#888888", linewidth=0.6, zorder=0)
+
+
+def _finish(ax: Axes, title: str | None, legend: bool = True) -> Axes:
+    if title:
+        ax.set_title(title, fontsize="medium", loc="left", fontweight="bold")
+    handles, _labels = ax.get_legend_handles_labels()
+    if legend and len(handles) > 1:
+        ax.legend(fontsize="small", framealpha=0.85)
+    return ax
+
+
+def _rotate(x: Any, y: Any, angle: Any) -> tuple[np.ndarray, np.ndarray]:
+    c, s = np.cos(angle), np.sin(angle)
+    return c * x - s * y, s * x + c * y
+
+
+def _pick(value: Any, design: int) -> float:
+    arr = np.asarray(value, dtype=float)
+    return float(arr.ravel()[design] if arr.ndim > 0 else arr)
+
+
+def _series(values: Any, design: int, size: int) -> np.ndarray:
+    """One design's series of ``size`` positions (scalars and constant results broadcast)."""
+    arr = np.asarray(values, dtype=float)
+    arr = arr[design] if arr.ndim == 2 else arr
+    return np.broadcast_to(arr, (size,))
+
+
+# -------------------------------------------------------------------------------------------- mechanism
+
+
+def _pivot_symbol(ax: Axes, x: float, y: float, size: float) -> None:
+    """A fixed pivot: a hatched triangle under a pin."""
+    tri = Polygon(
+        [(x, y), (x - 0.6 * size, y - size), (x + 0.6 * size, y - size)],
+        closed=True,
+        facecolor="#dddddd",
+        edgecolor=_GROUND_COLOUR,
+        linewidth=1.0,
+        zorder=2,
+    )
+    ax.add_patch(tri)
+    ax.plot(
+        [x - 0.9 * size, x + 0.9 * size], [y - size, y - size], color=_GROUND_COLOUR, linewidth=1.2, zorder=2
+    )
+    for k in np.linspace(-0.8, 0.6, 5):
+        ax.plot(
+            [x + k * size, x + (k + 0.25) * size],
+            [y - 1.35 * size, y - size],
+            color=_GROUND_COLOUR,
+            linewidth=0.7,
+            zorder=2,
+        )
+
+
+def plot_mechanism(
+    ax: Axes,
+    mechanism: _model.Mechanism,
+    kinematics: Any,
+    positions: Sequence[float] | int = 4,
+    *,
+    design: int = 0,
+    paths: bool = True,
+    title: str | None = "Mechanism",
+) -> Axes:
+    """Draw the linkage at a few crank positions: the first position in full colour, the others faded.
+
+    ``positions`` is either a number of evenly spaced positions over the computed range or a sequence of
+    crank angles [rad] (the nearest computed position is drawn). With ``paths`` the trajectory of every
+    moving point that is not on the crank is drawn dotted. Axes are equal, in metres.
+    """
+    phi = np.asarray(kinematics.crank_angle, dtype=float).ravel()
+    assembled = np.asarray(getattr(kinematics, "assembled", np.ones(phi.shape, bool)), dtype=bool)
+    assembled = assembled[design] if assembled.ndim == 2 else assembled
+    ok = np.flatnonzero(assembled) if assembled.any() else np.arange(phi.size)
+    if isinstance(positions, int | np.integer):
+        count = max(1, int(positions))
+        picks = ok[np.linspace(0, ok.size, count, endpoint=False).astype(int)]
+    else:
+        picks = np.array(
+            [ok[np.argmin(np.abs(np.angle(np.exp(1j * (phi[ok] - p)))))] for p in positions], int
+        )
+
+    # global coordinates of every body point at every position
+    coords: dict[str, dict[str, tuple[np.ndarray, np.ndarray]]] = {}
+    for body in mechanism.moving_bodies:
+        motion = kinematics.body(body)
+        ox, oy, ang = (_series(v, design, phi.size) for v in (motion.x, motion.y, motion.angle))
+        pts = {}
+        for pname, (lx, ly) in mechanism.body(body).points.items():
+            gx, gy = _rotate(_pick(lx, design), _pick(ly, design), ang)
+            pts[pname] = (ox + gx, oy + gy)
+        coords[body] = pts
+
+    all_x = np.concatenate(
+        [p[0] for pts in coords.values() for p in pts.values()]
+        + [np.atleast_1d(_pick(g[0], design)) for g in mechanism.ground.values()]
+    )
+    all_y = np.concatenate(
+        [p[1] for pts in coords.values() for p in pts.values()]
+        + [np.atleast_1d(_pick(g[1], design)) for g in mechanism.ground.values()]
+    )
+    extent = float(
+        np.nanmax(np.ptp(np.vstack([all_x[np.isfinite(all_x)], all_y[np.isfinite(all_y)]]), axis=1))
+    )
+    extent = extent if extent > 0 else 1.0
+    size = 0.04 * extent
+
+    joint_list = _model.joints(mechanism)
+    sliders = {b2 for _n, kind, _b1, b2 in joint_list if kind == "P"}
+
+    # guides fixed in the ground
+    for d in mechanism.dyads:
+        guides = [getattr(d, a) for a in ("guide", "guide_a", "guide_b") if hasattr(d, a)]
+        for g in guides:
+            gbody, gpoint = _model.split_ref(g.point)
+            if gbody != _model.GROUND:
+                continue
+            gx, gy = (_pick(v, design) for v in mechanism.ground[gpoint])
+            ga = _pick(g.angle, design)
+            ux, uy = np.cos(ga), np.sin(ga)
+            slider = d.b if isinstance(d, _model.RRP) else d.a if g is getattr(d, "guide_a", None) else d.b
+            sx, sy = coords[slider][next(iter(mechanism.body(slider).points))]
+            along = (sx - gx) * ux + (sy - gy) * uy
+            lo, hi = np.nanmin(along) - 2.5 * size, np.nanmax(along) + 2.5 * size
+            ax.plot(
+                [gx + lo * ux, gx + hi * ux],
+                [gy + lo * uy, gy + hi * uy],
+                color=_GROUND_COLOUR,
+                linewidth=1.0,
+                linestyle=(0, (6, 3)),
+                zorder=1,
+            )
+            nx, ny = -uy, ux
+            for t in np.linspace(lo, hi, 12):
+                bx, by = gx + t * ux - 0.9 * size * nx, gy + t * uy - 0.9 * size * ny
+                ax.plot(
+                    [bx, bx - 0.4 * size * (ux + nx)],
+                    [by, by - 0.4 * size * (uy + ny)],
+                    color=_GROUND_COLOUR,
+                    linewidth=0.6,
+                    zorder=1,
+                )
+
+    # point paths
+    if paths:
+        crank = mechanism.crank.body
+        drawn: list[tuple[np.ndarray, np.ndarray]] = []
+        for body, pts in coords.items():
+            for x, y in pts.values():
+                if body == crank or any(
+                    np.allclose(x, px, equal_nan=True) and np.allclose(y, py, equal_nan=True)
+                    for px, py in drawn
+                ):
+                    continue
+                if np.nanmax(np.hypot(x - np.nanmean(x), y - np.nanmean(y))) < 1e-9 * extent:
+                    continue
+                drawn.append((x, y))
+                ax.plot(x, y, color="#999999", linewidth=0.8, linestyle=":", zorder=1)
+        # crank circle
+        for x, y in coords[crank].values():
+            if np.nanmax(np.hypot(x - np.nanmean(x), y - np.nanmean(y))) > 1e-9 * extent:
+                ax.plot(x, y, color="#bbbbbb", linewidth=0.6, linestyle=":", zorder=1)
+
+    # ground pivots (revolute joints with the frame)
+    for name, kind, b1, _b2 in joint_list:
+        if kind == "R" and b1 == _model.GROUND and name in mechanism.ground:
+            gx, gy = (_pick(v, design) for v in mechanism.ground[name])
+            _pivot_symbol(ax, gx, gy, size)
+            ax.annotate(
+                name,
+                (gx, gy),
+                xytext=(-10, -4),
+                textcoords="offset points",
+                ha="right",
+                va="top",
+                fontsize="small",
+                color=_GROUND_COLOUR,
+            )
+
+    # the bodies at each picked position
+    for order, idx in enumerate(picks):
+        main = order == 0
+        alpha = 1.0 if main else 0.28
+        for k, body in enumerate(mechanism.moving_bodies):
+            colour = PALETTE[k % len(PALETTE)]
+            pts = coords[body]
+            xs = np.array([p[0][idx] for p in pts.values()])
+            ys = np.array([p[1][idx] for p in pts.values()])
+            if body in sliders:
+                ang = _series(kinematics.body(body).angle, design, phi.size)[idx]
+                w, h = 2.4 * size, 1.4 * size
+                cx, cy = xs[0], ys[0]
+                dx, dy = _rotate(-w / 2, -h / 2, ang)
+                ax.add_patch(
+                    Rectangle(
+                        (cx + dx, cy + dy),
+                        w,
+                        h,
+                        angle=float(np.degrees(ang)),
+                        rotation_point="xy",
+                        facecolor=colour,
+                        edgecolor="#222222",
+                        alpha=0.55 * alpha,
+                        linewidth=1.0,
+                        zorder=3,
+                    )
+                )
+            elif len(xs) >= 3:
+                order_pts = np.argsort(np.arctan2(ys - ys.mean(), xs - xs.mean()))
+                ax.add_patch(
+                    Polygon(
+                        np.column_stack([xs[order_pts], ys[order_pts]]),
+                        closed=True,
+                        facecolor=colour,
+                        edgecolor=colour,
+                        alpha=0.35 if main else 0.3,
+                        fill=main,
+                        linewidth=2.5 if main else 1.2,
+                        zorder=3,
+                    )
+                )
+            else:
+                ax.plot(
+                    xs,
+                    ys,
+                    color=colour,
+                    linewidth=3.2 if main else 2.0,
+                    alpha=alpha,
+                    solid_capstyle="round",
+                    zorder=3,
+                    label=body if main else None,
+                )
+            ax.plot(
+                xs,
+                ys,
+                linestyle="none",
+                marker="o",
+                markersize=5 if main else 3.5,
+                markerfacecolor="white",
+                markeredgecolor="#222222",
+                alpha=alpha,
+                zorder=4,
+                label=None,
+            )
+            if len(xs) >= 3 or body in sliders:
+                ax.plot([], [], color=colour, linewidth=3.2, label=body if main else None)
+        if main:
+            labelled: set[str] = set()
+            for body in mechanism.moving_bodies:
+                for pname, (x, y) in coords[body].items():
+                    if pname in labelled or pname in mechanism.ground:
+                        continue
+                    labelled.add(pname)
+                    ax.annotate(
+                        pname,
+                        (x[idx], y[idx]),
+                        xytext=(5, 5),
+                        textcoords="offset points",
+                        fontsize="small",
+                        color="#222222",
+                        zorder=5,
+                    )
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    ax.grid(True, alpha=0.3, linewidth=0.6)
+    shown = ", ".join(f"{np.degrees(phi[i]):.0f}°" for i in picks)
+    full = title if title is None else f"{title} at φ = {shown}"
+    _finish(ax, full, legend=False)
+    ax.legend(
+        fontsize="small", loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, frameon=False
+    )
+    return ax
+
+
+# ------------------------------------------------------------------------------------------------- motion
+
+_QUANTITY = {
+    "displacement": ("Displacement", 0),
+    "velocity": ("Velocity", 1),
+    "acceleration": ("Acceleration", 2),
+}
+
+
+def plot_point_motion(
+    ax: Axes,
+    kinematics: Any,
+    point: str,
+    quantity: str = "displacement",
+    *,
+    design: int | None = None,
+    title: str | None = None,
+) -> Axes:
+    """Displacement, velocity or acceleration over the crank angle.
+
+    ``point`` is ``"body.point"`` (x and y components, and the magnitude for velocity and acceleration), or
+    a body name: a slider's slide coordinate along its guide [m, m/s, m/s^2], or a rotating body's angle,
+    angular velocity and angular acceleration [deg, rad/s, rad/s^2].
+    """
+    if quantity not in _QUANTITY:
+        raise ValueError(f"quantity must be one of {', '.join(_QUANTITY)}; got {quantity!r}.")
+    name, level = _QUANTITY[quantity]
+    deg = _angle_deg(kinematics)
+    curves: list[tuple[str, Any]] = []
+    if "." in point:
+        p = kinematics.point(point)
+        unit = ("m", "m/s", "m/s²")[level]
+        if level == 0:
+            curves = [(f"{point} x", p.x), (f"{point} y", p.y)]
+        elif level == 1:
+            curves = [(f"{point} vx", p.vx), (f"{point} vy", p.vy), (f"{point} |v|", p.speed)]
+        else:
+            curves = [(f"{point} ax", p.ax), (f"{point} ay", p.ay), (f"{point} |a|", p.accel)]
+    else:
+        slide = None
+        try:
+            slide = kinematics.slide(point)
+        except Exception:  # noqa: BLE001 - not a slider: fall back to the body rotation
+            slide = None
+        if slide is not None:
+            unit = ("m", "m/s", "m/s²")[level]
+            curves = [(f"{point} {('s', 'ṡ', 's̈')[level]}", (slide.s, slide.v, slide.a)[level])]
+        else:
+            b = kinematics.body(point)
+            unit = ("deg", "rad/s", "rad/s²")[level]
+            values = (np.degrees(b.angle), b.omega, b.alpha)[level]
+            curves = [(f"{point} {('θ', 'ω', 'α')[level]}", values)]
+    n_before = len(ax.get_lines())
+    for k, (label, values) in enumerate(curves):
+        for d, series in _rows(values, design):
+            ax.plot(
+                deg,
+                series,
+                color=PALETTE[(n_before + k) % len(PALETTE)] if d is None else None,
+                linewidth=1.6,
+                label=_label(label, d),
+                linestyle="--" if label.endswith(("|v|", "|a|")) else "-",
+            )
+    _crank_axis(ax, deg, zero_line=level > 0)
+    ax.set_ylabel(f"{name} [{unit}]")
+    return _finish(ax, title if title is not None else f"{name} of {point}")
+
+
+# ------------------------------------------------------------------------------------------------- forces
+
+
+def _polar_locus(ax: Axes, fx: Any, fy: Any, label: str, colour: str, design: int | None) -> None:
+    polar = getattr(ax, "name", "") == "polar"
+    for d, (x, y) in zip(
+        [d for d, _ in _rows(fx, design)],
+        zip((s for _, s in _rows(fx, design)), (s for _, s in _rows(fy, design)), strict=True),
+        strict=True,
+    ):
+        c = colour if d is None else None
+        if polar:
+            theta, r = np.arctan2(y, x), np.hypot(x, y)
+            (line,) = ax.plot(theta, r, color=c, linewidth=1.5, label=_label(label, d))
+            ax.plot(theta[:1], r[:1], marker="o", color=line.get_color(), markersize=5, linestyle="none")
+        else:
+            (line,) = ax.plot(x, y, color=c, linewidth=1.5, label=_label(label, d))
+            ax.plot(x[:1], y[:1], marker="o", color=line.get_color(), markersize=5, linestyle="none")
+    if polar:
+        ax.set_rlabel_position(112.5)
+        ax.set_thetagrids(range(0, 360, 45), ["0°", "", "90°", "", "180°", "", "270°", ""])
+        ax.yaxis.set_major_locator(MaxNLocator(3))
+        ax.tick_params(labelsize="small")
+        ax.grid(True, alpha=0.4, linewidth=0.6)
+        ax.set_ylim(bottom=0)
+    else:
+        ax.set_aspect("equal", adjustable="datalim")
+        ax.axhline(0.0, color="#888888", linewidth=0.6)
+        ax.axvline(0.0, color="#888888", linewidth=0.6)
+        ax.set_xlabel("Fx [N]")
+        ax.set_ylabel("Fy [N]")
+        ax.grid(True, alpha=0.35, linewidth=0.6)
+
+
+def plot_joint_polar(
+    ax: Axes, forces: Any, joint: str, *, design: int | None = None, title: str | None = None
+) -> Axes:
+    """Polar diagram of a joint reaction: the locus of the force vector's tip over the cycle (radius =
+    magnitude in N, angle = direction in the global frame), the dot marking the first crank position.
+
+    The force is the one on the later body from the earlier body of the joint. On Cartesian axes the
+    same locus is drawn as Fy over Fx (a hodograph).
+    """
+    r = forces.joint(joint)
+    from .tables import joint_list
+
+    info = next((j for j in joint_list(forces) if j[0] == joint), None)
+    if title is None:
+        title = f"Joint {joint}" + (f": on {info[3]} from {info[2]} [N]" if info else " [N]")
+    _polar_locus(ax, r.fx, r.fy, f"joint {joint}", PALETTE[0], design)
+    return _finish(ax, title)
+
+
+def plot_shaking_force_polar(
+    ax: Axes, forces: Any, *, design: int | None = None, title: str | None = "Shaking force on the frame [N]"
+) -> Axes:
+    """Polar diagram of the frame (shaking) force: the total force the mechanism exerts on the frame."""
+    fx, fy = forces.frame_force
+    _polar_locus(ax, fx, fy, "shaking force", PALETTE[1], design)
+    return _finish(ax, title)
+
+
+def _clean(value: float, scale: float) -> float:
+    """``value`` with round-off below 1e-9 of ``scale`` shown as zero."""
+    return 0.0 if abs(value) <= 1e-9 * abs(scale) else value
+
+
+def plot_torque_power(
+    ax: Axes,
+    forces: Any,
+    *,
+    design: int | None = None,
+    power: bool = True,
+    title: str | None = "Driving torque and input power",
+) -> Axes:
+    """The driving torque on the crank [N*m] with its mean, and the input power [W] on the right axis.
+
+    At constant crank speed the power is the torque times the speed, so the right axis is a second scale of
+    the same curve; with a varying speed the power is drawn as its own dashed curve on a twin axis
+    (``ax.power_axis``). Returns ``ax`` (the torque axis).
+    """
+    kin = forces.kinematics
+    deg = _angle_deg(kin)
+    for d, series in _rows(forces.driving_torque, design):
+        ax.plot(
+            deg,
+            series,
+            color=PALETTE[0] if d is None else None,
+            linewidth=1.7,
+            label=_label("driving torque", d),
+        )
+        if d is None:
+            mean = _clean(float(np.nanmean(series)), float(np.nanmax(np.abs(series))))
+            ax.axhline(mean, color=PALETTE[1], linewidth=1.0, linestyle="--", label=f"mean {mean:.4g} N·m")
+    _crank_axis(ax, deg)
+    ax.set_ylabel("Driving torque [N·m]")
+    speed = np.asarray(kin.speed, dtype=float)
+    speed = speed[design] if (speed.ndim == 2 and design is not None) else speed
+    omega = float(speed.ravel()[0]) if speed.size else 0.0
+    constant = bool(speed.size) and np.allclose(speed, omega) and omega != 0.0
+    if power and constant:
+        sec = ax.secondary_yaxis("right", functions=(lambda t: t * omega, lambda p: p / omega))
+        sec.set_ylabel(f"Input power [W] at ω = {omega:.4g} rad/s")
+        ax.power_axis = sec
+    elif power:
+        pax = ax.twinx()
+        for d, series in _rows(forces.input_power, design):
+            pax.plot(
+                deg,
+                series,
+                color=PALETTE[2] if d is None else None,
+                linewidth=1.3,
+                linestyle="-.",
+                label=_label("input power", d),
+            )
+        pax.set_ylabel("Input power [W]")
+        _align_zero(ax, pax)
+        ax.power_axis = pax
+        h1, l1 = ax.get_legend_handles_labels()
+        h2, l2 = pax.get_legend_handles_labels()
+        if title:
+            ax.set_title(title, fontsize="medium", loc="left", fontweight="bold")
+        ax.legend(h1 + h2, l1 + l2, fontsize="small", framealpha=0.85, loc="best")
+        return ax
+    return _finish(ax, title)
+
+
+def _align_zero(ax1: Axes, ax2: Axes) -> None:
+    """Scale two y axes so that their zeros line up."""
+    lo1, hi1 = ax1.get_ylim()
+    lo2, hi2 = ax2.get_ylim()
+    if not (lo1 < 0 < hi1 and lo2 < 0 < hi2):
+        lo1, hi1 = min(lo1, 0.0), max(hi1, 0.0)
+        lo2, hi2 = min(lo2, 0.0), max(hi2, 0.0)
+    f1 = -lo1 / (hi1 - lo1) if hi1 > lo1 else 0.5
+    f2 = -lo2 / (hi2 - lo2) if hi2 > lo2 else 0.5
+    f = max(f1, f2)
+    if 0 < f < 1:
+        ax1.set_ylim(min(lo1, -f * hi1 / (1 - f)), max(hi1, -lo1 * (1 - f) / f))
+        ax2.set_ylim(min(lo2, -f * hi2 / (1 - f)), max(hi2, -lo2 * (1 - f) / f))
+
+
+def plot_shaking_moment(
+    ax: Axes,
+    forces: Any,
+    about: tuple[float, float] = (0.0, 0.0),
+    *,
+    design: int | None = None,
+    title: str | None = None,
+) -> Axes:
+    """The shaking moment on the frame [N*m] about the point ``about`` [m] over the crank angle."""
+    deg = _angle_deg(forces.kinematics)
+    moment = forces.shaking_moment(about=about)
+    for d, series in _rows(moment, design):
+        ax.plot(
+            deg,
+            series,
+            color=PALETTE[2] if d is None else None,
+            linewidth=1.7,
+            label=_label("shaking moment", d),
+        )
+    _crank_axis(ax, deg)
+    ax.set_ylabel("Shaking moment [N·m]")
+    if title is None:
+        title = f"Shaking moment about ({about[0]:g}, {about[1]:g}) m"
+    return _finish(ax, title)
+
+
+# ------------------------------------------------------------------------------------------------- energy
+
+
+def plot_energy(
+    ax: Axes,
+    energy: Any,
+    crank_angle: Any = None,
+    *,
+    design: int | None = None,
+    per_body: bool = True,
+    legend: bool = True,
+    title: str | None = "Energy",
+) -> Axes:
+    """Kinetic energy (per body and total), potential energy of gravity and springs, and the total [J].
+
+    The crank angles come from ``energy.kinematics`` when it has them, else pass ``crank_angle`` [rad].
+    """
+    if crank_angle is None:
+        kin = getattr(energy, "kinematics", None)
+        if kin is None:
+            raise ValueError(
+                "plot_energy needs crank_angle=... (the energy result does not carry kinematics)."
+            )
+        crank_angle = kin.crank_angle
+    deg = np.degrees(np.asarray(crank_angle, dtype=float).ravel())
+    curves: list[tuple[str, Any, dict]] = []
+    if per_body:
+        for k, (name, values) in enumerate(energy.kinetic.items()):
+            if np.nanmax(np.abs(values)) > 0:
+                curves.append(
+                    (
+                        f"kinetic {name}",
+                        values,
+                        {"linewidth": 0.9, "alpha": 0.8, "color": PALETTE[(k + 3) % len(PALETTE)]},
+                    )
+                )
+    curves.append(("kinetic total", energy.kinetic_total, {"linewidth": 1.8, "color": PALETTE[0]}))
+    for label, values, colour in (
+        ("potential (gravity)", energy.potential_gravity, PALETTE[2]),
+        ("potential (springs)", energy.potential_spring, PALETTE[4]),
+    ):
+        if np.nanmax(np.abs(values)) > 0:
+            curves.append((label, values, {"linewidth": 1.4, "linestyle": "--", "color": colour}))
+    curves.append(("total", energy.total, {"linewidth": 2.0, "color": PALETTE[7]}))
+    for label, values, style in curves:
+        for d, series in _rows(values, design):
+            kw = dict(style)
+            if d is not None:
+                kw.pop("color", None)
+            ax.plot(deg, series, label=_label(label, d), **kw)
+    _crank_axis(ax, deg)
+    ax.set_ylabel("Energy [J]")
+    return _finish(ax, title, legend=legend)
+
+
+def plot_reduced_inertia(
+    ax: Axes,
+    energy: Any,
+    crank_angle: Any,
+    *,
+    design: int | None = None,
+    title: str | None = "Reduced moment of inertia at the crank",
+) -> Axes:
+    """The moment of inertia of the mechanism reduced to the crank, 2 T / ω² [kg*m^2]."""
+    deg = np.degrees(np.asarray(crank_angle, dtype=float).ravel())
+    for d, series in _rows(energy.reduced_inertia, design):
+        ax.plot(
+            deg,
+            series,
+            color=PALETTE[3] if d is None else None,
+            linewidth=1.7,
+            label=_label("reduced inertia", d),
+        )
+    _crank_axis(ax, deg)
+    ax.set_ylabel("Reduced inertia [kg·m²]")
+    return _finish(ax, title)
+
+
+def plot_harmonics(
+    ax: Axes,
+    harmonics: Any,
+    *,
+    unit: str = "",
+    label: str = "amplitude",
+    design: int | None = None,
+    title: str | None = "Harmonic content",
+) -> Axes:
+    """Bar chart of the harmonic amplitudes over the order (multiples of the crank frequency); the mean value
+    (``harmonics.mean``, if present) is drawn as order 0 in grey. For N designs the bars of each design
+    stand side by side unless ``design`` picks one."""
+    orders = np.asarray(harmonics.orders, dtype=float).ravel()
+    amp = np.asarray(harmonics.amplitude, dtype=float)
+    mean = getattr(harmonics, "mean", None)
+    mean = None if mean is None else np.atleast_1d(np.asarray(mean, dtype=float))
+    rows = [amp] if amp.ndim == 1 else list(amp)
+    means = [None] * len(rows) if mean is None else list(np.broadcast_to(mean, (len(rows),)))
+    if design is not None and amp.ndim == 2:
+        rows, means = [rows[design]], [means[design]]
+    width = 0.8 / len(rows)
+    for k, (row, m) in enumerate(zip(rows, means, strict=True)):
+        offset = (k - (len(rows) - 1) / 2) * width
+        name = label if len(rows) == 1 else f"{label} (design {k if design is None else design})"
+        colour = PALETTE[k % len(PALETTE)]
+        ax.bar(
+            orders + offset,
+            np.abs(row),
+            width=width,
+            color=colour,
+            label=name,
+            edgecolor="#333333",
+            linewidth=0.5,
+        )
+        if m is not None:
+            ax.bar(
+                [offset],
+                [abs(float(m))],
+                width=width,
+                color="#aaaaaa",
+                edgecolor="#333333",
+                linewidth=0.5,
+                hatch="//" if k else None,
+                label="|mean|" if k == 0 else None,
+            )
+    ticks = np.concatenate([[0.0], orders]) if mean is not None else orders
+    ax.set_xticks(ticks)
+    ax.set_xlabel("Harmonic order (multiples of the crank frequency)")
+    ax.set_ylabel(f"Amplitude [{unit}]" if unit else "Amplitude")
+    ax.grid(True, axis="y", alpha=0.35, linewidth=0.6)
+    ax.set_axisbelow(True)
+    return _finish(ax, title)

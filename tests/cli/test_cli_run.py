@@ -1,0 +1,234 @@
+"""The command line end to end: every shipped example runs; outputs, formats, examples and atomic writes."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from machdyn import __version__
+from machdyn.cli import app
+
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
+PACKAGE_EXAMPLES = ROOT / "src" / "machdyn" / "data" / "examples"
+
+
+def _command() -> list[str]:
+    script = Path(sys.executable).with_name("machdyn")
+    return [str(script)] if script.exists() else [sys.executable, "-m", "machdyn.cli"]
+
+
+def _machdyn(*args: str, cwd: Path = ROOT) -> subprocess.CompletedProcess:
+    return subprocess.run([*_command(), *args], cwd=cwd, capture_output=True, text=True, timeout=120)
+
+
+@pytest.fixture
+def runner():
+    return CliRunner()
+
+
+@pytest.mark.parametrize("example", EXAMPLES, ids=lambda p: p.stem)
+def test_every_example_runs_from_the_command_line(example, tmp_path):
+    out = tmp_path / "out"
+    proc = _machdyn("run", str(example.relative_to(ROOT)), "--out", str(out))
+    assert proc.returncode == 0, proc.stderr
+    assert "Traceback" not in proc.stderr
+    assert "quantity" in proc.stdout and "unit" in proc.stdout
+    results = json.loads((out / "results.json").read_text())
+    assert results["scalars"], "results.json holds the scalar results"
+    for entry in results["scalars"].values():
+        assert set(entry) == {"value", "unit"}
+    html = (out / "report.html").read_text()
+    assert html.lstrip().lower().startswith("<!doctype html")
+    assert "<script src" not in html and "<link" not in html  # self-contained
+    leftovers = [p.name for p in out.iterdir() if p.name.startswith(".")]
+    assert leftovers == [], "no temporary files remain"
+    if "conveyor" not in example.stem:
+        for name in ("motion", "joint_forces", "torque_power", "shaking", "energy"):
+            rows = list(csv.reader((out / f"{name}.csv").read_text().splitlines()))
+            header = rows[0]
+            assert header[0] == "crank_angle [deg]"
+            assert all(h.endswith("]") and " [" in h for h in header), header
+            assert len(rows) - 1 == 360  # one row per crank angle
+
+
+def test_rotary_screen_prints_the_seed_002_energy_figures(tmp_path):
+    """What `make run` prints: T1max, T2, T3 and the range of W within the reference's tolerances."""
+    out = tmp_path / "out"
+    proc = _machdyn("run", "examples/rotary_screen.toml", "--out", str(out), "--format", "json")
+    assert proc.returncode == 0, proc.stderr
+    rows = {r["quantity"]: r for r in json.loads(proc.stdout)["summary"]}
+    t1 = next(r for q, r in rows.items() if q.startswith("T1max") and "eq 15" in q)
+    t2 = next(r for q, r in rows.items() if q.startswith("T2"))
+    t3 = next(r for q, r in rows.items() if q.startswith("T3"))
+    w = next(r for q, r in rows.items() if q.startswith("W range, eq 10"))
+    t1_exact = rows["T1max, exact kinematics (engine)"]
+    assert t1["value"] == pytest.approx(284.5773, rel=1e-6)
+    assert t2["value"] == pytest.approx(253.4206, rel=1e-6)
+    assert t3["value"] == pytest.approx(1233.3032, rel=1e-6)
+    w_min, w_max = (float(v) for v in w["value"].split("~"))
+    assert w_min == pytest.approx(1486.7239, abs=1e-3) and w_max == pytest.approx(1771.3012, abs=1e-3)
+    assert t1_exact["value"] == pytest.approx(284.6218, abs=1e-3)
+    assert all(r["unit"] == "J" for r in (t1, t2, t3, w, t1_exact))
+    scalars = json.loads((out / "results.json").read_text())["scalars"]
+    assert scalars["rotary_screen.T1max.formula"] == {"value": pytest.approx(284.5773, rel=1e-6), "unit": "J"}
+    assert scalars["rotary_screen.W_max.formula"]["value"] == pytest.approx(1771.3012, abs=1e-3)
+    assert (out / "report.html").exists()
+
+
+def test_rotary_screen_run_takes_under_3_seconds(tmp_path):
+    best = float("inf")
+    for _ in range(2):
+        started = time.perf_counter()
+        proc = _machdyn("run", "examples/rotary_screen.toml", "--out", str(tmp_path / "out"), "--quiet")
+        best = min(best, time.perf_counter() - started)
+        assert proc.returncode == 0, proc.stderr
+        if best < 3.0:
+            break
+    assert best < 3.0, f"machdyn run took {best:.2f} s"
+
+
+def test_start_up_does_not_import_heavy_libraries():
+    code = ("import sys, machdyn.cli; heavy = [m for m in ('matplotlib', 'pandas', 'dask', 'scipy') "
+            "if m in sys.modules]; print(','.join(heavy))")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert proc.stdout.strip() == ""
+
+
+@pytest.mark.parametrize("fmt", ["table", "csv", "json", "markdown"])
+def test_table_formats(runner, tmp_path, fmt):
+    result = runner.invoke(app, ["run", str(ROOT / "examples" / "four_bar.toml"), "--out", str(tmp_path),
+                                 "--format", fmt])
+    assert result.exit_code == 0, result.output
+    text = result.stdout
+    if fmt == "csv":
+        rows = list(csv.reader(io.StringIO(text)))
+        assert rows[0] == ["quantity", "value", "unit"] and len(rows) > 5
+    elif fmt == "json":
+        data = json.loads(text)
+        assert data["problem"] == "Crank-rocker four-bar"
+        assert {"quantity", "value", "unit"} <= set(data["summary"][0])
+    elif fmt == "markdown":
+        assert "| quantity | value | unit |" in text
+    else:
+        assert "Driving torque" in text
+
+
+def test_quiet_prints_nothing(runner, tmp_path):
+    result = runner.invoke(app, ["run", str(ROOT / "examples" / "slider_crank.toml"), "--out", str(tmp_path),
+                                 "--quiet"])
+    assert result.exit_code == 0
+    assert result.output == ""
+    assert (tmp_path / "report.html").exists()
+
+
+def test_check_ok(runner):
+    result = runner.invoke(app, ["check", str(ROOT / "examples" / "rotary_screen.toml")])
+    assert result.exit_code == 0
+    assert result.stdout.strip().endswith(": OK")
+
+
+def test_version():
+    proc = _machdyn("--version")
+    assert proc.returncode == 0
+    assert proc.stdout.strip() == f"machdyn {__version__}"
+
+
+def test_examples_list_and_copy(runner, tmp_path):
+    listed = runner.invoke(app, ["examples"])
+    assert listed.exit_code == 0
+    for name in ("slider_crank", "four_bar", "rotary_screen"):
+        assert name in listed.stdout
+    target = tmp_path / "mine.toml"
+    copied = runner.invoke(app, ["examples", "rotary_screen", "--to", str(target)])
+    assert copied.exit_code == 0, copied.output
+    assert target.read_text() == (ROOT / "examples" / "rotary_screen.toml").read_text()
+    again = runner.invoke(app, ["examples", "rotary_screen", "--to", str(target)])
+    assert again.exit_code == 2 and "--force" in again.stderr
+    into_dir = runner.invoke(app, ["examples", "four_bar", "--to", str(tmp_path)])
+    assert into_dir.exit_code == 0 and (tmp_path / "four_bar.toml").exists()
+    unknown = runner.invoke(app, ["examples", "rotary"])
+    assert unknown.exit_code == 2 and "did you mean 'rotary_screen'?" in unknown.stderr
+    # the copy runs
+    ran = runner.invoke(app, ["check", str(target)])
+    assert ran.exit_code == 0
+
+
+def test_shipped_examples_are_the_repository_examples():
+    """examples/ (what the repository shows) and the package data (what `machdyn examples` ships) are the
+    same files; after editing one, copy it over the other."""
+    repo = {p.name: p.read_bytes() for p in (ROOT / "examples").glob("*.toml")}
+    shipped = {p.name: p.read_bytes() for p in PACKAGE_EXAMPLES.glob("*.toml")}
+    assert sorted(repo) == sorted(shipped)
+    for name in repo:
+        assert repo[name] == shipped[name], f"examples/{name} differs from src/machdyn/data/examples/{name}"
+
+
+def test_interrupted_write_leaves_no_half_file(tmp_path, monkeypatch):
+    from machdyn import outputs
+
+    target = tmp_path / "results.json"
+    target.write_text("previous")
+
+    def interrupted(handle):
+        handle.write('{"half": ')
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        outputs.atomic_write(target, interrupted)
+    assert target.read_text() == "previous"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["results.json"]
+
+    def interrupted_csv(frame_to_csv_self, handle, **kwargs):
+        handle.write("crank_angle [deg],x [m]\n0,")
+        raise KeyboardInterrupt
+
+    import pandas as pd
+
+    monkeypatch.setattr(pd.DataFrame, "to_csv", interrupted_csv)
+    with pytest.raises(KeyboardInterrupt):
+        outputs.write_frame_csv(tmp_path / "motion.csv", pd.DataFrame({"a": [1.0]}))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["results.json"]
+
+
+def test_interrupted_run_leaves_only_whole_files(tmp_path, monkeypatch):
+    """Ctrl-C while the report is rendered: the files already written are whole, the report is absent."""
+    from machdyn import runner as runner_module
+    from machdyn.problem import load_problem
+
+    result = runner_module.run_problem(load_problem(ROOT / "examples" / "four_bar.toml"))
+
+    def interrupt(self):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(runner_module.RunResult, "report_html", interrupt)
+    with pytest.raises(KeyboardInterrupt):
+        result.write(tmp_path)
+    names = sorted(p.name for p in tmp_path.iterdir())
+    assert "report.html" not in names and not [n for n in names if n.startswith(".")]
+    json.loads((tmp_path / "results.json").read_text())
+
+
+def test_out_directory_is_created(tmp_path):
+    out = tmp_path / "a" / "b"
+    proc = _machdyn("run", "examples/four_bar.toml", "--out", str(out), "--quiet")
+    assert proc.returncode == 0, proc.stderr
+    assert (out / "results.json").exists()
+
+
+def test_run_from_another_directory(tmp_path):
+    shutil.copy(ROOT / "examples" / "slider_crank.toml", tmp_path / "p.toml")
+    proc = _machdyn("run", "p.toml", "--quiet", cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    assert (tmp_path / "out" / "report.html").exists()
+    assert os.listdir(tmp_path / "out")

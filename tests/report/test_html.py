@@ -1,0 +1,120 @@
+"""The HTML report: self-contained, escaped, complete, and quick to render."""
+
+from __future__ import annotations
+
+import re
+import time
+
+import pytest
+
+from machdyn.report import format_value, render_report
+from machdyn.report.tables import analysis_scalars
+
+NASTY = '<script>alert("x")</script> & <b>bold</b>'
+
+
+def _render(analysis=None, **kw):
+    args = dict(
+        title=f"Report {NASTY}",
+        problem_text=f"[mechanism]\nname = '{NASTY}'\n",
+        summary_rows=[(f"quantity {NASTY}", 1.23456789, "N*m"), ("text value", NASTY, ""), ("n", 3, "")],
+        warnings=[f"warning {NASTY}"],
+        analysis=analysis,
+    )
+    args.update(kw)
+    return render_report(**args)
+
+
+def test_self_contained(any_analysis):
+    html = _render(any_analysis)
+    assert html.startswith("<!DOCTYPE html>")
+    assert not re.search(r"""(src|href)\s*=\s*["']?\s*(https?:)?//""", html, re.I)
+    assert not re.search(r"<(script|link|iframe|img|object|embed)\b", html, re.I)
+    assert "@import" not in html and "url(http" not in html
+    # every local reference points to an id in the same document
+    ids = set(re.findall(r'\bid="([^"]+)"', html))
+    for ref in re.findall(r'href="#([^"]+)"', html) + re.findall(r"url\(#([^)]+)\)", html):
+        assert ref in ids, ref
+
+
+def test_user_text_is_escaped(four_bar_analysis):
+    html = _render(four_bar_analysis)
+    assert "<script>" not in html and "<b>bold</b>" not in html
+    escaped = "&lt;script&gt;alert(&#34;x&#34;)&lt;/script&gt; &amp; &lt;b&gt;bold&lt;/b&gt;"
+    # title (twice), problem text, summary quantity and value, warning
+    assert html.count(escaped) >= 6
+
+
+def test_contents(four_bar_analysis):
+    html = _render(four_bar_analysis)
+    for section in ("summary", "warnings", "diagnostics", "plots", "input"):
+        assert f'id="{section}"' in html
+    assert "1.235" in html and "N·m" in html  # summary row, 4 significant digits
+    assert "Grashof type" in html and "Transmission angle, minimum" in html and "Time ratio" in html
+    for key in ("mechanism", "motion", "joints", "torque", "shaking", "energy", "harmonics"):
+        assert f'id="fig-{key}"' in html
+    assert html.count("<svg") == 7
+    assert "<?xml" not in html and "<!DOCTYPE svg" not in html
+    ids = re.findall(r'\bid="([^"]+)"', html)
+    assert len(ids) == len(set(ids)), "element ids must be unique across the inline SVGs"
+    # the diagnostics' own warnings are listed after the caller's
+    for w in four_bar_analysis.diagnostics.warnings:
+        assert w.replace("'", "&#39;") in html or w in html
+
+
+def test_without_analysis_and_with_extra_sections():
+    extra = "<table class='conveyor'><tr><td>capacity</td><td>12.5</td></tr></table>"
+    html = _render(None, warnings=[], extra_html_sections=[extra, ("Screw conveyor", "<p>fill 30 %</p>")])
+    assert "<svg" not in html and 'id="diagnostics"' not in html
+    assert extra in html  # trusted fragments go in as they are
+    assert "<h2>Screw conveyor</h2>" in html and "<p>fill 30 %</p>" in html
+    assert "No warnings." in html
+
+
+def test_design_variants_are_reported(sweep_analysis):
+    html = _render(sweep_analysis)
+    assert html.count("<svg") >= 6
+    assert "Design variant 0" in html
+
+
+def test_scalars_as_summary_rows(slider_crank_analysis):
+    rows = [(k, v["value"], v["unit"]) for k, v in analysis_scalars(slider_crank_analysis).items()]
+    html = _render(slider_crank_analysis, summary_rows=rows)
+    assert "driving_torque.max_abs" in html and "stroke.slider" in html
+
+
+@pytest.mark.parametrize(
+    ("value", "text"),
+    [(1.23456789, "1.235"), (1234.5678, "1235"), (0.00123456, "0.001235"), (1.5e-7, "1.5e-07"), (2.0, "2"),
+     (float("nan"), "n/a"), (None, "–"), (True, "yes"), (7, "7"), ([1.0, 2.5], "1, 2.5"), ("abc", "abc"),
+     (-0.5, "-0.5"), (3.2e7, "3.2e+07")],
+)
+def test_format_value(value, text):
+    assert format_value(value) == text
+
+
+def test_render_time(four_bar_analysis, slider_crank_analysis):
+    """The report of a full 360-position analysis renders in well under the 1.5 s budget once matplotlib is
+    imported (the bound here leaves room for slow machines)."""
+    from machdyn.linkage import analyse, crank_angles
+
+    _render(four_bar_analysis)  # warm-up: fonts and caches
+    a = analyse(slider_crank_analysis.mechanism, crank_angles(360), 30.0)
+    start = time.perf_counter()
+    _render(a)
+    elapsed = time.perf_counter() - start
+    assert elapsed < 3.0, f"report took {elapsed:.2f} s"
+
+
+def test_units_are_displayed_with_dots_and_superscripts():
+    from machdyn.report.html import pretty_unit
+
+    assert pretty_unit("kg*m^2") == "kg·m²"
+    assert pretty_unit("m/s^2") == "m/s²"
+    assert pretty_unit("N*m") == "N·m"
+    assert pretty_unit("m^-1") == "m⁻¹"
+
+
+def test_shaking_moment_point_is_used(slider_crank_analysis):
+    html = _render(slider_crank_analysis, shaking_about=(0.1, -0.02))
+    assert "Shaking moment about (0.1, -0.02) m" in html
