@@ -197,10 +197,23 @@ def _summary_from_scalars(scalars: dict[str, dict[str, Any]], about: tuple[float
         ("transmission_angle.max", "Transmission angle, max"),
         ("work_balance.relative_residual", "Work balance, relative residual"),
     ]
+    # Values that vanish in exact arithmetic (the mean torque and power over a loss-free cycle, the shaking
+    # moment of a mechanism with constant angular momentum) come out as round-off; show those as 0.
+    def scale(key):
+        return abs(float(scalars.get(key, {}).get("value", 0.0) or 0.0))
+
+    roundoff = {
+        "driving_torque.mean": scale("driving_torque.max_abs"),
+        "input_power.mean": scale("input_power.max"),
+        "shaking_moment.max_abs": scale("driving_torque.max_abs"),
+    }
     rows = []
     for key, label in labels:
         if key in scalars:
-            rows.append((label, scalars[key]["value"], scalars[key]["unit"]))
+            value = scalars[key]["value"]
+            if key in roundoff and isinstance(value, float) and abs(value) <= 1e-9 * roundoff[key]:
+                value = 0.0
+            rows.append((label, value, scalars[key]["unit"]))
     for key, entry in scalars.items():
         if key.startswith("joint.") and key.endswith(".max_force"):
             rows.append((f"Joint {key[6:-10]}, max force", entry["value"], entry["unit"]))

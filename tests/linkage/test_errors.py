@@ -19,6 +19,7 @@ from machdyn.linkage import (
     Spring,
     crank_angles,
     double_slider_crank,
+    energy,
     four_bar,
     inverted_slider_crank,
     kinematics,
@@ -99,10 +100,18 @@ def test_nan_and_inf_inputs(fb):
 
 
 def test_nan_offset_is_rejected():
-    # The message names the derived ground point 'S' rather than the builder's 'offset' argument (reported);
-    # the rule and the value are in it.
-    with pytest.raises(InputError, match=re.escape("must be a finite number; got nan m.")):
+    with raises(InputError, "The offset of slider_crank 'slider_crank' must be a finite number; got nan m."):
         slider_crank(0.1, 1.0, np.nan)
+
+
+def test_zero_speed_has_no_reduced_inertia(fb):
+    with raises(InputError, "The reduced inertia needs a non-zero crank speed; got 0 rad/s."):
+        _ = energy(fb, crank_angles(4), speed=0.0).reduced_inertia
+
+
+def test_crank_pivot_must_be_on_the_ground(fb):
+    with raises(InputError, "The crank pivot must be a ground point 'ground.NAME'; got 'crank.O'."):
+        replace(fb, crank=Crank("crank", "crank.O"))
 
 
 # ------------------------------------------------------------------------------------- assembly

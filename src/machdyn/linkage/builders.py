@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..errors import InputError, check_positive
+from ..errors import InputError, check_finite, check_positive
 from .model import RPR, RRP, RRR, Body, Crank, Guide, Mechanism
 
 BRANCHES = {"open": 1, "crossed": -1, "up": 1, "down": -1, 1: 1, -1: -1, "+1": 1, "-1": -1}
@@ -68,6 +68,8 @@ def slider_crank(
     """
     check_positive("crank length of slider_crank '" + name + "'", crank, "m")
     check_positive("rod length of slider_crank '" + name + "'", rod, "m")
+    check_finite(f"offset of slider_crank '{name}'", offset, "m")
+    check_finite(f"slide_angle of slider_crank '{name}'", slide_angle, "rad")
     m, i, c = (_props(v, 3, f) for v, f in ((masses, "masses"), (inertias, "inertias"), (coms, "coms")))
     sa, ca = np.sin(slide_angle), np.cos(slide_angle)
     bodies = (
@@ -111,6 +113,9 @@ def four_bar(
     """
     for field, value in (("crank", crank), ("coupler", coupler), ("rocker", rocker), ("ground", ground)):
         check_positive(f"{field} length of four_bar '{name}'", value, "m")
+    check_finite(f"ground_angle of four_bar '{name}'", ground_angle, "rad")
+    if coupler_point is not None:
+        check_finite(f"coupler_point of four_bar '{name}'", coupler_point, "m")
     m, i, c = (_props(v, 3, f) for v, f in ((masses, "masses"), (inertias, "inertias"), (coms, "coms")))
     coupler_points = {"A": (0.0, 0.0), "B": (_f(coupler), 0.0)}
     if coupler_point is not None:
@@ -145,6 +150,7 @@ def inverted_slider_crank(
     mass properties."""
     check_positive(f"crank length of inverted_slider_crank '{name}'", crank, "m")
     check_positive(f"ground length of inverted_slider_crank '{name}'", ground, "m")
+    check_finite(f"offset of inverted_slider_crank '{name}'", offset, "m")
     length = np.asarray(crank) + np.asarray(ground) if rocker_length is None else np.asarray(rocker_length)
     check_positive(f"rocker length of inverted_slider_crank '{name}'", length, "m")
     m, i, _ = (_props(v, 3, f) for v, f in ((masses, "masses"), (inertias, "inertias"), (None, "coms")))
@@ -187,6 +193,7 @@ def six_bar(
     )
     check_positive(f"link5 length of six_bar '{name}'", link5, "m")
     check_positive(f"link6 length of six_bar '{name}'", link6, "m")
+    check_finite(f"pivot6 of six_bar '{name}'", pivot6, "m")
     bodies = base.bodies + (
         _bar("link5", {"P": (0.0, 0.0), "F": (_f(link5), 0.0)}, link5, None, None, None, linear_density),
         _bar("link6", {"E": (0.0, 0.0), "F": (_f(link6), 0.0)}, link6, None, None, None, linear_density),
@@ -224,6 +231,9 @@ def double_slider_crank(
     """
     for field, value in (("crank_1", crank_1), ("rod_1", rod_1), ("crank_2", crank_2), ("rod_2", rod_2)):
         check_positive(f"{field} length of double_slider_crank '{name}'", value, "m")
+    for field, value, unit in (("offset_1", offset_1, "m"), ("offset_2", offset_2, "m"), ("phase", phase, "rad"),
+                               ("slide_angle_1", slide_angle_1, "rad"), ("slide_angle_2", slide_angle_2, "rad")):
+        check_finite(f"{field} of double_slider_crank '{name}'", value, unit)
     m, i = (_props(v, 5, f) for v, f in ((masses, "masses"), (inertias, "inertias")))
     a2 = (_f(np.asarray(crank_2) * np.cos(phase)), _f(np.asarray(crank_2) * np.sin(phase)))
     crank_mass = linear_density * (np.asarray(crank_1) + np.asarray(crank_2)) if m[0] is None else m[0]

@@ -82,7 +82,9 @@ def rrr_motion(P: PointState, Q: PointState, a_pin, a_inner, b_pin, b_inner, bra
     d = np.sqrt(d2)
     along = (La * La - Lb * Lb + d2) / (2.0 * d)
     h2 = La * La - along * along
-    assembled = h2 >= -ASSEMBLY_TOL * La * La
+    # Coincident pins (d = 0) leave the dyad free to turn: indeterminate, reported as a singular position.
+    coincident = d == 0.0
+    assembled = (h2 >= -ASSEMBLY_TOL * La * La) | coincident
     h = _root(h2, assembled)
     ux = dx / d
     uy = dy / d
@@ -114,7 +116,8 @@ def rrr_motion(P: PointState, Q: PointState, a_pin, a_inner, b_pin, b_inner, bra
     def transmission():  # angle between the two links at B, 0..pi
         return np.arccos(np.clip((px * qx + py * qy) / (La * Lb), -1.0, 1.0))
 
-    return DyadMotion(body_a, body_b, assembled, det / (La * Lb), transmission, {}, B)
+    det = np.where(coincident, 0.0, det / (La * Lb)) if np.any(coincident) else det / (La * Lb)
+    return DyadMotion(body_a, body_b, assembled, det, transmission, {}, B)
 
 
 def _guide_frame(S: BodyState, g_local, angle):

@@ -75,20 +75,26 @@ class Energy:
     def reduced_inertia(self) -> np.ndarray:
         """Reduced (equivalent) moment of inertia at the crank, I_red = 2 T / omega^2 [kg*m^2] (seed 003
         eq 18). Needs a non-zero crank speed."""
-        w = self.kinematics.speed
+        w = self._speed("reduced inertia")
         return 2.0 * self.kinetic_total / (w * w)
 
     @property
     def reduced_moment(self) -> np.ndarray:
         """Reduced moment of all forces but inertia and the drive, M_red = P / omega [N*m] (seed 003 eq 19,
         corrected: each force at the velocity of its own point, all weights and springs included)."""
-        return (self.load_power + self.conservative_power) / self.kinematics.speed
+        return (self.load_power + self.conservative_power) / self._speed("reduced moment")
 
     @property
     def input_torque_from_energy(self) -> np.ndarray:
         """Driving torque from the energy rate, M = (dE/dt - P_loads)/omega [N*m]; with no external load and
         constant speed this is dW/dphi of seed 002 eq 12. Equals the kinetostatic driving torque."""
-        return (self.energy_rate - self.load_power) / self.kinematics.speed
+        return (self.energy_rate - self.load_power) / self._speed("input torque from the energy rate")
+
+    def _speed(self, what: str) -> np.ndarray:
+        w = self.kinematics.speed
+        if np.any(w == 0.0):
+            raise InputError(f"The {what} needs a non-zero crank speed; got 0 rad/s.")
+        return w
 
     def power_residual(self) -> np.ndarray:
         """Pointwise power balance T*omega + P_loads - dE/dt [W]; zero up to rounding."""
@@ -105,7 +111,7 @@ class Energy:
         if np.ndim(phi) != 1 or phi.size < 2:
             raise InputError("The work balance needs at least two crank angles in a 1-D array.")
         torque = self.forces.driving_torque
-        load_torque = self.load_power / self.kinematics.speed
+        load_torque = self.load_power / self._speed("work balance")
         full = _is_full_cycle(phi)
         if full:
             step = 2.0 * np.pi / phi.size

@@ -83,7 +83,9 @@ class Kinematics:
             try:
                 raw = self.bodies[name]
             except KeyError:
-                raise InputError(f"No body '{name}' in mechanism '{self.mechanism.name}'.") from None
+                raise InputError(
+                    f"No body '{name}' in mechanism '{self.mechanism.name}'; bodies: {', '.join(self.bodies)}."
+                ) from None
             # Broadcast on first use only: scalars (e.g. a constant crank speed) stay cheap in the solve.
             self._points[key] = _broadcast_state(raw, self.shape)
         return self._points[key]
@@ -182,16 +184,18 @@ def kinematics(
         pivot = PointState(ox, oy, 0.0, 0.0, 0.0, 0.0)
         states[crank.name] = body_from_point(pivot, (cu, cv), phi, omega, eps, np.cos(phi), np.sin(phi))
         assembled = True
+        failing = []
         for d in mech.dyads:
             motion = _solve_dyad(mech, d, states)
             states[d.a], states[d.b] = motion.a, motion.b
             assembled = assembled & motion.assembled
+            failing.append((d, motion.assembled))
             for key, (sv, dsv, ddsv) in motion.slides.items():
                 slides[d.a if key == "a" else d.b] = SlideMotion(*(np.broadcast_to(v, shape) for v in (sv, dsv, ddsv)))
             reports.append(DyadReport(type(d).__name__, (d.a, d.b), motion.det, motion.transmission))
     assembled = np.broadcast_to(assembled, shape)
     if on_fail == "raise" and not np.all(assembled):
-        raise AssemblyError(_assembly_message(mech, phi, assembled))
+        raise AssemblyError(_assembly_message(mech, phi, assembled, failing))
     if on_fail == "raise":
         _check_not_dead(mech, phi, reports, shape)
     states.pop(GROUND)
@@ -299,13 +303,13 @@ def _check_not_dead(mech: Mechanism, phi, reports, shape) -> None:
             at = np.broadcast_to(phi, shape)[dead]
             text = ", ".join(f"{np.degrees(a):.2f}°" for a in np.unique(at)[:6])
             raise SingularPositionError(
-                f"Mechanism '{mech.name}' is in a dead (toggle) position of its {rep.kind} dyad "
+                f"Mechanism '{mech.name}' is in a dead (toggle) or indeterminate position of its {rep.kind} dyad "
                 f"{rep.bodies[0]}-{rep.bodies[1]} at crank angle(s) {text}: velocities and forces are unbounded "
                 "there. Leave these angles out or change the geometry."
             )
 
 
-def _assembly_message(mech: Mechanism, phi, assembled) -> str:
+def _assembly_message(mech: Mechanism, phi, assembled, per_dyad=()) -> str:
     from .diagnostics import grashof_type
 
     fails = ~assembled
@@ -318,7 +322,10 @@ def _assembly_message(mech: Mechanism, phi, assembled) -> str:
     ranges = angle_ranges(phi_row, fails)
     text = format_ranges(ranges)
     kind = grashof_type(mech)
-    kind_note = f" Grashof type: {kind}." if kind else ""
+    kind_note = f" Grashof type: {kind}." if isinstance(kind, str) else ""
+    culprits = [f"{type(d).__name__} {d.a}-{d.b}" for d, ok in per_dyad if not np.all(ok)]
+    if len(mech.dyads) > 1 and culprits:
+        kind_note += f" The dyad(s) that cannot close: {', '.join(culprits)}."
     if np.all(fails):
         return (
             f"Mechanism '{mech.name}' cannot be assembled at any of the requested crank angles"

@@ -309,9 +309,9 @@ def validate(mech: Mechanism, sizes: set[int]) -> None:
         mech.body(pm.body)
 
     known = {GROUND}
-    _require_point(mech, mech.crank.pivot, "crank.pivot", known)
     if split_ref(mech.crank.pivot)[0] != GROUND:
         raise InputError(f"The crank pivot must be a ground point 'ground.NAME'; got {mech.crank.pivot!r}.")
+    _require_point(mech, mech.crank.pivot, "crank.pivot", known)
     crank = mech.body(mech.crank.body)
     pivot = split_ref(mech.crank.pivot)[1]
     if pivot not in crank.points:

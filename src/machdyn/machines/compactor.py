@@ -316,23 +316,18 @@ class Compactor:
 
         Returns {"gamma_max": max |gamma| [rad], "at": the crank angle [rad] where it occurs, "limit": limit,
         "ok": gamma_max < limit, "transmission_min"/"transmission_max": range of :func:`transmission_angle`
-        [rad]}. The extreme is located on a grid of ``samples`` angles and refined by a bounded scalar search.
+        [rad]}. The extreme is located on a grid of ``samples`` angles and refined by re-sampling around it.
         """
-        from scipy.optimize import minimize_scalar
+        from ..linkage.extremes import refine_extreme
 
         phi = np.linspace(0.0, 2.0 * np.pi, int(samples))
         k = self.kinematics(phi)
         th2, th3 = k.body("coupler").angle, k.body("rocker").angle
-        g = np.abs(_wrap(th2))
-        i = int(np.argmax(g))
-        h = phi[1] - phi[0]
 
-        def neg_gamma(x):
-            return -float(np.abs(_wrap(self.kinematics(np.array([x])).body("coupler").angle))[0])
+        def gamma(x):
+            return np.abs(_wrap(self.kinematics(x).body("coupler").angle))
 
-        res = minimize_scalar(neg_gamma, bounds=(phi[i] - h, phi[i] + h), method="bounded",
-                              options={"xatol": 1e-10})
-        gmax, at = (-res.fun, res.x) if -res.fun >= g[i] else (g[i], phi[i])
+        at, gmax = refine_extreme(gamma, phi, np.abs(_wrap(th2)), "max")
         mu = transmission_angle(th2, th3)
         return {"gamma_max": float(gmax), "at": float(np.mod(at, 2 * np.pi)), "limit": float(limit),
                 "ok": bool(gmax < limit), "transmission_min": float(mu.min()),

@@ -401,7 +401,7 @@ def w1_range_eq20(lam, samples: int = 400_001) -> tuple[float, float]:
     """Exact range of eq 20's W1/T1max over a revolution [-] (repro 002.3: [0.986444, 1.013660] at lam = 0.0125).
 
     The extremes (near alpha = 35.26 deg and 144.74 deg) are located on a uniform grid of ``samples`` points
-    and then refined with a bounded scalar search. lam = R/L in (0, 1).
+    and then refined by re-sampling around them. lam = R/L in (0, 1).
     """
     check_positive("lambda", lam)
     a = np.linspace(0.0, 2.0 * np.pi, int(samples))
@@ -473,16 +473,11 @@ def _entry(quantity, unit, paper, formula, engine, source, note=""):
 
 
 def _refined_extreme(func, grid, values, pick):
-    """Refine the extreme ``pick`` ('max' or 'min') of a smooth periodic func sampled on a uniform grid."""
-    from scipy.optimize import minimize_scalar
+    """The extreme ``pick`` ('max' or 'min') of a smooth periodic func sampled on a uniform grid, refined by
+    re-sampling ever finer around the best sample (:func:`machdyn.linkage.extremes.refine_extreme`)."""
+    from ..linkage.extremes import refine_extreme
 
-    idx = int(np.argmax(values) if pick == "max" else np.argmin(values))
-    h = grid[1] - grid[0]
-    sign = -1.0 if pick == "max" else 1.0
-    res = minimize_scalar(lambda x: sign * float(func(np.array([x]))[0]), bounds=(grid[idx] - h, grid[idx] + h),
-                          method="bounded", options={"xatol": 1e-10})
-    best = -res.fun if pick == "max" else res.fun
-    return max(best, values[idx]) if pick == "max" else min(best, values[idx])
+    return refine_extreme(func, grid, values, pick)[1]
 
 
 def energy_figures(screen: RotaryScreen = PAPER_SCREEN, samples: int = 3601) -> dict[str, dict]:
@@ -496,8 +491,8 @@ def energy_figures(screen: RotaryScreen = PAPER_SCREEN, samples: int = 3601) -> 
     fluctuation_power, K, W1_min_ratio, W1_max_ratio, P_r, P_r_printed, W1_fluctuation, M_in_peak,
     M_in_peak_spring.
 
-    The engine's values are found on a uniform grid of ``samples`` crank angles with the extremes refined by a
-    bounded scalar search, so they are exact to far below the printed digits.
+    The engine's values are found on a uniform grid of ``samples`` crank angles with the extremes refined by
+    re-sampling ever finer around them, so they are exact to far below the printed digits.
     """
     from ..linkage import energy, kinetostatics
 
