@@ -35,7 +35,6 @@ class DyadMotion:
     det: np.ndarray
     transmission: object  # callable returning the transmission angle [rad]; computed only when asked for
     slides: dict  # body name -> (s, ds, dds)
-    inner: PointState | None  # the inner revolute joint, where there is one
 
 
 def _root(square, assembled):
@@ -93,31 +92,38 @@ def rrr_motion(P: PointState, Q: PointState, a_pin, a_inner, b_pin, b_inner, bra
     px, py = bx - P.x, by - P.y
     qx, qy = bx - Q.x, by - Q.y
     det = px * qy - py * qx
+    inv = 1.0 / det
     wx, wy = Q.vx - P.vx, Q.vy - P.vy
-    om_a = (wx * qx + wy * qy) / det
-    om_b = (wx * px + wy * py) / det
-    wax = Q.ax - P.ax - om_b * om_b * qx + om_a * om_a * px
-    way = Q.ay - P.ay - om_b * om_b * qy + om_a * om_a * py
-    al_a = (wax * qx + way * qy) / det
-    al_b = (wax * px + way * py) / det
-    B = PointState(
-        bx,
-        by,
-        P.vx - om_a * py,
-        P.vy + om_a * px,
-        P.ax - al_a * py - om_a * om_a * px,
-        P.ay + al_a * px - om_a * om_a * py,
-    )
+    om_a = (wx * qx + wy * qy) * inv
+    om_b = (wx * px + wy * py) * inv
+    w2a, w2b = om_a * om_a, om_b * om_b
+    wax = Q.ax - P.ax - w2b * qx + w2a * px
+    way = Q.ay - P.ay - w2b * qy + w2a * py
+    al_a = (wax * qx + way * qy) * inv
+    al_b = (wax * px + way * py) * inv
     ca, sa = _orient(px, py, La, cda, sda)
     cb, sb = _orient(qx, qy, Lb, cdb, sdb)
-    body_a = body_from_point(*_anchor(P, a_pin, B, a_inner), np.arctan2(sa, ca), om_a, al_a, ca, sa)
-    body_b = body_from_point(*_anchor(Q, b_pin, B, b_inner), np.arctan2(sb, cb), om_b, al_b, cb, sb)
+    if is_origin(a_pin) and is_origin(b_pin):
+        # Both frames hang on their pins (the usual link frames): B's motion is not needed here.
+        anchor_a, anchor_b = (P, a_pin), (Q, b_pin)
+    else:
+        B = PointState(
+            bx,
+            by,
+            P.vx - om_a * py,
+            P.vy + om_a * px,
+            P.ax - al_a * py - w2a * px,
+            P.ay + al_a * px - w2a * py,
+        )
+        anchor_a, anchor_b = _anchor(P, a_pin, B, a_inner), _anchor(Q, b_pin, B, b_inner)
+    body_a = body_from_point(*anchor_a, np.arctan2(sa, ca), om_a, al_a, ca, sa)
+    body_b = body_from_point(*anchor_b, np.arctan2(sb, cb), om_b, al_b, cb, sb)
 
     def transmission():  # angle between the two links at B, 0..pi
         return np.arccos(np.clip((px * qx + py * qy) / (La * Lb), -1.0, 1.0))
 
     det = np.where(coincident, 0.0, det / (La * Lb)) if np.any(coincident) else det / (La * Lb)
-    return DyadMotion(body_a, body_b, assembled, det, transmission, {}, B)
+    return DyadMotion(body_a, body_b, assembled, det, transmission, {})
 
 
 def _guide_frame(S: BodyState, g_local, angle):
@@ -181,7 +187,7 @@ def rrp_motion(P: PointState, S: BodyState, g_local, g_angle, a_pin, a_inner, b_
     def transmission():
         return np.arcsin(np.clip(np.abs(det) / La, 0.0, 1.0))
 
-    return DyadMotion(body_a, body_b, assembled, det / La, transmission, {"b": (s, ds, dds)}, B)
+    return DyadMotion(body_a, body_b, assembled, det / La, transmission, {"b": (s, ds, dds)})
 
 
 def rpr_motion(P: PointState, Q: PointState, a_pin, b_pin, slide_local, slide_angle, branch) -> DyadMotion:
@@ -226,7 +232,7 @@ def rpr_motion(P: PointState, Q: PointState, a_pin, b_pin, slide_local, slide_an
     def transmission():
         return np.arcsin(np.clip(np.abs(det) / D, 0.0, 1.0))
 
-    return DyadMotion(block, rocker, assembled, det / D, transmission, {"a": (t, dt, ddt)}, None)
+    return DyadMotion(block, rocker, assembled, det / D, transmission, {"a": (t, dt, ddt)})
 
 
 def prp_motion(Si: BodyState, g1_local, g1_angle, Sj: BodyState, g2_local, g2_angle, a_inner, b_inner) -> DyadMotion:
@@ -267,7 +273,7 @@ def prp_motion(Si: BodyState, g1_local, g1_angle, Sj: BodyState, g2_local, g2_an
     def transmission():
         return np.arcsin(np.clip(np.abs(cr), 0.0, 1.0))
 
-    return DyadMotion(body_a, body_b, assembled, cr, transmission, {"a": (s1, ds1, dds1), "b": (s2, ds2, dds2)}, B)
+    return DyadMotion(body_a, body_b, assembled, cr, transmission, {"a": (s1, ds1, dds1), "b": (s2, ds2, dds2)})
 
 
 # ------------------------------------------------------------------------------------------ kinetostatics

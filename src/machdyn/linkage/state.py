@@ -65,6 +65,11 @@ class BodyState:
         """Motion of the point with body-frame coordinates (u, v) [m]."""
         rx, ry = self.offset(u, v)
         w2 = self.omega * self.omega
+        if np.ndim(self.alpha) == 0 and self.alpha == 0:  # steady crank: skip the zero tangential terms
+            return PointState(
+                self.x + rx, self.y + ry, self.vx - self.omega * ry, self.vy + self.omega * rx,
+                self.ax - w2 * rx, self.ay - w2 * ry,
+            )
         return PointState(
             self.x + rx,
             self.y + ry,
