@@ -152,8 +152,9 @@ def kinematics(
     ----------
     mech : the linkage (parameters may be arrays of N design variants).
     crank_angle : crank angles phi [rad], scalar or (M,).
-    speed : crank angular velocity [rad/s], scalar or broadcastable to phi (a given speed law).
-    acceleration : crank angular acceleration [rad/s^2], scalar or broadcastable to phi.
+    speed : crank angular velocity [rad/s], scalar or broadcastable to phi (a given speed law); for N design
+        variants also an (N,) array, one speed per design (when its length differs from phi's).
+    acceleration : crank angular acceleration [rad/s^2], shaped like ``speed``.
     on_fail : "raise" raises :class:`AssemblyError` listing the crank-angle ranges where the linkage cannot
         close; "mask" returns NaN there, flagged ``assembled = False``.
 
@@ -168,7 +169,9 @@ def kinematics(
     omega = np.asarray(speed, dtype=float)
     eps = np.asarray(acceleration, dtype=float)
     if mech.design_count is not None:
+        # A 1-D speed or acceleration that does not match the crank angles is one value per design.
         omega = _col(omega) if omega.ndim == 1 and omega.shape != phi.shape else omega
+        eps = _col(eps) if eps.ndim == 1 and eps.shape != phi.shape else eps
     states: dict[str, BodyState] = {GROUND: ground_state()}
     slides: dict[str, SlideMotion] = {}
     reports = []
