@@ -1,22 +1,30 @@
 """Engine checks that complement the property tests: moving guides (Coriolis terms), the PRP group, closed-form
 diagnostics, harmonics, design broadcasting and sweeps."""
 
+import re
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
-from machdyn.errors import InputError
+from machdyn.errors import InputError, SingularPositionError
 from machdyn.linkage import (
     PRP,
     RRP,
     Body,
+    BodyTorque,
     Guide,
     Mechanism,
+    PointForce,
+    PointMass,
     analyse,
     crank_angles,
     diagnose,
+    double_slider_crank,
     four_bar,
     grashof_type,
     harmonics,
+    joints,
     kinematics,
     kinetostatics,
     slider_crank,
@@ -196,3 +204,84 @@ def test_shaking_moment_about_another_point_shifts_by_the_force_moment():
     z = (0.05, -0.02)
     expected = forces.shaking_moment() - (z[0] * forces.frame_fy - z[1] * forces.frame_fx)
     np.testing.assert_allclose(forces.shaking_moment(z), expected, rtol=1e-14, atol=1e-14)
+
+
+def test_a_load_window_of_a_full_turn_keeps_the_load_on():
+    base = slider_crank(0.05, 0.2, gravity=(0.0, 0.0))
+    phi = crank_angles(24)
+    always = replace(base, forces=(PointForce("F", "slider.B", -100.0, 0.0),))
+    full_turn = replace(base, forces=(PointForce("F", "slider.B", -100.0, 0.0, active=(0.0, 2 * np.pi)),))
+    np.testing.assert_allclose(
+        kinetostatics(full_turn, phi, 10.0).driving_torque, kinetostatics(always, phi, 10.0).driving_torque
+    )
+
+
+def test_a_toggle_within_rounding_is_a_singular_position():
+    """Non-Grashof four-bar at the end of its assembly range: coupler and rocker in line."""
+    a, b, c, g = 2.0, 2.2, 1.5, 3.0
+    toggle = np.arccos((a**2 + g**2 - (b + c) ** 2) / (2 * a * g))
+    with pytest.raises(SingularPositionError, match="dead \\(toggle\\) or indeterminate position"):
+        kinematics(four_bar(a, b, c, g), np.array([toggle]))
+
+
+def test_sweep_flags_a_design_that_passes_a_singular_position():
+    """A kite four-bar (1, 2, 2, 1) puts its crank pin on the rocker pivot at phi = 0."""
+    result = sweep(four_bar(np.array([1.0, 0.9]), 2.0, 2.0, 1.0), crank_angles(8), 1.0)
+    assert result.assembled.tolist() == [True, True]
+    assert result.regular.tolist() == [False, True]
+    assert np.isnan(result.max_driving_torque[0]) and np.isfinite(result.max_driving_torque[1])
+
+
+def test_parallelogram_dead_positions_and_no_false_limit_positions():
+    diag = diagnose(four_bar(1.0, 2.0, 1.0, 2.0), samples=720)
+    np.testing.assert_allclose(np.degrees(diag.dead_positions), [0.0, 180.0], atol=1e-9)
+    assert diag.limit_positions == []
+
+
+def test_mean_power_and_rms_torque_are_time_averages_at_variable_speed():
+    """Mean input power = work per turn / period = integral(T dphi) / integral(dphi / omega)."""
+    mech = four_bar(np.array([0.04, 0.035]), 0.12, 0.08, 0.10, masses=(0.2, 0.5, 0.4))
+    mech = replace(mech, torques=(BodyTorque("load", "crank", -2.0),))  # a resisting torque on the shaft
+    phi = crank_angles(720)
+    speed = 7.0 + 3.0 * np.sin(phi)
+    accel = 3.0 * np.cos(phi) * speed  # d(omega)/dt = d(omega)/dphi * omega
+    result = sweep(mech, phi, speed, accel, chunk_positions=800)
+    forces = kinetostatics(mech, phi, speed, accel)
+    period = np.sum(1.0 / speed) * (2 * np.pi / phi.size)
+    work = np.sum(forces.driving_torque, axis=-1) * (2 * np.pi / phi.size)
+    np.testing.assert_allclose(result.mean_input_power, work / period, rtol=1e-12)
+    rms = np.sqrt(np.sum(forces.driving_torque**2 / speed, axis=-1) * (2 * np.pi / phi.size) / period)
+    np.testing.assert_allclose(result.rms_driving_torque, rms, rtol=1e-12)
+
+
+def test_sweep_with_one_speed_per_design_across_chunks():
+    mech = slider_crank(np.array([0.03, 0.04, 0.05, 0.06]), 0.2)
+    speeds = np.array([1.0, 2.0, 3.0, 4.0])
+    phi = crank_angles(24)
+    result = sweep(mech, phi, speeds, chunk_positions=30)
+    for i, w in enumerate(speeds):
+        one = kinetostatics(mech.take_designs(i), phi, w)
+        assert result.max_driving_torque[i] == pytest.approx(np.max(np.abs(one.driving_torque)), rel=1e-13)
+
+
+def test_point_mass_names_must_not_clash_with_bodies():
+    with pytest.raises(InputError, match=re.escape(
+        "Point-mass names must differ from each other and from body names in mechanism 'slider_crank'; "
+        "got crank more than once."
+    )):
+        replace(slider_crank(0.05, 0.2), point_masses=(PointMass("crank", "crank", 5.0, (0.05, 0.0)),))
+
+
+def test_joint_names_are_unique_in_solution_order():
+    """Two rods on one crank pin: the first keeps the name 'A', the second is 'A:rod_2'."""
+    base = double_slider_crank(0.05, 0.2, 0.05, 0.25, phase=0.0)
+    crank = replace(base.body("crank"), points={"O": (0.0, 0.0), "A": (0.05, 0.0)})
+    rod_2 = replace(base.body("rod_2"), points={"A": (0.0, 0.0), "B2": (0.25, 0.0)})
+    rod_1 = replace(base.body("rod_1"), points={"A": (0.0, 0.0), "B1": (0.2, 0.0)})
+    bodies = tuple({"crank": crank, "rod_1": rod_1, "rod_2": rod_2}.get(b.name, b) for b in base.bodies)
+    dyads = tuple(replace(d, pin_a="crank.A") for d in base.dyads)
+    mech = replace(base, bodies=bodies, dyads=dyads)
+    forces = kinetostatics(mech, crank_angles(12), 5.0)
+    names = [j.name for j in forces.joints]
+    assert names[:2] == ["O", "A"] and "A:rod_2" in names
+    assert names == [j[0] for j in joints(mech)]

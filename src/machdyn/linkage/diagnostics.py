@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputError
-from .kinematics import angle_ranges, crank_angles, format_ranges, kinematics
+from .kinematics import angle_ranges, crank_angles, format_ranges, kinematics, singular
 from .model import GROUND, RPR, RRP, RRR, Mechanism, split_ref
 
 #: Below this transmission angle [deg] force transmission is poor (Norton, §4.10: keep mu >= 40 deg).
@@ -122,27 +122,30 @@ def diagnose(mech: Mechanism, samples: int = 3600) -> Diagnostics:
         )
     phi = crank_angles(samples)
     kin = kinematics(mech, phi, 1.0, 0.0, on_fail="mask")
-    ok = np.asarray(kin.assembled)
+    assembled = np.asarray(kin.assembled)
+    ok = assembled & ~singular(kin.dyad_reports, kin.shape)
     warnings = []
-    ranges = angle_ranges(phi, ok)
-    gaps = angle_ranges(phi, ~ok)
+    ranges = angle_ranges(phi, assembled)
+    gaps = angle_ranges(phi, ~assembled)
     kind = grashof_type(mech)
     if gaps:
         text = format_ranges(gaps)
         warnings.append(f"The linkage cannot assemble for crank angles {text}" + (f" ({kind})." if kind else "."))
-    dead = []
+    dead = _dead_positions(phi, kin.dyad_reports, assembled, ok, ranges if gaps else [])
     t_min, t_max = np.inf, -np.inf
     for rep in kin.dyad_reports:
-        for _, angle in _zero_crossings(phi, rep.det, ok):
-            dead.append(angle)
-        mu = rep.transmission[ok]
+        mu = np.asarray(rep.transmission)[ok]
+        mu = mu[np.isfinite(mu)]
         if mu.size:
             t_min, t_max = min(t_min, float(mu.min())), max(t_max, float(mu.max()))
+    step = 2 * np.pi / samples
     limits, strokes = [], {}
     for body, values, rates in _outputs(mech, kin):
         for i, angle in _zero_crossings(phi, rates, ok):
-            limits.append(LimitPosition(body, angle, float(values[i])))
-        v = values[ok]
+            # A sign change of the rate right at a dead position is a branch change, not a limit position.
+            if all(abs(_angle_between(angle, d)) > 2.5 * step for d in dead):
+                limits.append(LimitPosition(body, angle, float(values[i])))
+        v = values[ok & np.isfinite(values)]
         if v.size:
             strokes[body] = float(v.max() - v.min())
     time_ratio = _time_ratio(limits, bool(ok.all()))
@@ -162,6 +165,32 @@ def diagnose(mech: Mechanism, samples: int = 3600) -> Diagnostics:
                        float(t_min), float(t_max), warnings)
 
 
+def _angle_between(a: float, b: float) -> float:
+    return float((a - b + np.pi) % (2 * np.pi) - np.pi)
+
+
+def _dead_positions(phi, reports, assembled, ok, assembly_ranges) -> list[float]:
+    """Crank angles [rad] of dead (toggle) positions: where a dyad determinant changes sign (PRP), where it
+    touches zero without changing sign (a change-point linkage; a local minimum of |det| within ten sampling
+    steps of zero), and the ends of the assembly ranges, where the dyad that cannot close is in line."""
+    step = 2 * np.pi / len(phi)
+    found: list[float] = []
+    for rep in reports:
+        det = np.broadcast_to(rep.det, np.shape(phi))
+        found += [angle for _, angle in _zero_crossings(phi, det, ok)]
+        mag = np.abs(np.where(assembled, det, np.inf))
+        left, right = np.roll(mag, 1), np.roll(mag, -1)
+        touching = assembled & (mag <= left) & (mag <= right) & (mag < 10 * step)
+        found += [float(a) for a in phi[touching]]
+    for start, end in assembly_ranges:
+        found += [start, end]
+    unique: list[float] = []
+    for angle in sorted(a % (2 * np.pi) for a in found):
+        if all(abs(_angle_between(angle, u)) > 2.5 * step for u in unique):
+            unique.append(angle)
+    return unique
+
+
 def _outputs(mech: Mechanism, kin):
     """The outputs whose limit positions matter: sliders (travel) and rockers pinned to the ground (angle)."""
     for d in mech.dyads:
@@ -170,7 +199,11 @@ def _outputs(mech: Mechanism, kin):
             yield d.b, np.asarray(sm.s), np.asarray(sm.v)
         if isinstance(d, RRR | RPR) and split_ref(d.pin_b)[0] == GROUND:
             b = kin.body(d.b)
-            yield d.b, np.unwrap(np.asarray(b.angle)), np.asarray(b.omega)
+            angle = np.asarray(b.angle)
+            good = np.isfinite(angle)
+            unwrapped = np.full(angle.shape, np.nan)
+            unwrapped[good] = np.unwrap(angle[good])  # NaN (not assembled) would spread through unwrap
+            yield d.b, unwrapped, np.asarray(b.omega)
 
 
 def _time_ratio(limits: list, full_rotation: bool) -> float | None:

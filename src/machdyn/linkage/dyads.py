@@ -207,7 +207,9 @@ def rpr_motion(P: PointState, Q: PointState, a_pin, b_pin, slide_local, slide_an
     dx, dy = P.x - Q.x, P.y - Q.y
     D = np.hypot(dx, dy)
     ratio = e / D
-    assembled = np.abs(ratio) <= 1.0 + ASSEMBLY_TOL
+    # The block's pin on the rocker's pivot (D = 0) leaves the rocker free to turn: a singular position.
+    coincident = D == 0.0
+    assembled = (np.abs(ratio) <= 1.0 + ASSEMBLY_TOL) | coincident
     shift = np.arcsin(np.clip(np.where(assembled, ratio, np.nan), -1.0, 1.0))
     psi = np.arctan2(dy, dx) - (shift if branch == 1 else np.pi - shift)
     ux, uy = np.cos(psi), np.sin(psi)
@@ -232,7 +234,8 @@ def rpr_motion(P: PointState, Q: PointState, a_pin, b_pin, slide_local, slide_an
     def transmission():
         return np.arcsin(np.clip(np.abs(det) / D, 0.0, 1.0))
 
-    return DyadMotion(block, rocker, assembled, det / D, transmission, {"a": (t, dt, ddt)})
+    det = np.where(coincident, 0.0, det / D) if np.any(coincident) else det / D
+    return DyadMotion(block, rocker, assembled, det, transmission, {"a": (t, dt, ddt)})
 
 
 def prp_motion(Si: BodyState, g1_local, g1_angle, Sj: BodyState, g2_local, g2_angle, a_inner, b_inner) -> DyadMotion:

@@ -48,4 +48,8 @@ def harmonics(values, crank_angle, orders: int = 6) -> Harmonics:
     # Samples start at phi[0], not 0: shift the phase so it refers to phi = 0.
     k = np.arange(orders + 1)
     spectrum = spectrum[..., : orders + 1] * np.exp(-1j * k * phi[0])
-    return Harmonics(k[1:], spectrum[..., 0].real, 2.0 * np.abs(spectrum[..., 1:]), np.angle(spectrum[..., 1:]))
+    amplitude = 2.0 * np.abs(spectrum[..., 1:])
+    # The phase of an order that is absent is rounding noise: report 0 for orders below 1e-12 of the largest.
+    floor = 1e-12 * np.max(amplitude, axis=-1, keepdims=True)
+    phase = np.where(amplitude > floor, np.angle(spectrum[..., 1:]), 0.0)
+    return Harmonics(k[1:], spectrum[..., 0].real, amplitude, phase)

@@ -270,7 +270,8 @@ def _solve_dyad(mech: Mechanism, d, states) -> dy.DyadMotion:
 
 
 def angle_ranges(phi: np.ndarray, mask: np.ndarray) -> list[tuple[float, float]]:
-    """Contiguous runs of ``mask`` over sorted crank angles ``phi`` as (start, end) [rad] pairs."""
+    """Contiguous runs of ``mask`` over sorted crank angles ``phi`` as (start, end) [rad] pairs. Over a full
+    revolution sampled evenly, a run through 0 is one range with start > end (e.g. 330°–30°)."""
     phi = np.asarray(phi, dtype=float).ravel()
     mask = np.asarray(mask, dtype=bool).ravel()
     order = np.argsort(phi)
@@ -283,6 +284,9 @@ def angle_ranges(phi: np.ndarray, mask: np.ndarray) -> list[tuple[float, float]]
             end = i if flag else i - 1
             runs.append((float(phi[start]), float(phi[end])))
             start = None
+    full_turn = len(phi) > 2 and np.allclose(np.diff(phi), 2 * np.pi / len(phi), rtol=1e-9, atol=1e-12)
+    if full_turn and len(runs) > 1 and mask[0] and mask[-1]:
+        runs = [(runs[-1][0], runs[0][1])] + runs[1:-1]
     return runs
 
 
@@ -298,10 +302,24 @@ def format_ranges(ranges, limit: int = 6) -> str:
     return ", ".join(parts)
 
 
+#: |normalised determinant| (the sine of the transmission angle) below which a position counts as dead: there
+#: velocities are amplified by more than 1e10 and carry no significant digits of the input.
+DEAD_TOL = 1e-10
+
+
+def singular(reports, shape) -> np.ndarray:
+    """True where any dyad is at (or within rounding of) a dead position, or its determinant is not finite."""
+    out = np.zeros(shape, dtype=bool)
+    for rep in reports:
+        det = rep.det
+        out |= np.broadcast_to(~(np.abs(det) >= DEAD_TOL), shape)
+    return out
+
+
 def _check_not_dead(mech: Mechanism, phi, reports, shape) -> None:
     """Raise :class:`SingularPositionError` at a dead (toggle) position, where velocities are unbounded."""
     for rep in reports:
-        dead = np.broadcast_to(rep.det == 0.0, shape)
+        dead = np.broadcast_to(~(np.abs(rep.det) >= DEAD_TOL), shape)
         if np.any(dead):
             at = np.broadcast_to(phi, shape)[dead]
             text = ", ".join(f"{np.degrees(a):.2f}°" for a in np.unique(at)[:6])

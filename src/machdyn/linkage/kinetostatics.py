@@ -17,7 +17,7 @@ from ..errors import InputError
 from . import dyads as dy
 from .kinematics import Kinematics, _col, _local, kinematics
 from .loads import applied_forces, applied_torques, mass_elements, spring_states
-from .model import GROUND, PRP, RPR, RRP, RRR, Mechanism, split_ref
+from .model import GROUND, PRP, RPR, RRP, RRR, Mechanism, joints, split_ref
 
 
 @dataclass(frozen=True)
@@ -170,12 +170,11 @@ def kinetostatics(
     states = kin.bodies
     loads, frame = body_loads(kin)
     reactions: dict = {}
-    joint_list: list[Joint] = []
+    joint_list = tuple(Joint(*j) for j in joints(mech))
+    key_of = {(j.name.split(":")[0], j.body_2): j.name for j in joint_list}
 
     def record(name, kind, body_1, body_2, reaction):
-        key = name if name not in reactions else f"{name}:{body_2}"
-        reactions[key] = reaction
-        joint_list.append(Joint(key, kind, body_1, body_2))
+        reactions[key_of[(name, body_2)]] = reaction
 
     def point_of(ref):
         body, point = split_ref(ref)
@@ -252,12 +251,11 @@ def kinetostatics(
     record(split_ref(mech.crank.pivot)[1], "R", GROUND, crank, Reaction(-cfx, -cfy))
     frame.force_at(O.x, O.y, cfx, cfy)
     frame.couple(-torque)
-    joint_list.reverse()
     shape = kin.shape
     ordered = {j.name: _broadcast_reaction(reactions[j.name], shape) for j in joint_list}
     return Forces(
         kin,
-        tuple(joint_list),
+        joint_list,
         ordered,
         np.broadcast_to(torque, shape),
         np.broadcast_to(frame.fx, shape),

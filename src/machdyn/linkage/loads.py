@@ -14,8 +14,8 @@ from .state import PointState
 
 def window(phi, active: tuple[float, float] | None):
     """1 where the crank angle phi [rad] lies in ``active`` = (start, end) [rad] (wrapping through 2*pi
-    when start > end), else 0; 1 everywhere without a window."""
-    if active is None:
+    when start > end), else 0; 1 everywhere without a window or for a window of a full turn or more."""
+    if active is None or active[1] - active[0] >= 2.0 * np.pi:
         return 1.0
     start, end = (a % (2.0 * np.pi) for a in active)
     p = np.mod(phi, 2.0 * np.pi)

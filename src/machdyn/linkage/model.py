@@ -250,7 +250,9 @@ def split_ref(ref: str) -> tuple[str, str]:
 
 
 def joints(mech: Mechanism) -> list[tuple[str, str, str, str]]:
-    """Every joint as (name, kind 'R' or 'P', body 1, body 2), body 1 being the earlier (known) body."""
+    """Every joint as (name, kind 'R' or 'P', body 1, body 2), body 1 being the earlier (known) body, in
+    solution order. A name used by several joints (two rods on one crank pin 'A') is kept for the first and
+    written 'A:body2' for the others."""
     out = [(mech.crank.pivot.split(".")[1], "R", GROUND, mech.crank.body)]
     for d in mech.dyads:
         if isinstance(d, RRR):
@@ -277,7 +279,13 @@ def joints(mech: Mechanism) -> list[tuple[str, str, str, str]]:
                 (f"{d.b}/{d.guide_b.body}", "P", d.guide_b.body, d.b),
                 (d.inner, "R", d.a, d.b),
             ]
-    return out
+    seen: set[str] = set()
+    unique = []
+    for name, kind, body_1, body_2 in out:
+        key = name if name not in seen else f"{name}:{body_2}"
+        seen.add(key)
+        unique.append((key, kind, body_1, body_2))
+    return unique
 
 
 # ---------------------------------------------------------------------------------------------- validation
@@ -292,6 +300,14 @@ def validate(mech: Mechanism, sizes: set[int]) -> None:
     dupes = sorted({n for n in names if names.count(n) > 1})
     if dupes:
         raise InputError(f"Body names must be unique in {label}; got {', '.join(dupes)} more than once.")
+    # Point masses are reported beside the bodies (kinetic energy per name): their names must not clash.
+    mass_names = names + [pm.name for pm in mech.point_masses]
+    clash = sorted({n for n in mass_names if mass_names.count(n) > 1} - set(dupes))
+    if clash:
+        raise InputError(
+            f"Point-mass names must differ from each other and from body names in {label}; "
+            f"got {', '.join(clash)} more than once."
+        )
     for b in mech.bodies:
         check_positive(f"mass of body '{b.name}'", b.mass, "kg", allow_zero=True)
         check_positive(f"moment of inertia of body '{b.name}'", b.inertia, "kg*m^2", allow_zero=True)

@@ -9,7 +9,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from .kinematics import kinematics
+from .averages import time_mean, time_rms
+from .kinematics import kinematics, singular
 from .kinetostatics import kinetostatics
 from .model import Mechanism
 
@@ -22,10 +23,13 @@ DEFAULT_CHUNK_POSITIONS = 1 << 17
 class SweepResult:
     """Per-design summaries over the crank angles of a sweep (arrays of length N designs).
 
-    ``assembled`` is False for designs that cannot close at some crank angle; their summaries are NaN.
+    ``assembled`` is False for designs that cannot close at some crank angle; ``regular`` is False for those
+    and for designs that pass a dead (toggle) position; the summaries of designs that are not regular are NaN.
+    Mean power and RMS torque are averages over time (see :mod:`machdyn.linkage.averages`).
     """
 
     assembled: np.ndarray
+    regular: np.ndarray
     max_driving_torque: np.ndarray
     rms_driving_torque: np.ndarray
     mean_input_power: np.ndarray
@@ -58,9 +62,13 @@ def sweep(
     out = None
     for start in range(0, n, per_chunk):
         stop = min(n, start + per_chunk)
-        sub = mech.take_designs(slice(start, stop)) if mech.design_count else mech
+        part_of = slice(start, stop)
+        sub = mech.take_designs(part_of) if mech.design_count else mech
         with np.errstate(all="ignore"):
-            kin = kinematics(sub, phi, speed, acceleration, on_fail="mask")
+            kin = kinematics(
+                sub, phi, _per_design(speed, phi, n, part_of), _per_design(acceleration, phi, n, part_of),
+                on_fail="mask",
+            )
             forces = kinetostatics(sub, kinematics_result=kin)
             part = _summaries(forces, shaking_about)
         if out is None:
@@ -76,6 +84,14 @@ def sweep(
     return SweepResult(positions=n * phi.size, **out)
 
 
+def _per_design(value, phi, n, part):
+    """The chunk's share of a speed or acceleration given per design (an (N,) array not shaped like phi)."""
+    arr = np.asarray(value, dtype=float)
+    if arr.ndim == 1 and arr.shape != phi.shape and arr.size == n:
+        return arr[part]
+    return value
+
+
 def _alloc(v, n):
     if isinstance(v, dict):
         return {k: np.empty(n) for k in v}
@@ -84,18 +100,23 @@ def _alloc(v, n):
 
 def _summaries(forces, about) -> dict:
     kin = forces.kinematics
-    ok = np.atleast_2d(kin.assembled).all(axis=-1)
+    assembled = np.atleast_2d(kin.assembled).all(axis=-1)
+    # A design that passes a dead position has unbounded results there: its summaries are NaN too.
+    regular = ~np.atleast_2d(singular(kin.dyad_reports, kin.shape)).any(axis=-1)
+    torque = np.atleast_2d(forces.driving_torque)
+    ok = assembled & regular & np.isfinite(torque).all(axis=-1)
     bad = np.where(ok, 0.0, np.nan)
 
     def peak(values):
         return np.nanmax(np.abs(np.atleast_2d(values)), axis=-1) + bad
 
-    torque = np.atleast_2d(forces.driving_torque)
     return {
-        "assembled": ok,
+        "assembled": assembled,
+        "regular": ok,
         "max_driving_torque": peak(torque),
-        "rms_driving_torque": np.sqrt(np.nanmean(torque * torque, axis=-1)) + bad,
-        "mean_input_power": np.nanmean(np.atleast_2d(forces.input_power), axis=-1) + bad,
+        "rms_driving_torque": np.atleast_1d(time_rms(np.where(np.isfinite(torque), torque, 0.0), kin)) + bad,
+        "mean_input_power": np.atleast_1d(
+            time_mean(np.where(np.isfinite(torque), np.atleast_2d(forces.input_power), 0.0), kin)) + bad,
         "max_joint_force": {name: peak(r.magnitude) for name, r in forces.reactions.items()},
         "max_shaking_force": peak(forces.shaking_force),
         "max_shaking_moment": peak(forces.shaking_moment(about)),

@@ -18,6 +18,7 @@ import numpy as np
 import pandas as pd
 
 from ..linkage import model as _model
+from ..linkage.averages import time_mean, time_rms
 
 ANGLE_COLUMN = "crank_angle [deg]"
 DESIGN_COLUMN = "design"
@@ -340,9 +341,10 @@ def analysis_scalars(analysis: Any, mechanism: _model.Mechanism | None = None) -
     put("driving_torque.max_abs", _reduce(torque, "max_abs", designs), "N*m")
     put("driving_torque.max", _reduce(torque, "max", designs), "N*m")
     put("driving_torque.min", _reduce(torque, "min", designs), "N*m")
-    put("driving_torque.mean", _reduce(torque, "mean", designs), "N*m")
-    put("driving_torque.rms", _reduce(torque, "rms", designs), "N*m")
-    put("input_power.mean", _reduce(forces.input_power, "mean", designs), "W")
+    # Means and RMS over time, not over crank angle: they differ when the crank speed varies.
+    put("driving_torque.mean", _scalar(time_mean(torque, kin), designs), "N*m")
+    put("driving_torque.rms", _scalar(time_rms(torque, kin), designs), "N*m")
+    put("input_power.mean", _scalar(time_mean(forces.input_power, kin), designs), "W")
     put("input_power.max", _reduce(forces.input_power, "max", designs), "W")
     put("input_power.min", _reduce(forces.input_power, "min", designs), "W")
     for name, _kind, _b1, _b2 in joint_list(forces):
