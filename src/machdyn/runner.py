@@ -54,12 +54,14 @@ class RunResult:
     mechanism: Any = None
     details: Any = None
     extra_html_sections: list[Any] = field(default_factory=list)
+    sweep_frame: Any = None
     _frames: dict[str, Any] | None = field(default=None, repr=False)
 
     @property
     def frames(self) -> dict[str, Any]:
         """Time series as pandas DataFrames by name (``motion``, ``joint_forces``, ``torque_power``,
-        ``shaking``, ``energy``); empty for problems without a crank cycle."""
+        ``shaking``, ``energy``; ``sweep`` with one row per design variant when the problem has a sweep);
+        empty for problems without a crank cycle."""
         if self._frames is None:
             if self.analysis is None:
                 self._frames = {}
@@ -70,6 +72,8 @@ class RunResult:
                 about = tuple(self.problem.output.shaking_moment_about)
                 if about != (0.0, 0.0):
                     frames["shaking"] = shaking_frame(self.analysis.forces, None, about=about)
+                if self.sweep_frame is not None:
+                    frames["sweep"] = self.sweep_frame  # one row per design variant
                 self._frames = frames
         return self._frames
 
@@ -153,6 +157,8 @@ def check_problem(problem: Any) -> list[str]:
     mech = _mechanism_of(problem)
     angles, speed, accel = _angles_and_speed(problem)
     kinematics(mech, angles, speed, accel, on_fail="raise")
+    if getattr(problem, "sweep", None) is not None:
+        _sweep_variants(problem)  # every value valid and every variant buildable
     try:
         return list(diagnose(mech).warnings)
     except (InputError, SingularPositionError):
@@ -312,7 +318,104 @@ def run_linkage(problem, text: str, step: Step = _no_step) -> RunResult:
     mech = build_mechanism(problem)
     analysis, messages = _analyse(problem, mech, step)
     result = _linkage_result(problem, mech, analysis, _default_mass_warnings(problem) + messages, text, "mechanism")
+    if problem.sweep is not None:
+        step("design sweep")
+        _add_sweep(result, problem)
     return result
+
+
+# ------------------------------------------------------------------------------------------- sweeps
+
+#: Per-design summaries of a sweep: (attribute of SweepResult, label, unit).
+SWEEP_SUMMARIES = (
+    ("max_driving_torque", "Peak driving torque", "N*m"),
+    ("rms_driving_torque", "RMS driving torque", "N*m"),
+    ("mean_input_power", "Mean input power", "W"),
+    ("max_shaking_force", "Peak shaking force", "N"),
+    ("max_shaking_moment", "Peak shaking moment", "N*m"),
+)
+
+
+def _sweep_variants(problem):
+    """The expanded sweep of a problem and the engine model of each variant."""
+    from .problem.build import build_mechanism
+    from .problem.sweep import expand_sweep
+
+    plan = expand_sweep(problem)
+    mechs, problems = [], []
+    for i, variant in enumerate(plan.problems):
+        try:
+            mechs.append(build_mechanism(variant))
+        except ProblemFileError as exc:
+            problems += [(f"sweep (value {i + 1})", f"{path}: {msg}") for path, msg in exc.problems]
+    if problems:
+        raise ProblemFileError(problems)
+    return plan, mechs
+
+
+def run_sweep(problem):
+    """The design variants of a problem's ``[sweep]``, analysed together: (plan, SweepResult)."""
+    import numpy as np
+
+    from .linkage import stack_designs, sweep
+
+    plan, mechs = _sweep_variants(problem)
+    angles, _, _ = _angles_and_speed(problem)
+    speeds = np.array([v.drive.speed for v in plan.problems])
+    accels = np.array([v.drive.acceleration for v in plan.problems])
+    stacked = stack_designs(mechs)
+    speed = speeds if np.ptp(speeds) > 0 else float(speeds[0])
+    accel = accels if np.ptp(accels) > 0 else float(accels[0])
+    if np.ndim(speed) and np.size(speed) == np.size(angles):
+        raise ProblemFileError([("sweep", "a sweep of the drive needs a number of values different from "
+                                          f"drive.positions ({np.size(angles)}); got as many")])
+    about = tuple(problem.output.shaking_moment_about)
+    return plan, sweep(stacked, angles, speed, accel, shaking_about=about)
+
+
+def _add_sweep(result: RunResult, problem) -> None:
+    import numpy as np
+
+    from .report.html import sweep_section
+
+    plan, res = run_sweep(problem)
+    unit = plan.display_unit
+    n = len(plan.values_display)
+    regular = np.asarray(res.regular, dtype=bool)
+    result.scalars[f"sweep.{plan.parameter}"] = {"value": [float(v) for v in plan.values_display], "unit": unit}
+    result.scalars["sweep.regular"] = {"value": [bool(v) for v in regular], "unit": ""}
+    for attr, _label, u in SWEEP_SUMMARIES:
+        result.scalars[f"sweep.{attr}"] = {"value": [float(v) for v in getattr(res, attr)], "unit": u}
+    rows = [(f"Sweep of {plan.parameter}", f"{n} designs, {int(regular.sum())} regular", "")]
+    if regular.any():
+        for attr, label, u in (SWEEP_SUMMARIES[0], SWEEP_SUMMARIES[3]):
+            data = np.where(regular, getattr(res, attr), np.inf)
+            best = int(np.argmin(data))
+            rows.append((f"Sweep: lowest {label.lower()} (at {plan.parameter} = "
+                         f"{plan.values_display[best]:.6g} {unit})", float(data[best]), u))
+    else:
+        result.warnings.append(f"No design of the sweep of {plan.parameter} is regular: each fails to assemble "
+                               "or passes a dead position somewhere in the crank range.")
+    result.summary_rows += rows
+    result.extra_html_sections.append(
+        (f"Design sweep of {plan.parameter}", sweep_section(plan.parameter, unit, plan.values_display, res))
+    )
+    result.sweep_frame = _sweep_frame(plan, res)
+
+
+def _sweep_frame(plan, res):
+    import pandas as pd
+
+    columns = {
+        f"{plan.parameter} [{plan.display_unit}]": plan.values_display,
+        "assembled": res.assembled,
+        "regular": res.regular,
+    }
+    for attr, _label, unit in SWEEP_SUMMARIES:
+        columns[f"{attr} [{unit}]"] = getattr(res, attr)
+    for joint, values in res.max_joint_force.items():
+        columns[f"joint.{joint}.max_force [N]"] = values
+    return pd.DataFrame(columns)
 
 
 # ------------------------------------------------------------------------------------- rotary screen

@@ -85,8 +85,9 @@ def _doc_blocks() -> list[str]:
 
 def test_the_documented_files_are_valid():
     blocks = _doc_blocks()
-    linkage, custom, screen = blocks
+    linkage, custom, sweep, screen = blocks
     assert check_problem(load_problem(linkage)) is not None
+    assert check_problem(load_problem(linkage + "\n" + sweep)) is not None
     drive = '[drive]\nspeed = "60 rpm"\n'
     assert check_problem(load_problem(custom + drive)) is not None
     assert check_problem(load_problem(screen)) is not None

@@ -22,6 +22,7 @@ from .model import (
     PointMass,
     Spring,
     joints,
+    stack_designs,
 )
 from .state import BodyState, PointState
 from .sweep import SweepResult, sweep
@@ -31,5 +32,5 @@ __all__ = [
     "Forces", "Guide", "Harmonics", "Joint", "Kinematics", "Mechanism", "PointForce", "PointMass", "PointState",
     "Reaction", "SlideMotion", "Spring", "SweepResult", "WorkBalance", "analyse", "angle_ranges", "crank_angles",
     "diagnose", "double_slider_crank", "energy", "four_bar", "grashof_type", "harmonics", "inverted_slider_crank",
-    "joints", "kinematics", "kinetostatics", "six_bar", "slider_crank", "sweep",
+    "joints", "kinematics", "kinetostatics", "six_bar", "slider_crank", "stack_designs", "sweep",
 ]

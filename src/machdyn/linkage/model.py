@@ -443,3 +443,47 @@ def _take(obj: Any, index, n: int | None):
     if isinstance(obj, tuple):
         return tuple(_take(v, index, n) for v in obj)
     return obj
+
+
+def stack_designs(variants: list[Mechanism] | tuple[Mechanism, ...], name: str | None = None) -> Mechanism:
+    """One mechanism whose numeric parameters are arrays over ``variants``: design variants that share their
+    structure (bodies, points, dyads, loads) and differ in numbers, analysed together in one vectorised call.
+
+    Parameters equal in every variant stay scalars. Raises :class:`InputError` if the variants differ in
+    structure (names, dyad types, branches, load functions).
+    """
+    variants = list(variants)
+    if not variants:
+        raise InputError("stack_designs needs at least one mechanism; got none.")
+    if any(v.design_count is not None for v in variants):
+        raise InputError("stack_designs takes single designs; one of the mechanisms already has design arrays.")
+    first = variants[0]
+    stacked = _stack([v for v in variants], "mechanism")
+    return replace(stacked, name=name or first.name)
+
+
+def _stack(items: list, path: str):
+    first = items[0]
+    numbers = all(isinstance(v, int | float) and not isinstance(v, bool) for v in items)
+    if numbers and not path.endswith(".branch"):  # the assembly branch is structure, not a parameter
+        values = np.array([float(v) for v in items])
+        return float(values[0]) if np.all(values == values[0]) else values
+    if is_dataclass(first) and not isinstance(first, type):
+        if any(type(v) is not type(first) for v in items):
+            raise InputError(f"The design variants differ in structure at {path}: {type(first).__name__} vs others.")
+        changes = {
+            f.name: _stack([getattr(v, f.name) for v in items], f"{path}.{f.name}") for f in fields(first) if f.init
+        }
+        return replace(first, **changes)
+    if isinstance(first, Mapping):
+        if any(list(v.keys()) != list(first.keys()) for v in items):
+            raise InputError(f"The design variants differ in structure at {path}: different names.")
+        return {k: _stack([v[k] for v in items], f"{path}.{k}") for k in first}
+    if isinstance(first, tuple):
+        if any(len(v) != len(first) for v in items):
+            raise InputError(f"The design variants differ in structure at {path}: different numbers of items.")
+        return tuple(_stack([v[i] for v in items], f"{path}[{i}]") for i in range(len(first)))
+    if any(v != first for v in items):
+        other = next(v for v in items if v != first)
+        raise InputError(f"The design variants differ in structure at {path}: {first!r} vs {other!r}.")
+    return first

@@ -57,7 +57,10 @@ def sweep(
     phi = np.asarray(crank_angle, dtype=float)
     if phi.ndim != 1:
         raise InputError(f"The sweep needs a 1-D array of crank angles; got shape {phi.shape}.")
-    n = mech.design_count or 1
+    n = _design_count(mech, phi, speed, acceleration)
+    if mech.design_count is None and n > 1:
+        # Variants that differ only in their drive: one speed (and acceleration) per design, as columns.
+        speed, acceleration = (_as_column(v, phi, n) for v in (speed, acceleration))
     per_chunk = max(1, int(chunk_positions) // max(phi.size, 1))
     out = None
     for start in range(0, n, per_chunk):
@@ -84,10 +87,29 @@ def sweep(
     return SweepResult(positions=n * phi.size, **out)
 
 
+def _design_count(mech: Mechanism, phi, speed, acceleration) -> int:
+    """N designs: from the mechanism's arrays, or from a speed/acceleration given per design."""
+    if mech.design_count is not None:
+        return mech.design_count
+    sizes = {np.size(v) for v in (speed, acceleration) if np.ndim(v) == 1 and np.shape(v) != phi.shape}
+    if len(sizes) > 1:
+        raise InputError(f"Speed and acceleration per design must have the same length; got {sorted(sizes)}.")
+    return sizes.pop() if sizes else 1
+
+
+def _as_column(value, phi, n):
+    arr = np.asarray(value, dtype=float)
+    if arr.ndim == 1 and arr.shape != phi.shape and arr.size == n:
+        return arr[:, None]
+    return value
+
+
 def _per_design(value, phi, n, part):
     """The chunk's share of a speed or acceleration given per design (an (N,) array not shaped like phi)."""
     arr = np.asarray(value, dtype=float)
     if arr.ndim == 1 and arr.shape != phi.shape and arr.size == n:
+        return arr[part]
+    if arr.ndim == 2 and arr.shape[0] == n:
         return arr[part]
     return value
 

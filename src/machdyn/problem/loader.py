@@ -19,7 +19,7 @@ from .schema import LinkageProblem
 
 #: The main table of each kind of problem and the other top-level tables it may have.
 KINDS: dict[str, tuple[str, ...]] = {
-    "mechanism": ("meta", "mechanism", "drive", "loads", "counterweights", "output"),
+    "mechanism": ("meta", "mechanism", "drive", "loads", "counterweights", "output", "sweep"),
     "rotary_screen": ("meta", "rotary_screen", "drive", "output"),
     "screw_conveyor": (),  # the conveyor's own loader checks its tables
 }

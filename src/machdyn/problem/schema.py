@@ -28,6 +28,7 @@ from .fields import (
     Stiffness,
     Torque,
 )
+from .sweep import SweepSpec
 
 
 class Spec(BaseModel):
@@ -355,7 +356,7 @@ class OutputSpec(Spec):
 
 class LinkageProblem(Spec):
     """A generic linkage problem: ``[meta]``, ``[mechanism]``, ``[drive]``, ``[loads]``,
-    ``[[counterweights]]`` and ``[output]``."""
+    ``[[counterweights]]``, ``[output]`` and optionally ``[sweep]`` (design variants)."""
 
     meta: Meta = Meta()
     mechanism: Annotated[MechanismSpec, Field(discriminator="type")]
@@ -363,3 +364,4 @@ class LinkageProblem(Spec):
     loads: LoadsSpec = LoadsSpec()
     counterweights: list[CounterweightSpec] = []
     output: OutputSpec = OutputSpec()
+    sweep: SweepSpec | None = None

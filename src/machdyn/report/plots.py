@@ -708,3 +708,33 @@ def plot_harmonics(
     ax.grid(True, axis="y", alpha=0.35, linewidth=0.6)
     ax.set_axisbelow(True)
     return _finish(ax, title)
+
+
+def plot_sweep(
+    ax: Axes,
+    values: Any,
+    summary: Any,
+    *,
+    parameter: str,
+    parameter_unit: str,
+    quantity: str,
+    unit: str,
+    regular: Any = None,
+    colour: str = PALETTE[0],
+) -> Axes:
+    """A per-design summary of a design sweep (:func:`machdyn.linkage.sweep`) against the swept parameter.
+
+    Designs that are not regular (cannot assemble, or pass a dead position) have no summary and are marked
+    with a cross on the axis."""
+    x = np.asarray(values, dtype=float)
+    y = np.asarray(summary, dtype=float)
+    ok = np.isfinite(y) if regular is None else np.asarray(regular, dtype=bool) & np.isfinite(y)
+    ax.plot(x[ok], y[ok], color=colour, linewidth=1.7, marker="o" if ok.sum() <= 40 else None, markersize=3.5,
+            label=quantity)
+    if np.any(~ok):
+        ax.plot(x[~ok], np.zeros(int((~ok).sum())), linestyle="none", marker="x", color=PALETTE[1],
+                label="not regular (no summary)")
+    ax.set_xlabel(f"{parameter} [{parameter_unit}]")
+    ax.set_ylabel(f"{quantity} [{unit}]")
+    ax.grid(True, alpha=0.35)
+    return _finish(ax, quantity, legend=bool(np.any(~ok)))
