@@ -243,6 +243,8 @@ def run(
             paths = result.write(out, step=progress.step)
         except OSError as exc:
             raise _fail(f"error: cannot write the outputs to '{out}': {exc.strerror or exc}", EXIT_FAILED) from None
+        except MachdynError as exc:
+            raise _fail(f"error: the outputs of {file} could not be produced: {exc}", EXIT_FAILED) from None
     if quiet:
         return
     _print_rows(result.summary_rows, format, result.title, result.warnings)

@@ -24,7 +24,7 @@ from markupsafe import Markup, escape
 from .. import __version__
 from ..linkage import model as _model
 from . import plots
-from .tables import _full_uniform_cycle, _slider_bodies, joint_list, mechanism_of
+from .tables import _full_uniform_cycle, _slider_bodies, includes_end_point, joint_list, mechanism_of
 
 _ENV = jinja2.Environment(
     loader=jinja2.PackageLoader("machdyn.report", "templates"),
@@ -418,7 +418,7 @@ def _torque_harmonics(forces: Any, kin: Any):
     from ..linkage.harmonics import harmonics
 
     phi = np.asarray(kin.crank_angle, dtype=float).ravel()
-    if np.isclose(phi[-1] - phi[0], 2 * np.pi):
+    if includes_end_point(phi):
         phi, torque = phi[:-1], torque[:-1]
     orders = min(10, phi.size // 2 - 1)
     return harmonics(torque, phi, orders=orders) if orders >= 1 else None

@@ -287,8 +287,17 @@ def _full_uniform_cycle(angle: np.ndarray) -> bool:
     step = np.diff(a)
     if not np.allclose(step, step[0], rtol=1e-6, atol=1e-12) or step[0] <= 0:
         return False
-    span = a[-1] - a[0]
-    return bool(np.isclose(span, 2 * np.pi, rtol=1e-6) or np.isclose(span + step[0], 2 * np.pi, rtol=1e-6))
+    return includes_end_point(a) or bool(abs(a[-1] - a[0] + step[0] - 2 * np.pi) <= 0.5 * step[0])
+
+
+def includes_end_point(angle: Any) -> bool:
+    """True if evenly spaced crank angles repeat the first angle one turn later (span of 2 pi), judged against
+    half a step so that fine samplings (a step below the tolerance of a relative test) are told apart."""
+    a = np.asarray(angle, dtype=float).ravel()
+    if a.size < 2:
+        return False
+    step = a[1] - a[0]
+    return bool(abs(a[-1] - a[0] - 2 * np.pi) <= 0.5 * step)
 
 
 def flywheel_energy_fluctuation(torque: Any, crank_angle: Any) -> np.ndarray:
@@ -297,8 +306,7 @@ def flywheel_energy_fluctuation(torque: Any, crank_angle: Any) -> np.ndarray:
     phi = np.asarray(crank_angle, dtype=float).ravel()
     t = np.asarray(torque, dtype=float)
     step = phi[1] - phi[0]
-    closed = np.isclose(phi[-1] - phi[0], 2 * np.pi, rtol=1e-6)
-    samples = t[..., :-1] if closed else t
+    samples = t[..., :-1] if includes_end_point(phi) else t
     dev = samples - np.nanmean(samples, axis=-1, keepdims=True)
     work = np.cumsum(dev, axis=-1) * step
     work = np.concatenate([np.zeros(work.shape[:-1] + (1,)), work], axis=-1)
