@@ -192,6 +192,7 @@ def _summary_from_scalars(scalars: dict[str, dict[str, Any]], about: tuple[float
         ("driving_torque.mean", "Driving torque, mean"),
         ("input_power.mean", "Input power, mean"),
         ("input_power.max", "Input power, peak"),
+        ("input_power.min", "Input power, minimum (negative: power flows back into the drive)"),
         ("shaking_force.max", "Shaking force, max"),
         ("shaking_moment.max_abs", f"Shaking moment about ({about[0]:g}, {about[1]:g}) m, max |M|"),
         ("kinetic_energy.max", "Kinetic energy, max"),
@@ -267,19 +268,26 @@ def _analyse(problem, mech, step: Step):
 
 
 def _linkage_result(problem, mech, analysis, messages, text: str, kind: str) -> RunResult:
+    import numpy as np
+
     from .report.tables import analysis_scalars
 
     about = tuple(problem.output.shaking_moment_about)
     scalars = analysis_scalars(analysis, mech)
     if about != (0.0, 0.0):
-        import numpy as np
-
         moment = analysis.forces.shaking_moment(about=about)
         scalars["shaking_moment.max_abs"] = {"value": float(np.nanmax(np.abs(moment))), "unit": "N*m"}
         scalars["shaking_moment.about_x"] = {"value": about[0], "unit": "m"}
         scalars["shaking_moment.about_y"] = {"value": about[1], "unit": "m"}
     scalars.update(_harmonic_scalars(analysis, about, problem.output.harmonics))
     warnings = list(messages)
+    balance = float(np.max(np.atleast_1d(analysis.work_balance.relative)))
+    if not balance < 1e-6:
+        warnings.append(
+            f"The work-energy balance over the analysed crank angles is off by {balance:.2g} (relative): the "
+            "crank speed and acceleration given are not consistent (a constant speed needs zero acceleration), "
+            "or the crank angles are too coarse for the trapezoidal rule over a partial range."
+        )
     diag = analysis.diagnostics
     for w in getattr(diag, "warnings", None) or []:
         if str(w) not in warnings:
@@ -297,7 +305,18 @@ def _default_mass_warnings(problem) -> list[str]:
 
     spec = problem.mechanism
     if isinstance(spec, CustomSpec):
-        return []
+        # Custom bodies have no bar to take defaults from: a mass without inertia or centre of mass is a point
+        # mass at the body's origin, which may not be what the author meant.
+        bare = [
+            f"mechanism.bodies[{i}] ('{b.name}')" for i, b in enumerate(spec.bodies)
+            if b.mass > 0.0 and not {"inertia", "com"} <= b.model_fields_set
+        ]
+        if not bare:
+            return []
+        return [
+            f"{', '.join(bare)}: mass given without inertia or com; taken as inertia 0 kg*m^2 about a centre of "
+            "mass at the body's origin (0, 0). Give inertia and com for a real link."
+        ]
     missing = [
         name for name in type(spec).model_fields
         if isinstance(getattr(spec, name), LinkSpec) and getattr(spec, name).mass is None

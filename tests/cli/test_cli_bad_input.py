@@ -190,3 +190,41 @@ def test_unwritable_output_is_an_analysis_failure(runner, tmp_path):
     assert result.exit_code == 1
     assert "cannot write the outputs" in result.stderr
     assert "Traceback" not in result.output
+
+
+
+def _write(tmp_path, text, name="p.toml"):
+    path = tmp_path / name
+    path.write_text(text)
+    return path
+
+
+def test_a_shaft_speed_in_hz_is_refused(runner, tmp_path):
+    result = runner.invoke(app, ["check", str(_write(tmp_path, GOOD_FOUR_BAR.replace('"120 rpm"', '"120 Hz"')))])
+    assert result.exit_code == 2
+    assert "drive.speed: must not be given in Hz, which is ambiguous for a shaft speed" in result.stderr
+
+
+def test_a_zero_speed_is_refused_by_check(runner, tmp_path):
+    result = runner.invoke(app, ["check", str(_write(tmp_path, GOOD_FOUR_BAR.replace('"120 rpm"', '"0 rpm"')))])
+    assert result.exit_code == 2
+    assert "drive.speed: must not be zero (the analysis divides by the crank speed); got 0 rad/s" in result.stderr
+
+
+def test_a_byte_order_mark_is_accepted(runner, tmp_path):
+    path = tmp_path / "bom.toml"
+    path.write_bytes(b"\xef\xbb\xbf" + GOOD_FOUR_BAR.encode())
+    result = runner.invoke(app, ["check", str(path)])
+    assert result.exit_code == 0, result.output
+
+
+def test_a_toggle_inside_the_crank_range_fails_naming_the_angles(runner, tmp_path):
+    """Four-bar 30/22/28/40 mm: coupler and rocker fall in line at +-90 deg, both sampled."""
+    path = _write(tmp_path,
+                  '[mechanism]\ntype = "four_bar"\ncrank = {length = "30 mm"}\ncoupler = {length = "22 mm"}\n'
+                  'rocker = {length = "28 mm"}\nground = {length = "40 mm"}\n'
+                  '[drive]\nspeed = "60 rpm"\npositions = 181\nstart = "-90 deg"\nstop = "90 deg"\n')
+    result = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "out"), "--quiet"])
+    assert result.exit_code == 1
+    assert "dead (toggle) or indeterminate position" in result.stderr and "-90.00°, 90.00°" in result.stderr
+    assert "Traceback" not in result.output

@@ -302,9 +302,10 @@ def format_ranges(ranges, limit: int = 6) -> str:
     return ", ".join(parts)
 
 
-#: |normalised determinant| (the sine of the transmission angle) below which a position counts as dead: there
-#: velocities are amplified by more than 1e10 and carry no significant digits of the input.
-DEAD_TOL = 1e-10
+#: |normalised determinant| (the sine of the transmission angle) below which a position counts as dead. At an
+#: exact toggle the closure discriminant rounds to ~1e-16 L^2, so the determinant (its square root) comes out
+#: ~1e-8, not 0; below 1e-6 velocities are amplified a millionfold and carry no trustworthy digits.
+DEAD_TOL = 1e-6
 
 
 def singular(reports, shape) -> np.ndarray:

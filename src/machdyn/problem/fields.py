@@ -52,6 +52,10 @@ def to_si(value: Any, meta: Unit) -> float:
         )
     if isinstance(value, int | float) and meta.unit:
         raise FieldError(f"needs a unit, like {_example(value, _hint(meta))}; got the bare number {value!r}")
+    if meta.kind == "angular_velocity" and isinstance(value, str) and "hz" in value.lower():
+        # pint reads 1 Hz as 1 rad/s, a factor 2 pi off from the revolutions per second a designer means.
+        raise FieldError(f"must not be given in Hz, which is ambiguous for a shaft speed (rev/s or rad/s?); "
+                         f"write rpm, rev/s or rad/s; got {_show(value)}")
     try:
         si = parse_quantity(value, meta.unit, field="value")
     except InputError as exc:

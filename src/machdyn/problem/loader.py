@@ -35,7 +35,7 @@ def read_text(source: str | os.PathLike) -> tuple[str, str | None]:
     ):
         path = Path(source)
         try:
-            return path.read_text(encoding="utf-8"), str(path)
+            return path.read_text(encoding="utf-8-sig"), str(path)  # a UTF-8 byte-order mark is dropped
         except FileNotFoundError:
             raise ProblemFileError([("", f"the problem file '{path}' does not exist")]) from None
         except IsADirectoryError:

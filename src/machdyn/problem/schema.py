@@ -286,6 +286,14 @@ class DriveSpec(Spec):
     start: Angle | None = None
     stop: Angle | None = None
 
+    @field_validator("speed")
+    @classmethod
+    def _moving(cls, speed):
+        # Energy rates, reduced quantities and the work balance divide by the crank speed.
+        if speed == 0.0:
+            raise FieldError("must not be zero (the analysis divides by the crank speed); got 0 rad/s")
+        return speed
+
     @field_validator("stop")
     @classmethod
     def _stop_after_start(cls, stop, info):
