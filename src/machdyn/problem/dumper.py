@@ -164,6 +164,13 @@ def _emit_array_item(model: BaseModel, path: str, lines: list[str]) -> None:
 def dump_problem(problem: BaseModel) -> str:
     """The TOML text of a linkage or rotary-screen problem, with units; ``load_problem`` reads it back to
     an equal problem."""
+    if not isinstance(problem, BaseModel):
+        from ..errors import InputError
+
+        raise InputError(
+            f"dump_problem writes linkage and rotary-screen problems; got a {type(problem).__name__}, whose "
+            "problem file is the one it was read from."
+        )
     lines: list[str] = []
     _emit(problem, "", lines, "")
     return "\n".join(lines).lstrip("\n") + "\n"
