@@ -223,5 +223,6 @@ def test_dump_problem_refuses_a_conveyor_problem_clearly():
     from machdyn.errors import InputError
     from machdyn.problem import dump_problem, load_problem
 
-    with pytest.raises(InputError, match="dump_problem writes linkage and rotary-screen problems; got a ConveyorProblem"):
+    message = "dump_problem writes linkage and rotary-screen problems; got a ConveyorProblem"
+    with pytest.raises(InputError, match=message):
         dump_problem(load_problem("examples/iodized_salt_conveyor.toml"))
