@@ -1,0 +1,52 @@
+"""Every shipped example's results.json matches the recorded one, value by value, to 1e-12 relative.
+
+The recorded files in ``tests/golden/`` were written by the analysis before the results stage was restructured;
+a result may since be stored in another unit of the same dimension (the conveyor now keeps SI), so values are
+compared after conversion with pint. New results may be added; none may disappear or change.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from machdyn.runner import run_problem
+from machdyn.units import ureg
+
+ROOT = Path(__file__).resolve().parents[1]
+GOLDEN = sorted((ROOT / "tests" / "golden").glob("*.results.json"))
+
+
+def _in_unit(value, unit_from: str, unit_to: str):
+    if unit_from == unit_to:
+        return value
+    factor = ureg.Quantity(1.0, unit_from or "dimensionless").to(unit_to or "dimensionless").magnitude
+    if isinstance(value, list):
+        return [v * factor for v in value]
+    return value * factor
+
+
+def _close(a, b) -> bool:
+    if isinstance(a, list):
+        return len(a) == len(b) and all(_close(x, y) for x, y in zip(a, b, strict=True))
+    if isinstance(a, bool | str) or a is None:
+        return a == b
+    return abs(a - b) <= 1e-12 * max(abs(a), abs(b)) + 1e-300
+
+
+@pytest.mark.parametrize("golden", GOLDEN, ids=lambda p: p.name.split(".")[0])
+def test_results_json_unchanged(golden: Path) -> None:
+    recorded = json.loads(golden.read_text(encoding="utf-8"))["scalars"]
+    example = ROOT / "examples" / (golden.name.split(".")[0] + ".toml")
+    now = run_problem(example).results()["scalars"]
+    missing = sorted(set(recorded) - set(now))
+    assert not missing, f"results no longer reported: {missing}"
+    changed = []
+    for key, old in recorded.items():
+        new = now[key]
+        value = _in_unit(new["value"], new["unit"], old["unit"]) if new["unit"] != old["unit"] else new["value"]
+        if not _close(old["value"], value):
+            changed.append((key, old, new))
+    assert not changed, f"results changed: {changed[:5]}"
