@@ -40,7 +40,7 @@ def _close(a, b) -> bool:
 def test_results_json_unchanged(golden: Path) -> None:
     recorded = json.loads(golden.read_text(encoding="utf-8"))["scalars"]
     example = ROOT / "examples" / (golden.name.split(".")[0] + ".toml")
-    now = run_problem(example).results()["scalars"]
+    now = run_problem(example).results_json()["scalars"]
     missing = sorted(set(recorded) - set(now))
     assert not missing, f"results no longer reported: {missing}"
     changed = []

@@ -1,8 +1,10 @@
 """The ``machdyn`` command: run and check problem files, copy out the shipped examples.
 
 Exit codes: 0 success; 1 the analysis failed on a valid problem (or the outputs could not be written);
-2 bad input (the problem file, the command line). Messages about bad input go to stderr, without a traceback.
-Heavy libraries (pandas, matplotlib) are imported only when a command needs them.
+2 bad input (the problem file, the command line); 3 the design fails one of its checks (the outputs are
+written and the failed checks listed); 4 an internal error (a short message; the traceback goes to a log file,
+or to the terminal with ``--debug``). Messages go to stderr, without a traceback. Heavy libraries (pandas,
+matplotlib) are imported only when a command needs them.
 """
 
 from __future__ import annotations
@@ -18,11 +20,16 @@ import typer
 
 from . import __version__
 
-EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT = 0, 1, 2
+EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT, EXIT_CHECKS_FAILED, EXIT_INTERNAL = 0, 1, 2, 3, 4
+
+EXIT_CODES_HELP = (
+    "Exit codes: 0 success; 1 the analysis failed; 2 bad input; 3 the design fails a check; 4 internal error."
+)
 
 app = typer.Typer(
     name="machdyn",
-    help="Analyse machine mechanisms and bulk-material machinery from problem files (TOML with units).",
+    help="Analyse machine mechanisms and bulk-material machinery from problem files (TOML with units). "
+    + EXIT_CODES_HELP,
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
@@ -134,8 +141,11 @@ def _cell(value: Any) -> str:
     return str(value)
 
 
-def _print_rows(rows: list[tuple[str, Any, str]], fmt: TableFormat, title: str, warnings: list[str]) -> None:
+def _print_rows(summary: Any, fmt: TableFormat, warnings: list[str]) -> None:
+    """Print a :class:`~machdyn.results.Summary` in the chosen format (JSON rows also carry the result key)."""
     out = _console()
+    title = summary.title
+    rows = summary.as_tuples()
     if fmt is TableFormat.table:
         from rich.table import Table
 
@@ -161,7 +171,9 @@ def _print_rows(rows: list[tuple[str, Any, str]], fmt: TableFormat, title: str, 
     elif fmt is TableFormat.json:
         from .outputs import json_text
 
-        data = {"problem": title, "summary": [{"quantity": q, "value": v, "unit": u or ""} for q, v, u in rows],
+        data = {"problem": title,
+                "summary": [{"key": r.key, "quantity": r.label, "value": r.value, "unit": r.unit or ""}
+                            for r in summary.rows],
                 "warnings": warnings}
         sys.stdout.write(json_text(data))
     else:
@@ -179,31 +191,53 @@ def _print_rows(rows: list[tuple[str, Any, str]], fmt: TableFormat, title: str, 
 
 
 def _load(file: Path):
-    """(problem, text) of a problem file, or exit 2 with every problem listed."""
+    """The loaded problem of a file, or exit 2 with every problem listed."""
     from .errors import ProblemFileError
-    from .problem import load_problem
-    from .problem.loader import read_text
+    from .problem.loader import read_problem
 
     try:
-        text, _ = read_text(file)
-        return load_problem(file), text
+        return read_problem(file)
     except ProblemFileError as exc:
         raise _fail(str(exc), EXIT_BAD_INPUT) from None
 
 
 def _engine_error(exc: Exception, file: Path) -> typer.Exit:
-    from .errors import AssemblyError, InputError, ProblemFileError
+    from .errors import AssemblyError, InputError, ProblemFileError, SingularPositionError
 
     if isinstance(exc, ProblemFileError):
         return _fail(str(exc), EXIT_BAD_INPUT)
     if isinstance(exc, AssemblyError):
         return _fail(f"1 problem(s) in {file}:\n  mechanism: cannot be assembled: {exc}", EXIT_BAD_INPUT)
+    if isinstance(exc, SingularPositionError):
+        return _fail(f"1 problem(s) in {file}:\n  mechanism: passes a dead position: {exc}", EXIT_BAD_INPUT)
     if isinstance(exc, InputError):
         return _fail(f"1 problem(s) in {file}:\n  {exc}", EXIT_BAD_INPUT)
     return _fail(f"error: the analysis of {file} failed: {type(exc).__name__}: {exc}", EXIT_FAILED)
 
 
-@app.command()
+def _internal_error(exc: BaseException, debug: bool) -> typer.Exit:
+    """A short message for an unexpected exception; the traceback goes to a log file (or the terminal)."""
+    import tempfile
+    import traceback
+
+    text = "".join(traceback.format_exception(exc))
+    if debug:
+        typer.echo(text, err=True)
+        return _fail(f"internal error: {type(exc).__name__}: {exc}", EXIT_INTERNAL)
+    try:
+        with tempfile.NamedTemporaryFile("w", prefix="machdyn-error-", suffix=".log", delete=False) as log:
+            log.write(text)
+        where = f"; the traceback is in {log.name}"
+    except OSError:
+        where = ""
+    return _fail(f"internal error: {type(exc).__name__}: {exc}{where} (run with --debug to show it). "
+                 "Please report it with the problem file.", EXIT_INTERNAL)
+
+
+DebugOpt = Annotated[bool, typer.Option("--debug", help="Show the traceback of an internal error.")]
+
+
+@app.command(epilog=EXIT_CODES_HELP)
 def run(
     file: FileArg,
     out: Annotated[
@@ -213,27 +247,34 @@ def run(
         TableFormat, typer.Option("--format", "-f", help="How the summary table is printed.")
     ] = TableFormat.table,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing but errors.")] = False,
+    debug: DebugOpt = False,
 ) -> None:
     """Analyse a problem file, print a summary table and write the outputs."""
-    from .errors import AssemblyError, InputError, MachdynError, ProblemFileError
+    try:
+        _run(file, out, format, quiet)
+    except (typer.Exit, KeyboardInterrupt):
+        raise
+    except Exception as exc:  # noqa: BLE001 - anything unexpected becomes exit 4 without a traceback
+        raise _internal_error(exc, debug) from None
 
-    steps = {
-        "mechanism": ["reading", "model", "analysis", "tables", "report"],
-        "rotary_screen": ["reading", "model", "analysis", "energy figures", "tables", "report"],
-        "screw_conveyor": ["reading", "design", "report"],
-    }
+
+def _run(file: Path, out: Path, format: TableFormat, quiet: bool) -> None:
+    from .errors import AssemblyError, InputError, MachdynError, ProblemFileError, SingularPositionError
+    from .kinds import steps_of
+
     started = time.perf_counter()
     show_progress = not quiet and sys.stderr.isatty()
-    with Progress(steps["mechanism"], enabled=show_progress) as progress:
+    with Progress(["reading"], enabled=show_progress) as progress:
         progress.step("reading")
-        problem, text = _load(file)
-        from .runner import problem_kind_of, run_problem
+        loaded = _load(file)
+        from .runner import run_problem
 
-        progress.steps = steps[problem_kind_of(problem)]
-
+        tables = tuple(name for name in type(loaded.spec).model_fields if getattr(loaded.spec, name, None)) \
+            if hasattr(type(loaded.spec), "model_fields") else ()
+        progress.steps = steps_of(loaded.kind, tables)
         try:
-            result = run_problem(problem, text=text, step=progress.step)
-        except (ProblemFileError, AssemblyError, InputError) as exc:
+            result = run_problem(loaded, step=progress.step)
+        except (ProblemFileError, AssemblyError, InputError, SingularPositionError) as exc:
             raise _engine_error(exc, file) from None
         except MachdynError as exc:
             raise _fail(f"error: the analysis of {file} failed: {exc}", EXIT_FAILED) from None
@@ -245,26 +286,38 @@ def run(
             raise _fail(f"error: cannot write the outputs to '{out}': {exc.strerror or exc}", EXIT_FAILED) from None
         except MachdynError as exc:
             raise _fail(f"error: the outputs of {file} could not be produced: {exc}", EXIT_FAILED) from None
-    if quiet:
-        return
-    _print_rows(result.summary_rows, format, result.title, result.warnings)
-    if format is TableFormat.table:
-        elapsed = time.perf_counter() - started
-        typer.echo(f"wrote {len(paths)} file(s) to {out}/ ({', '.join(p.name for p in paths)}) in {elapsed:.2f} s",
-                   err=True)
+    if not quiet:
+        _print_rows(result.summary, format, result.warnings)
+        if format is TableFormat.table:
+            elapsed = time.perf_counter() - started
+            typer.echo(f"wrote {len(paths)} file(s) to {out}/ ({', '.join(p.name for p in paths)}) in "
+                       f"{elapsed:.2f} s", err=True)
+    if result.failed_checks:
+        for check in result.failed_checks:
+            typer.echo(f"design check failed: {check}", err=True)
+        raise typer.Exit(EXIT_CHECKS_FAILED)
 
 
-@app.command()
-def check(file: FileArg) -> None:
+@app.command(epilog=EXIT_CODES_HELP)
+def check(file: FileArg, debug: DebugOpt = False) -> None:
     """Validate a problem file without analysing it: units, ranges, names, and that the linkage assembles."""
-    from .errors import AssemblyError, InputError, ProblemFileError
+    try:
+        _check(file)
+    except (typer.Exit, KeyboardInterrupt):
+        raise
+    except Exception as exc:  # noqa: BLE001 - anything unexpected becomes exit 4 without a traceback
+        raise _internal_error(exc, debug) from None
 
-    problem, _ = _load(file)
+
+def _check(file: Path) -> None:
+    from .errors import AssemblyError, InputError, ProblemFileError, SingularPositionError
+
+    loaded = _load(file)
     from .runner import check_problem
 
     try:
-        warnings = check_problem(problem)
-    except (ProblemFileError, AssemblyError, InputError) as exc:
+        warnings = check_problem(loaded)
+    except (ProblemFileError, AssemblyError, InputError, SingularPositionError) as exc:
         raise _engine_error(exc, file) from None
     for w in warnings:
         typer.echo(f"warning: {w}", err=True)

@@ -225,6 +225,6 @@ def test_a_toggle_inside_the_crank_range_fails_naming_the_angles(runner, tmp_pat
                   'rocker = {length = "28 mm"}\nground = {length = "40 mm"}\n'
                   '[drive]\nspeed = "60 rpm"\npositions = 181\nstart = "-90 deg"\nstop = "90 deg"\n')
     result = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "out"), "--quiet"])
-    assert result.exit_code == 1
+    assert result.exit_code == 2, "a crank range through a dead position is bad input"
     assert "dead (toggle) or indeterminate position" in result.stderr and "-90.00°, 90.00°" in result.stderr
     assert "Traceback" not in result.output

@@ -67,19 +67,17 @@ def test_rotary_screen_prints_the_seed_002_energy_figures(tmp_path):
     out = tmp_path / "out"
     proc = _machdyn("run", "examples/rotary_screen.toml", "--out", str(out), "--format", "json")
     assert proc.returncode == 0, proc.stderr
-    rows = {r["quantity"]: r for r in json.loads(proc.stdout)["summary"]}
-    t1 = next(r for q, r in rows.items() if q.startswith("T1max") and "eq 15" in q)
-    t2 = next(r for q, r in rows.items() if q.startswith("T2"))
-    t3 = next(r for q, r in rows.items() if q.startswith("T3"))
-    w = next(r for q, r in rows.items() if q.startswith("W range, eq 10"))
-    t1_exact = rows["T1max, exact kinematics (engine)"]
+    rows = {r["key"]: r for r in json.loads(proc.stdout)["summary"]}
+    t1, t2, t3 = (rows[f"rotary_screen.{k}.formula"] for k in ("T1max", "T2", "T3"))
+    w_min, w_max = (rows[f"rotary_screen.W_{k}.formula"] for k in ("min", "max"))
+    t1_exact = rows["rotary_screen.T1max.engine"]
+    assert "T1max" in t1["quantity"] and "eq 15" in t1["quantity"]
     assert t1["value"] == pytest.approx(284.5773, rel=1e-6)
     assert t2["value"] == pytest.approx(253.4206, rel=1e-6)
     assert t3["value"] == pytest.approx(1233.3032, rel=1e-6)
-    w_min, w_max = (float(v) for v in w["value"].split("~"))
-    assert w_min == pytest.approx(1486.7239, abs=1e-3) and w_max == pytest.approx(1771.3012, abs=1e-3)
+    assert w_min["value"] == pytest.approx(1486.7239, abs=1e-3) and w_max["value"] == pytest.approx(1771.3012, abs=1e-3)
     assert t1_exact["value"] == pytest.approx(284.6218, abs=1e-3)
-    assert all(r["unit"] == "J" for r in (t1, t2, t3, w, t1_exact))
+    assert all(r["unit"] == "J" for r in (t1, t2, t3, w_min, w_max, t1_exact))
     scalars = json.loads((out / "results.json").read_text())["scalars"]
     assert scalars["rotary_screen.T1max.formula"] == {"value": pytest.approx(284.5773, rel=1e-6), "unit": "J"}
     assert scalars["rotary_screen.W_max.formula"]["value"] == pytest.approx(1771.3012, abs=1e-3)

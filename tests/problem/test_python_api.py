@@ -24,7 +24,7 @@ def test_notebook_use():
     assert "driving_torque [N*m]" in torque.columns
     assert result.scalars["driving_torque.max_abs"]["unit"] == "N*m"
     summary = result.summary_frame()
-    assert list(summary.columns) == ["quantity", "value", "unit"]
+    assert list(summary.columns) == ["key", "quantity", "value", "unit"]
     assert isinstance(result.scalars_frame(), pd.DataFrame)
 
 

@@ -8,15 +8,8 @@ import re
 import numpy as np
 import pytest
 
-from machdyn.report.tables import (
-    ANGLE_COLUMN,
-    DESIGN_COLUMN,
-    analysis_frames,
-    analysis_scalars,
-    flywheel_energy_fluctuation,
-    scalars_frame,
-    write_csv,
-)
+from machdyn.report.tables import ANGLE_COLUMN, DESIGN_COLUMN, analysis_frames, scalars_frame, write_csv
+from machdyn.results.linkage import analysis_scalars, flywheel_energy_fluctuation
 
 HEADER = re.compile(r"^\S+ \[[^\[\]]*\]$")
 GROUPS = {"motion", "joint_forces", "torque_power", "shaking", "energy"}
@@ -143,14 +136,18 @@ def test_write_csv(tmp_path, slider_crank_analysis):
 
 
 def test_summary_rows_have_labels_and_clean_round_off(four_bar_analysis):
-    from machdyn.report.tables import summary_rows
+    from machdyn.results import collect, summarise
+    from machdyn.results.linkage import LINKAGE_LABELS, linkage_scalars
 
-    scalars = analysis_scalars(four_bar_analysis)
-    rows = summary_rows(scalars)
-    assert len(rows) == len(scalars)
+    values, units = linkage_scalars(four_bar_analysis)
+    results = collect(values, LINKAGE_LABELS, units)
+    rows = summarise("four-bar", results, list(values)).as_tuples()
+    assert len(rows) == len(values)
     labels = {label: (value, unit) for label, value, unit in rows}
     assert labels["Driving torque, max |T|"][1] == "N*m"
     # without loads the mean torque over a cycle is zero: round-off is shown as 0
-    assert labels["Driving torque, mean"][0] == 0.0
-    assert "Joint B: maximum force" in labels
-    assert labels["Work balance: residual"][0] == scalars["work_balance.residual"]["value"]
+    assert abs(values["driving_torque.mean"]) < 1e-9 and labels["Driving torque, mean"][0] == 0.0
+    assert "Joint B, max force" in labels
+    assert labels["Work balance: residual"][0] == values["work_balance.residual"]
+    assert labels["Transmission angle, min"][1] == "deg", "angles are kept in rad and shown in degrees"
+    assert labels["Transmission angle, min"][0] == pytest.approx(np.degrees(values["transmission_angle.min"]))

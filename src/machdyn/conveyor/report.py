@@ -68,3 +68,8 @@ def conveyor_html_section(result: ConveyorResult) -> str:
                      + "</ul>")
     parts.append("</section>")
     return "\n".join(parts)
+
+
+def sections(outcome) -> list[tuple[str, str]]:
+    """The screw conveyor's report section of a run's outcome."""
+    return [("Screw conveyor", conveyor_html_section(outcome.results))]

@@ -1,13 +1,16 @@
 """Read a problem file (TOML with units) into a validated problem; report every mistake at once.
 
-A file is one of three kinds, told apart by its main table: ``[mechanism]`` (a generic linkage),
-``[rotary_screen]`` (the rotary grading screen of seed 002) or ``[screw_conveyor]``.
+The kind of a file is named by its main table (``[mechanism]``, ``[rotary_screen]``, ``[screw_conveyor]``; see
+:mod:`machdyn.kinds`). Its tables are validated against the kind's schema together with the tables of every
+capability the kind accepts (``[sweep]`` ...), and the model is built, so that the engine's own rules are
+checked too; every mistake found is reported in one :class:`~machdyn.errors.ProblemFileError`.
 """
 
 from __future__ import annotations
 
 import os
 import tomllib
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -15,14 +18,18 @@ from pydantic import ValidationError
 
 from ..errors import ProblemFileError
 from .errors import did_you_mean, problems_from
-from .schema import LinkageProblem
 
-#: The main table of each kind of problem and the other top-level tables it may have.
-KINDS: dict[str, tuple[str, ...]] = {
-    "mechanism": ("meta", "mechanism", "drive", "loads", "counterweights", "output", "sweep"),
-    "rotary_screen": ("meta", "rotary_screen", "drive", "output"),
-    "screw_conveyor": (),  # the conveyor's own loader checks its tables
-}
+
+@dataclass(frozen=True)
+class LoadedProblem:
+    """A validated problem with what reading it gave: its kind, the file's text and path, and the model built
+    from it (so that a run neither reads the file nor builds the model a second time)."""
+
+    kind: str
+    spec: Any
+    text: str
+    source: str | None = None
+    model: Any = None
 
 
 def read_text(source: str | os.PathLike) -> tuple[str, str | None]:
@@ -58,8 +65,10 @@ def parse_toml(text: str, source: str | None = None) -> dict[str, Any]:
         raise ProblemFileError([("", f"malformed TOML: {exc}")], source) from None
 
 
-def problem_kind(data: dict[str, Any], source: str | None = None) -> str:
-    """``"mechanism"``, ``"rotary_screen"`` or ``"screw_conveyor"``: the main table of the file."""
+def kind_of(data: dict[str, Any], source: str | None = None) -> str:
+    """The kind of a parsed file: the one registered main table it has."""
+    from ..kinds import KINDS
+
     found = [k for k in KINDS if k in data]
     if len(found) == 1:
         return found[0]
@@ -74,14 +83,16 @@ def problem_kind(data: dict[str, Any], source: str | None = None) -> str:
         if hint:
             problems.append((key, f"unknown table '{key}'{hint}"))
     if not problems:
+        tables = ", ".join(f"[{k}]" for k in KINDS)
         problems.append(
-            ("", "the file needs one main table: [mechanism], [rotary_screen] or [screw_conveyor]; "
+            ("", f"the file needs one main table, one of {tables}; "
                  f"got {', '.join('[' + k + ']' for k in data) or 'an empty file'}")
         )
     raise ProblemFileError(problems, source)
 
 
 def top_level_problems(data: dict[str, Any], allowed: tuple[str, ...]) -> list[tuple[str, str]]:
+    """An 'unknown key' problem (with a did-you-mean) for each top-level table not in ``allowed``."""
     out = []
     for key in data:
         if key not in allowed:
@@ -90,51 +101,57 @@ def top_level_problems(data: dict[str, Any], allowed: tuple[str, ...]) -> list[t
     return out
 
 
-def validate_linkage(data: dict[str, Any], source: str | None = None) -> LinkageProblem:
-    """A :class:`LinkageProblem` from the parsed tables, or one ProblemFileError with every mistake."""
-    problems = top_level_problems(data, KINDS["mechanism"])
+def validate(data: dict[str, Any], kind_name: str, source: str | None = None) -> tuple[Any, Any]:
+    """(problem, model) of parsed tables of the given kind, or one ProblemFileError with every mistake."""
+    from ..kinds import capabilities_for, kind, problem_model
+
+    k = kind(kind_name)
+    if k.validate is not None:
+        spec = k.validate(data, source)
+        return spec, None
+    schema = problem_model(kind_name)
+    allowed = tuple(schema.model_fields)
+    problems = top_level_problems(data, allowed)
+    spec = None
     try:
-        clean = {k: v for k, v in data.items() if k in KINDS["mechanism"]}
-        problem = LinkageProblem.model_validate(clean)
+        spec = schema.model_validate({key: v for key, v in data.items() if key in allowed})
     except ValidationError as exc:
-        problems += problems_from(exc, LinkageProblem)
-        problem = None
+        problems += problems_from(exc, schema)
+    model = None
+    if spec is not None:
+        model, found = k.build(spec)
+        problems += found
+        for cap in capabilities_for(kind_name):
+            table = getattr(spec, cap.table, None)
+            if table is not None and cap.check is not None and model is not None:
+                problems += cap.check(spec, table)
     if problems:
         raise ProblemFileError(problems, source)
-    return problem
+    return spec, model
 
 
-def load_problem(source: str | os.PathLike):
-    """Read and validate a problem file (a path, or the TOML text itself).
-
-    Returns a :class:`~machdyn.problem.schema.LinkageProblem`, a
-    :class:`~machdyn.problem.rotary.RotaryScreenProblem` or the screw conveyor's problem object. Raises
-    :class:`~machdyn.errors.ProblemFileError` listing every mistake with its path (``mechanism.coupler.length``),
-    the rule broken and the value received. For linkages the mechanism is also built, so that references to
-    unknown bodies or points and the engine's own rules are checked; assembly is checked by
-    :func:`check_problem`.
-    """
+def read_problem(source: str | os.PathLike) -> LoadedProblem:
+    """Read and validate a problem file (a path, or the TOML text itself), building its model once."""
     text, name = read_text(source)
     data = parse_toml(text, name)
-    kind = problem_kind(data, name)
-    if kind == "mechanism":
-        problem = validate_linkage(data, name)
-        from .build import build_mechanism
-
-        try:
-            build_mechanism(problem)
-        except ProblemFileError as exc:
-            raise ProblemFileError(exc.problems, name) from None
-        return problem
-    if kind == "rotary_screen":
-        from .rotary import validate_rotary_screen
-
-        return validate_rotary_screen(data, name)
-    from ..conveyor.problem import load_conveyor_problem
-
+    kind_name = kind_of(data, name)
     try:
-        return load_conveyor_problem(data, source=name)
+        spec, model = validate(data, kind_name, name)
     except ProblemFileError as exc:
         if exc.source is None and name is not None:
             raise ProblemFileError(exc.problems, name) from None
         raise
+    return LoadedProblem(kind_name, spec, text, name, model)
+
+
+def load_problem(source: str | os.PathLike) -> Any:
+    """Read and validate a problem file (a path, or the TOML text itself); returns the validated problem.
+
+    A ``[mechanism]`` file gives a :class:`~machdyn.problem.schema.LinkageProblem`, a ``[rotary_screen]`` file a
+    :class:`~machdyn.problem.rotary.RotaryScreenProblem`, a ``[screw_conveyor]`` file the conveyor's problem;
+    each capability table the file has is an attribute of the same name (``problem.sweep``). Raises
+    :class:`~machdyn.errors.ProblemFileError` listing every mistake with its path (``mechanism.coupler.length``),
+    the rule broken and the value received; assembly at every crank angle is checked by
+    :func:`~machdyn.runner.check_problem`.
+    """
+    return read_problem(source).spec

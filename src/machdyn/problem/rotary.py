@@ -9,12 +9,8 @@ m_C omega^2 unless ``stiffness`` is given). The run analyses the engine's model 
 
 from __future__ import annotations
 
-from typing import Any
+from pydantic import Field
 
-from pydantic import Field, ValidationError
-
-from ..errors import InputError, ProblemFileError
-from .errors import problems_from
 from .fields import Mass, NonNegativeLength, PositiveLength, PositiveMass, Stiffness
 from .schema import DriveSpec, Meta, OutputSpec, Spec
 
@@ -59,30 +55,3 @@ class RotaryScreenProblem(Spec):
     def mechanism(self):
         """The engine's model of the screen (with the spring if asked for)."""
         return self.screen().mechanism(spring=self.rotary_screen.spring, stiffness=self.rotary_screen.stiffness)
-
-
-ALLOWED = ("meta", "rotary_screen", "drive", "output")
-
-
-def validate_rotary_screen(data: dict[str, Any], source: str | None = None) -> RotaryScreenProblem:
-    """A :class:`RotaryScreenProblem` from the parsed tables, or one ProblemFileError with every mistake."""
-    from .loader import top_level_problems
-
-    problems = top_level_problems(data, ALLOWED)
-    problem = None
-    try:
-        problem = RotaryScreenProblem.model_validate({k: v for k, v in data.items() if k in ALLOWED})
-    except ValidationError as exc:
-        problems += problems_from(exc, RotaryScreenProblem)
-    if problem is not None and not problems:
-        if problem.drive.speed <= 0:
-            speed = problem.drive.speed
-            problems.append(("drive.speed", f"must be > 0 rad/s for the rotary screen; got {speed:g} rad/s"))
-        else:
-            try:
-                problem.mechanism()
-            except InputError as exc:
-                problems.append(("rotary_screen", str(exc)))
-    if problems:
-        raise ProblemFileError(problems, source)
-    return problem

@@ -28,7 +28,6 @@ from .fields import (
     Stiffness,
     Torque,
 )
-from .sweep import SweepSpec
 
 
 class Spec(BaseModel):
@@ -364,7 +363,8 @@ class OutputSpec(Spec):
 
 class LinkageProblem(Spec):
     """A generic linkage problem: ``[meta]``, ``[mechanism]``, ``[drive]``, ``[loads]``,
-    ``[[counterweights]]``, ``[output]`` and optionally ``[sweep]`` (design variants)."""
+    ``[[counterweights]]`` and ``[output]``; the capability tables (``[sweep]`` ...) are added to it by
+    :func:`machdyn.kinds.problem_model`."""
 
     meta: Meta = Meta()
     mechanism: Annotated[MechanismSpec, Field(discriminator="type")]
@@ -372,4 +372,3 @@ class LinkageProblem(Spec):
     loads: LoadsSpec = LoadsSpec()
     counterweights: list[CounterweightSpec] = []
     output: OutputSpec = OutputSpec()
-    sweep: SweepSpec | None = None

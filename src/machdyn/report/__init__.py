@@ -1,21 +1,17 @@
 """Reports of machdyn results: a self-contained HTML report, tables (pandas) and plots (matplotlib).
 
-- :func:`render_report` builds one HTML document (inline CSS and SVG, no scripts, no external resources).
-- :mod:`machdyn.report.tables`: :func:`~machdyn.report.tables.analysis_frames` (DataFrames with units in
-  the headers) and :func:`~machdyn.report.tables.analysis_scalars` (every scalar with its unit).
+- :func:`render_report` builds one HTML document (inline CSS and SVG, no scripts, no external resources) from
+  the summary, the warnings and each stage's sections.
+- :mod:`machdyn.report.tables`: :func:`~machdyn.report.tables.analysis_frames` (DataFrames with units in the
+  headers).
 - :mod:`machdyn.report.plots`: plotting functions that take a matplotlib ``ax`` and return it.
+- one module per stage (:mod:`.mechanism`, :mod:`.sweep`, :mod:`.rotary_screen` ...) with its ``sections``.
 
-Only this package imports matplotlib; the analysis modules do not.
+The report formats and plots results; it computes none. Only this package imports matplotlib.
 """
 
-from .html import analysis_figures, format_value, render_report
-from .tables import analysis_frames, analysis_scalars, summary_rows
+from .html import format_value, render_report
+from .mechanism import analysis_figures
+from .tables import analysis_frames
 
-__all__ = [
-    "analysis_figures",
-    "analysis_frames",
-    "analysis_scalars",
-    "format_value",
-    "render_report",
-    "summary_rows",
-]
+__all__ = ["analysis_figures", "analysis_frames", "format_value", "render_report"]

@@ -1,0 +1,74 @@
+"""The registry of problem kinds and capabilities: one line each.
+
+A problem file is of the kind named by its main table; it may add any capability table its kind accepts. To add
+a kind or a capability, write its package (schema, build, analysis, report sections) and add one line here;
+``docs/architecture.md`` walks through an example. Entries are ``"package.module:OBJECT"`` strings, imported
+only when a file needs them, so that the command line starts without loading the analyses.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+from typing import Any
+
+from .pipeline import Capability, ProblemKind, import_object
+
+#: main table -> the :class:`~machdyn.pipeline.ProblemKind`
+KINDS: dict[str, str] = {
+    "mechanism": "machdyn.pipelines.mechanism:KIND",
+    "rotary_screen": "machdyn.pipelines.rotary_screen:KIND",
+    "screw_conveyor": "machdyn.pipelines.screw_conveyor:KIND",
+}
+
+#: optional table -> the :class:`~machdyn.pipeline.Capability`
+CAPABILITIES: dict[str, str] = {
+    "sweep": "machdyn.pipelines.sweep:CAPABILITY",
+}
+
+
+@cache
+def kind(name: str) -> ProblemKind:
+    """The problem kind whose main table is ``name``."""
+    return import_object(KINDS[name])
+
+
+@cache
+def capability(table: str) -> Capability:
+    """The capability of the optional table ``table``."""
+    return import_object(CAPABILITIES[table])
+
+
+@cache
+def capabilities_for(kind_name: str) -> tuple[Capability, ...]:
+    """The capabilities a kind accepts, ordered so that each runs after the tables it reads."""
+    found = [capability(t) for t in CAPABILITIES]
+    found = [c for c in found if kind_name in c.kinds]
+    ordered: list[Capability] = []
+    pending = list(found)
+    while pending:
+        ready = [c for c in pending if all(a in {o.table for o in ordered} or a not in {p.table for p in found}
+                                           for a in c.after)]
+        if not ready:  # a cycle of 'after' would be a programming error in the registry
+            raise RuntimeError(f"capabilities wait on each other: {[c.table for c in pending]}")
+        ordered += ready
+        pending = [c for c in pending if c not in ready]
+    return tuple(ordered)
+
+
+@cache
+def problem_model(kind_name: str) -> Any:
+    """The pydantic model of a whole file of the kind: its own tables plus an optional field per capability."""
+    from pydantic import create_model
+
+    base = kind(kind_name).schema
+    extra: dict[str, Any] = {c.table: (c.schema | None, None) for c in capabilities_for(kind_name)}
+    if base is None or not extra:
+        return base
+    return create_model(base.__name__, __base__=base, __module__=base.__module__, **extra)
+
+
+def steps_of(kind_name: str, tables: tuple[str, ...] = ()) -> list[str]:
+    """The progress-bar labels of a run of the kind with the given capability tables."""
+    steps = ["reading", *kind(kind_name).steps]
+    steps += [c.step for c in capabilities_for(kind_name) if c.table in tables]
+    return [*steps, "tables", "report"]

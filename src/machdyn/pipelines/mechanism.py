@@ -1,0 +1,68 @@
+"""The ``[mechanism]`` kind: any planar linkage built from dyads, or one of the standard mechanisms."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ..pipeline import Outcome, ProblemKind, Step
+from ..problem.schema import LinkageProblem
+from ..results.linkage import LINKAGE_LABELS
+from .linkage_run import analyse_linkage, check_assembly
+
+
+def build(problem: Any) -> tuple[Any, list[tuple[str, str]]]:
+    """The engine's model of the problem, or the problems that stop it being built."""
+    from ..errors import ProblemFileError
+    from ..problem.build import build_mechanism
+
+    try:
+        return build_mechanism(problem), []
+    except ProblemFileError as exc:
+        return None, list(exc.problems)
+
+
+def default_mass_warnings(problem: Any) -> list[str]:
+    """What the file left to defaults that the user should know: bars without masses, bare custom bodies."""
+    from ..problem.schema import CustomSpec, LinkSpec
+
+    spec = problem.mechanism
+    if isinstance(spec, CustomSpec):
+        # Custom bodies have no bar to take defaults from: a mass without inertia or centre of mass is a point
+        # mass at the body's origin, which may not be what the author meant.
+        bare = [
+            f"mechanism.bodies[{i}] ('{b.name}')" for i, b in enumerate(spec.bodies)
+            if b.mass > 0.0 and not {"inertia", "com"} <= b.model_fields_set
+        ]
+        if not bare:
+            return []
+        return [
+            f"{', '.join(bare)}: mass given without inertia or com; taken as inertia 0 kg*m^2 about a centre of "
+            "mass at the body's origin (0, 0). Give inertia and com for a real link."
+        ]
+    missing = [
+        name for name in type(spec).model_fields
+        if isinstance(getattr(spec, name), LinkSpec) and getattr(spec, name).mass is None
+    ]
+    if not missing:
+        return []
+    return [
+        f"No mass given for {', '.join(missing)}: taken as uniform bar(s) of "
+        f"{spec.linear_density:g} kg/m (mechanism.linear_density)."
+    ]
+
+
+def analyse(problem: Any, mech: Any, step: Step) -> Outcome:
+    return analyse_linkage(problem, mech, step, default_mass_warnings(problem))
+
+
+KIND = ProblemKind(
+    name="mechanism",
+    schema=LinkageProblem,
+    build=build,
+    check=check_assembly,
+    analyse=analyse,
+    title=lambda problem: problem.meta.name,
+    steps=("model", "analysis"),
+    labels=LINKAGE_LABELS,
+    report="machdyn.report.mechanism:sections",
+)

@@ -1,0 +1,299 @@
+"""The scalar results of a linkage analysis, in SI, computed once for every output.
+
+Extremes of the time series (torque, power, joint forces, shaking force and moment, energy, reduced inertia),
+time means and RMS, the energy a flywheel must store, the work balance, harmonics of the driving torque and the
+shaking loads, and the diagnostics (strokes, time ratio, transmission angles, dead positions). For N design
+variants each value is a list of N floats.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections.abc import Iterable
+from typing import Any
+
+import numpy as np
+
+from ..linkage import model as _model
+from ..linkage.averages import time_mean, time_rms
+from .labels import Label
+
+#: Labels of the linkage results (the keys made at run time are labelled by patterns in .labels).
+LINKAGE_LABELS: dict[str, Label] = {
+    "crank_speed.mean": Label("Crank speed, mean", "rad/s"),
+    "driving_torque.max_abs": Label("Driving torque, max |T|", "N*m"),
+    "driving_torque.max": Label("Driving torque, maximum", "N*m"),
+    "driving_torque.min": Label("Driving torque, minimum", "N*m"),
+    "driving_torque.mean": Label("Driving torque, mean", "N*m", zero_below="driving_torque.max_abs"),
+    "driving_torque.rms": Label("Driving torque, RMS", "N*m"),
+    "input_power.mean": Label("Input power, mean", "W", zero_below="input_power.max"),
+    "input_power.max": Label("Input power, maximum", "W"),
+    "input_power.min": Label("Input power, minimum (negative: power flows back into the drive)", "W"),
+    "shaking_force.max": Label("Shaking force, max", "N"),
+    "shaking_moment.max_abs": Label("Shaking moment about the origin, max |M|", "N*m",
+                                    zero_below="driving_torque.max_abs"),
+    "shaking_moment.about_x": Label("Shaking moment reference point, x", "m"),
+    "shaking_moment.about_y": Label("Shaking moment reference point, y", "m"),
+    "kinetic_energy.max": Label("Kinetic energy, max", "J"),
+    "kinetic_energy.min": Label("Kinetic energy, min", "J"),
+    "kinetic_energy.fluctuation": Label("Kinetic energy, fluctuation (max - min)", "J"),
+    "reduced_inertia.min": Label("Reduced inertia at the crank, minimum", "kg*m^2"),
+    "reduced_inertia.max": Label("Reduced inertia at the crank, maximum", "kg*m^2"),
+    "reduced_inertia.mean": Label("Reduced inertia at the crank, mean", "kg*m^2"),
+    "flywheel.energy_fluctuation": Label("Energy to store in a flywheel (constant speed)", "J"),
+    "work_balance.input_work": Label("Work balance: input work", "J"),
+    "work_balance.load_work": Label("Work balance: work of the loads", "J"),
+    "work_balance.energy_change": Label("Work balance: energy change", "J"),
+    "work_balance.residual": Label("Work balance: residual", "J"),
+    "work_balance.relative_residual": Label("Work balance, relative residual", ""),
+    "time_ratio": Label("Time ratio (advance / return)", ""),
+    "transmission_angle.min": Label("Transmission angle, min", "rad"),
+    "transmission_angle.max": Label("Transmission angle, max", "rad"),
+    "dead_positions.count": Label("Dead positions (count)", ""),
+}
+
+#: The keys of a linkage analysis shown in the summary, in order (joints and strokes follow).
+LINKAGE_SUMMARY = (
+    "driving_torque.max_abs", "driving_torque.rms", "driving_torque.mean", "input_power.mean", "input_power.max",
+    "input_power.min", "shaking_force.max", "shaking_moment.max_abs", "kinetic_energy.max", "kinetic_energy.min",
+    "kinetic_energy.fluctuation", "flywheel.energy_fluctuation", "time_ratio", "transmission_angle.min",
+    "transmission_angle.max", "work_balance.relative_residual",
+)
+
+
+# ------------------------------------------------------------------------------------------------ helpers
+
+
+def mechanism_of(analysis: Any) -> _model.Mechanism | None:
+    """The :class:`~machdyn.linkage.model.Mechanism` an analysis (or its kinematics) was computed for."""
+    for obj in (analysis, getattr(analysis, "kinematics", None), getattr(analysis, "forces", None)):
+        if obj is None:
+            continue
+        for attr in ("mechanism", "mech"):
+            mech = getattr(obj, attr, None)
+            if isinstance(mech, _model.Mechanism):
+                return mech
+    return None
+
+
+def design_count(analysis: Any) -> int | None:
+    """N for results of shape (N, M), None for a single design (shape (M,))."""
+    torque = np.asarray(analysis.forces.driving_torque)
+    return int(torque.shape[0]) if torque.ndim == 2 else None
+
+
+def slider_bodies(mech: _model.Mechanism) -> list[str]:
+    """Bodies that slide along a guide (the slide coordinate is reported for them)."""
+    out: list[str] = []
+    for d in mech.dyads:
+        if isinstance(d, _model.RRP):
+            out.append(d.b)
+        elif isinstance(d, _model.RPR):
+            out.append(d.a)
+        elif isinstance(d, _model.PRP):
+            out += [d.a, d.b]
+    return out
+
+
+def joint_list(forces: Any) -> list[tuple[str, str, str, str]]:
+    """The joints of a kinetostatic result as (name, kind 'R'/'P', earlier body, later body) tuples."""
+    out = []
+    for j in forces.joints:
+        if hasattr(j, "name"):
+            out.append((j.name, j.kind, j.body_1, j.body_2))
+        else:
+            name, kind, body_1, body_2 = j
+            out.append((name, kind, body_1, body_2))
+    return out
+
+
+def _reduce(values: Any, how: str, designs: int | None) -> float | list[float]:
+    arr = np.asarray(values, dtype=float)
+    if arr.ndim == 0:
+        arr = arr.reshape(1)
+    funcs = {
+        "max": np.nanmax,
+        "min": np.nanmin,
+        "max_abs": lambda a, axis: np.nanmax(np.abs(a), axis=axis),
+        "mean": np.nanmean,
+        "range": lambda a, axis: np.nanmax(a, axis=axis) - np.nanmin(a, axis=axis),
+    }
+    # An all-NaN slice (a design that never assembles) stays NaN without numpy's warning.
+    with np.errstate(all="ignore"), warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        out = funcs[how](arr, axis=-1)
+    if designs is None:
+        return float(np.ravel(out)[0]) if np.ndim(out) else float(out)
+    return [float(v) for v in np.broadcast_to(out, (designs,))]
+
+
+def _scalar(value: Any, designs: int | None) -> float | list[float]:
+    arr = np.asarray(value, dtype=float)
+    if designs is None:
+        return float(arr.ravel()[0]) if arr.size else float("nan")
+    return [float(v) for v in np.broadcast_to(arr.ravel() if arr.size == designs else arr, (designs,))]
+
+
+def full_uniform_cycle(angle: Any) -> bool:
+    """True if the crank angles are evenly spaced and cover one full turn (with or without the end point)."""
+    a = np.asarray(angle, dtype=float).ravel()
+    if a.size < 8:
+        return False
+    step = np.diff(a)
+    if not np.allclose(step, step[0], rtol=1e-6, atol=1e-12) or step[0] <= 0:
+        return False
+    return includes_end_point(a) or bool(abs(a[-1] - a[0] + step[0] - 2 * np.pi) <= 0.5 * step[0])
+
+
+def includes_end_point(angle: Any) -> bool:
+    """True if evenly spaced crank angles repeat the first angle one turn later (span of 2 pi), judged against
+    half a step so that fine samplings (a step below the tolerance of a relative test) are told apart."""
+    a = np.asarray(angle, dtype=float).ravel()
+    if a.size < 2:
+        return False
+    step = a[1] - a[0]
+    return bool(abs(a[-1] - a[0] - 2 * np.pi) <= 0.5 * step)
+
+
+def flywheel_energy_fluctuation(torque: Any, crank_angle: Any) -> np.ndarray:
+    """Maximum fluctuation of energy over one turn at constant speed [J].
+
+    ΔE = max − min over the cycle of the cumulative work of the torque's fluctuation, ∫(T − T_mean) dφ
+    (Khurmi & Gupta, *Theory of Machines*, 14th ed., §16.6 "Fluctuation of energy"). ``torque`` [N·m] over
+    ``crank_angle`` [rad] evenly spaced over one full turn (with or without the end point).
+    """
+    phi = np.asarray(crank_angle, dtype=float).ravel()
+    t = np.asarray(torque, dtype=float)
+    step = phi[1] - phi[0]
+    samples = t[..., :-1] if includes_end_point(phi) else t
+    dev = samples - np.nanmean(samples, axis=-1, keepdims=True)
+    work = np.cumsum(dev, axis=-1) * step
+    work = np.concatenate([np.zeros(work.shape[:-1] + (1,)), work], axis=-1)
+    return np.nanmax(work, axis=-1) - np.nanmin(work, axis=-1)
+
+
+def _flatten(items: Iterable) -> Iterable:
+    for item in items:
+        if isinstance(item, list | tuple | np.ndarray) and np.ndim(item) > 0:
+            yield from _flatten(item)
+        else:
+            yield item
+
+
+# ------------------------------------------------------------------------------------------------ scalars
+
+
+def linkage_scalars(
+    analysis: Any,
+    mechanism: _model.Mechanism | None = None,
+    *,
+    about: tuple[float, float] = (0.0, 0.0),
+    harmonic_orders: int = 0,
+) -> tuple[dict[str, Any], dict[str, str]]:
+    """Every scalar result of an :func:`~machdyn.linkage.analyse` result in SI: (values, units of the keys made
+    at run time). ``about`` [m] is the point of the shaking moment; ``harmonic_orders`` > 0 adds the amplitude
+    and phase of that many harmonics of the driving torque, the shaking moment and the frame force components."""
+    designs = design_count(analysis)
+    kin, forces, energy = analysis.kinematics, analysis.forces, analysis.energy
+    mech = mechanism if mechanism is not None else mechanism_of(analysis)
+    out: dict[str, Any] = {}
+    units: dict[str, str] = {}
+
+    speed = np.asarray(kin.speed, dtype=float)
+    out["crank_speed.mean"] = _reduce(np.broadcast_to(speed, np.shape(forces.driving_torque)), "mean", designs)
+    torque = forces.driving_torque
+    out["driving_torque.max_abs"] = _reduce(torque, "max_abs", designs)
+    out["driving_torque.max"] = _reduce(torque, "max", designs)
+    out["driving_torque.min"] = _reduce(torque, "min", designs)
+    # Means and RMS over time, not over crank angle: they differ when the crank speed varies.
+    out["driving_torque.mean"] = _scalar(time_mean(torque, kin), designs)
+    out["driving_torque.rms"] = _scalar(time_rms(torque, kin), designs)
+    out["input_power.mean"] = _scalar(time_mean(forces.input_power, kin), designs)
+    out["input_power.max"] = _reduce(forces.input_power, "max", designs)
+    out["input_power.min"] = _reduce(forces.input_power, "min", designs)
+    for name, _kind, _b1, _b2 in joint_list(forces):
+        out[f"joint.{name}.max_force"] = _reduce(forces.joint(name).magnitude, "max", designs)
+    fx, fy = forces.frame_force
+    out["shaking_force.max"] = _reduce(np.hypot(fx, fy), "max", designs)
+    out["shaking_moment.max_abs"] = _reduce(forces.shaking_moment(about=tuple(about)), "max_abs", designs)
+    if tuple(about) != (0.0, 0.0):
+        out["shaking_moment.about_x"], out["shaking_moment.about_y"] = float(about[0]), float(about[1])
+
+    out["kinetic_energy.max"] = _reduce(energy.kinetic_total, "max", designs)
+    out["kinetic_energy.min"] = _reduce(energy.kinetic_total, "min", designs)
+    out["kinetic_energy.fluctuation"] = _reduce(energy.kinetic_total, "range", designs)
+    out["reduced_inertia.min"] = _reduce(energy.reduced_inertia, "min", designs)
+    out["reduced_inertia.max"] = _reduce(energy.reduced_inertia, "max", designs)
+    out["reduced_inertia.mean"] = _reduce(energy.reduced_inertia, "mean", designs)
+    if full_uniform_cycle(kin.crank_angle) and np.all(np.isfinite(torque)):
+        out["flywheel.energy_fluctuation"] = _scalar(flywheel_energy_fluctuation(torque, kin.crank_angle), designs)
+    try:
+        wb = energy.work_balance()
+    except Exception:  # noqa: BLE001 - a work balance that cannot be formed is simply not reported
+        wb = None
+    if wb is not None:
+        out["work_balance.input_work"] = _scalar(wb.input_work, designs)
+        out["work_balance.load_work"] = _scalar(wb.load_work, designs)
+        out["work_balance.energy_change"] = _scalar(wb.energy_change, designs)
+        out["work_balance.residual"] = _scalar(wb.residual, designs)
+        out["work_balance.relative_residual"] = _scalar(wb.relative, designs)
+
+    diag = getattr(analysis, "diagnostics", None)
+    if diag is not None:
+        sliders = set(slider_bodies(mech)) if mech is not None else set()
+        for body, stroke in (getattr(diag, "strokes", None) or {}).items():
+            out[f"stroke.{body}"] = _scalar(stroke, designs)
+            units[f"stroke.{body}"] = "m" if body in sliders else "rad"
+        if getattr(diag, "time_ratio", None) is not None:
+            out["time_ratio"] = _scalar(diag.time_ratio, designs)
+        if getattr(diag, "transmission_angle_min", None) is not None:
+            out["transmission_angle.min"] = _scalar(diag.transmission_angle_min, designs)
+        if getattr(diag, "transmission_angle_max", None) is not None:
+            out["transmission_angle.max"] = _scalar(diag.transmission_angle_max, designs)
+        dead = getattr(diag, "dead_positions", None)
+        if dead is not None:
+            out["dead_positions.count"] = float(len(list(_flatten(dead))))
+    if harmonic_orders > 0 and designs is None:
+        values, hunits = harmonic_scalars(analysis, tuple(about), harmonic_orders)
+        out.update(values)
+        units.update(hunits)
+    return out, units
+
+
+def harmonic_scalars(analysis: Any, about: tuple[float, float], orders: int) -> tuple[dict, dict]:
+    """Amplitude [unit of the series] and phase [rad] of the first ``orders`` harmonics of the driving torque,
+    the shaking moment about ``about`` and the frame force components, over a uniform full cycle (else none)."""
+    from ..linkage import harmonics
+
+    values: dict[str, float] = {}
+    units: dict[str, str] = {}
+    phi = np.asarray(analysis.kinematics.crank_angle, dtype=float)
+    n = phi.size
+    if n < 4 or not np.allclose(np.diff(phi), 2 * math.pi / n, rtol=1e-9, atol=1e-12) or orders >= n / 2:
+        return values, units
+    series = {
+        "driving_torque": (analysis.forces.driving_torque, "N*m"),
+        "shaking_moment": (analysis.forces.shaking_moment(about=about), "N*m"),
+        "shaking_force.fx": (analysis.forces.frame_force[0], "N"),
+        "shaking_force.fy": (analysis.forces.frame_force[1], "N"),
+    }
+    for name, (data, unit) in series.items():
+        if not np.all(np.isfinite(data)):
+            continue
+        h = harmonics(data, phi, orders=orders)
+        for k, amp, ph in zip(np.ravel(h.orders), np.ravel(h.amplitude), np.ravel(h.phase), strict=True):
+            values[f"{name}.harmonic_{int(k)}.amplitude"] = float(amp)
+            units[f"{name}.harmonic_{int(k)}.amplitude"] = unit
+            values[f"{name}.harmonic_{int(k)}.phase"] = float(ph)
+            units[f"{name}.harmonic_{int(k)}.phase"] = "rad"
+    return values, units
+
+
+def analysis_scalars(analysis: Any, mechanism: _model.Mechanism | None = None) -> dict[str, dict[str, Any]]:
+    """Every scalar result of an analysis as ``{key: {"value", "unit"}}`` in display units (angles in
+    degrees), as written to results.json; for N design variants each value is a list of N floats."""
+    from .store import collect
+
+    values, units = linkage_scalars(analysis, mechanism)
+    return collect(values, LINKAGE_LABELS, units).as_json()
