@@ -2,6 +2,16 @@
 
 Every message names the field, the rule and the value received, e.g.
 ``The length of body 'crank' must be > 0 m; got -0.15 m.``
+
+The tree::
+
+    MachdynError
+    ├── InputError (also a ValueError): the input breaks a rule
+    │   ├── ProblemFileError: a problem file's mistakes, all of them, each with its path
+    │   ├── AssemblyError: the linkage cannot close at some requested crank angle
+    │   └── SingularPositionError: the crank range passes a dead (toggle) position
+    └── AnalysisError: the analysis of a valid input failed (a simulation that does not settle, an optimiser
+        that does not converge)
 """
 
 from __future__ import annotations
@@ -15,15 +25,15 @@ class InputError(MachdynError, ValueError):
     """An input value breaks a rule (non-positive length, NaN, unknown name, ...)."""
 
 
-class AssemblyError(MachdynError):
+class AssemblyError(InputError):
     """A linkage cannot be assembled (closed) at some or all of the requested crank angles."""
 
 
-class SingularPositionError(MachdynError):
+class SingularPositionError(InputError):
     """A linkage passes through a dead (toggle) position where velocities or forces are undefined."""
 
 
-class ProblemFileError(MachdynError):
+class ProblemFileError(InputError):
     """A problem file has one or more mistakes; ``problems`` lists each as (path, message)."""
 
     def __init__(self, problems: list[tuple[str, str]], source: str | None = None):
@@ -33,6 +43,11 @@ class ProblemFileError(MachdynError):
         lines = [f"{len(self.problems)} problem(s){where}:"]
         lines += [f"  {path}: {message}" if path else f"  {message}" for path, message in self.problems]
         super().__init__("\n".join(lines))
+
+
+class AnalysisError(MachdynError):
+    """The analysis of a valid input failed: a simulation that does not settle, an optimiser that does not
+    converge, a motor that cannot drive the machine. The message says what was tried and what would help."""
 
 
 class MachdynWarning(UserWarning):

@@ -33,7 +33,7 @@ PREFERRED_UNITS: dict[str, tuple[str, ...]] = {
 }
 
 
-class FieldError(ValueError):
+class FieldError(InputError):
     """A value of a problem file breaks a rule; the message starts with the rule (the path is added later)."""
 
 

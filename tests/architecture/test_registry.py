@@ -1,0 +1,133 @@
+"""The registry of problem kinds and capabilities: adding a capability is one package and one registry line.
+
+The capability below is the worked example of ``docs/architecture.md``; registering it by one line makes it
+reachable from problem files, the check, the run, the summary, results.json and the exit code.
+"""
+
+from __future__ import annotations
+
+import sys
+import types
+
+import numpy as np
+import pytest
+from pydantic import Field
+from typer.testing import CliRunner
+
+from machdyn import kinds
+from machdyn.cli import EXIT_BAD_INPUT, EXIT_CHECKS_FAILED, EXIT_OK, app
+from machdyn.pipeline import Capability, Outcome, StageContext
+from machdyn.problem import load_problem
+from machdyn.problem.fields import Torque
+from machdyn.problem.schema import Spec
+from machdyn.results.labels import Label
+from machdyn.runner import run_problem
+
+FILE = """
+[mechanism]
+type = "four_bar"
+crank = {length = "40 mm", mass = "0.2 kg"}
+coupler = {length = "120 mm", mass = "0.5 kg"}
+rocker = {length = "80 mm", mass = "0.4 kg"}
+ground = {length = "100 mm"}
+[drive]
+speed = "300 rpm"
+positions = 72
+"""
+
+
+class LimitTable(Spec):
+    limit: Torque
+    margin: float = Field(0.1, ge=0.0, lt=1.0)
+
+
+def _run(ctx: StageContext) -> Outcome:
+    peak = float(np.max(np.abs(ctx.analysis.forces.driving_torque)))
+    allowed = ctx.table.limit * (1.0 - ctx.table.margin)
+    failed = (f"peak driving torque {peak:.4g} N*m > {allowed:.4g} N*m",) if peak > allowed else ()
+    return Outcome(results=peak, scalars={"torque_limit.utilisation": peak / allowed},
+                   summary=("torque_limit.utilisation",), failed_checks=failed)
+
+
+CAPABILITY = Capability(
+    table="torque_limit", schema=LimitTable, run=_run, step="torque limit",
+    labels={"torque_limit.utilisation": Label("Peak driving torque / allowed", "")},
+)
+
+
+@pytest.fixture
+def registered(monkeypatch):
+    """Register the example capability by one registry line, as a user's package would."""
+    module = types.ModuleType("example_torque_limit")
+    module.CAPABILITY = CAPABILITY
+    monkeypatch.setitem(sys.modules, "example_torque_limit", module)
+    monkeypatch.setitem(kinds.CAPABILITIES, "torque_limit", "example_torque_limit:CAPABILITY")
+    for cached in (kinds.capabilities_for, kinds.problem_model, kinds.capability):
+        cached.cache_clear()
+    yield
+    monkeypatch.delitem(kinds.CAPABILITIES, "torque_limit")
+    for cached in (kinds.capabilities_for, kinds.problem_model, kinds.capability):
+        cached.cache_clear()
+
+
+def test_a_registered_capability_runs_from_a_problem_file(registered):
+    problem = load_problem(FILE + '[torque_limit]\nlimit = "50 N*m"\n')
+    assert problem.torque_limit.limit == 50.0
+    result = run_problem(problem)
+    assert result.failed_checks == []
+    row = next(r for r in result.summary.rows if r.key == "torque_limit.utilisation")
+    peak = float(np.max(np.abs(result.analysis.forces.driving_torque)))
+    assert row.label == "Peak driving torque / allowed" and row.value == pytest.approx(peak / 45.0, rel=1e-12)
+    assert result.results_json()["scalars"]["torque_limit.utilisation"]["unit"] == ""
+
+
+def test_a_failed_check_of_a_capability_exits_with_3(registered, tmp_path):
+    path = tmp_path / "limited.toml"
+    path.write_text(FILE + '[torque_limit]\nlimit = "1e-6 N*m"\n', encoding="utf-8")
+    result = CliRunner().invoke(app, ["run", str(path), "--out", str(tmp_path / "out"), "--quiet"])
+    assert result.exit_code == EXIT_CHECKS_FAILED, result.output
+    assert "design check failed: peak driving torque" in result.stderr
+    assert (tmp_path / "out" / "results.json").exists(), "the outputs of a failed design are still written"
+
+
+def test_a_capability_table_is_validated_with_the_rest_of_the_file(registered, tmp_path):
+    path = tmp_path / "bad.toml"
+    path.write_text(FILE.replace('"300 rpm"', '"-1 m"') + '[torque_limit]\nlimit = "5 m"\nmargni = 0.2\n',
+                    encoding="utf-8")
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == EXIT_BAD_INPUT
+    for fragment in ("drive.speed", "torque_limit.limit", "torque_limit.margni", "did you mean 'margin'"):
+        assert fragment in result.stderr, fragment
+
+
+def test_unregistered_tables_are_refused_with_a_hint(tmp_path):
+    path = tmp_path / "typo.toml"
+    path.write_text(FILE + '[swep]\nparameter = "mechanism.crank.length"\nvalues = ["40 mm"]\n', encoding="utf-8")
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == EXIT_BAD_INPUT and "did you mean 'sweep'" in result.stderr
+
+
+def test_every_registered_entry_imports_and_names_its_table():
+    for name in kinds.KINDS:
+        assert kinds.kind(name).name == name
+    for table in kinds.CAPABILITIES:
+        cap = kinds.capability(table)
+        assert cap.table == table and cap.kinds, table
+        assert all(k in kinds.KINDS for k in cap.kinds)
+
+
+def test_the_cli_knows_no_kind_by_name():
+    from pathlib import Path
+
+    import machdyn.cli
+
+    text = Path(machdyn.cli.__file__).read_text(encoding="utf-8")
+    for name in [*kinds.KINDS, *kinds.CAPABILITIES]:
+        assert f'"{name}"' not in text, name
+
+
+def test_plain_run_succeeds(tmp_path):
+    path = tmp_path / "plain.toml"
+    path.write_text(FILE, encoding="utf-8")
+    result = CliRunner().invoke(app, ["run", str(path), "--out", str(tmp_path / "out"), "--quiet"])
+    assert result.exit_code == EXIT_OK, result.output
