@@ -83,8 +83,8 @@ class Progress:
         self.steps = steps
         self.enabled = enabled
         self.delay = delay
-        self._bar = None
-        self._task = None
+        self._bar: Any = None
+        self._task: Any = None
         self._done = 0
         self._label = "starting"
         self._lock = threading.Lock()

@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import IO, Any
 
 
-def atomic_write(path: str | os.PathLike, write: Callable[[IO[str]], None], *, encoding: str = "utf-8") -> Path:
+def atomic_write(path: str | os.PathLike, write: Callable[[IO[str]], object], *, encoding: str = "utf-8") -> Path:
     """Call ``write(file)`` on a temporary text file beside ``path`` and move it into place; return ``path``."""
     target = Path(path)
     target.parent.mkdir(parents=True, exist_ok=True)

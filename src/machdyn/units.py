@@ -7,12 +7,13 @@ Units live at the boundary only: problem files and the command line say ``"45 mm
 from __future__ import annotations
 
 from functools import lru_cache
+from typing import Any
 
 import pint
 
 from .errors import InputError
 
-ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+ureg: pint.UnitRegistry = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
 ureg.formatter.default_format = "~P"
 Q_ = ureg.Quantity
 
@@ -65,7 +66,7 @@ def parse_quantity(value: str | float | int, unit: str, *, field: str = "value")
             )
     else:
         try:
-            quantity = Q_(str(value).strip())
+            quantity: Any = Q_(str(value).strip())
         except Exception as exc:  # pint raises several unrelated exception types for bad text
             raise InputError(f"The {field} is not a quantity with a unit; got {value!r} ({exc}).") from None
         if not isinstance(quantity, pint.Quantity):

@@ -100,4 +100,4 @@ Torque = quantity("N*m", "torque")
 Stiffness = quantity("N/m", "stiffness", ">=0")
 LinearDensity = quantity("kg/m", "linear_density", ">0")
 
-Point = tuple[Length, Length]
+Point = tuple[Length, Length]  # type: ignore[valid-type]  # Length is an Annotated alias built at import

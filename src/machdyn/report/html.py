@@ -103,7 +103,7 @@ def render_figure(
 
     width, height = size
     left, right, bottom, top = margins
-    with matplotlib.rc_context(STYLE):
+    with matplotlib.rc_context(STYLE):  # type: ignore[arg-type]  # keys checked by matplotlib at run time
         fig = MplFigure(figsize=size)
         fig.subplots_adjust(
             left=left / width,

@@ -156,8 +156,8 @@ def plot_mechanism(
         ox, oy, ang = (_series(v, design, phi.size) for v in (motion.x, motion.y, motion.angle))
         pts = {}
         for pname, (lx, ly) in mechanism.body(body).points.items():
-            gx, gy = _rotate(_pick(lx, design), _pick(ly, design), ang)
-            pts[pname] = (ox + gx, oy + gy)
+            rx, ry = _rotate(_pick(lx, design), _pick(ly, design), ang)
+            pts[pname] = (ox + rx, oy + ry)
         coords[body] = pts
 
     all_x = np.concatenate(
@@ -184,7 +184,7 @@ def plot_mechanism(
             gbody, gpoint = _model.split_ref(g.point)
             if gbody != _model.GROUND:
                 continue
-            gx, gy = (_pick(v, design) for v in mechanism.ground[gpoint])
+            gx, gy = (float(_pick(v, design)) for v in mechanism.ground[gpoint])
             ga = _pick(g.angle, design)
             ux, uy = np.cos(ga), np.sin(ga)
             slider = d.b if isinstance(d, _model.RRP) else d.a if g is getattr(d, "guide_a", None) else d.b
@@ -233,7 +233,7 @@ def plot_mechanism(
     # ground pivots (revolute joints with the frame)
     for name, kind, b1, _b2 in joint_list:
         if kind == "R" and b1 == _model.GROUND and name in mechanism.ground:
-            gx, gy = (_pick(v, design) for v in mechanism.ground[name])
+            gx, gy = (float(_pick(v, design)) for v in mechanism.ground[name])
             _pivot_symbol(ax, gx, gy, size)
             ax.annotate(
                 name,
@@ -429,8 +429,9 @@ def _polar_locus(ax: Axes, fx: Any, fy: Any, label: str, colour: str, design: in
             (line,) = ax.plot(x, y, color=c, linewidth=1.5, label=_label(label, d))
             ax.plot(x[:1], y[:1], marker="o", color=line.get_color(), markersize=5, linestyle="none")
     if polar:
-        ax.set_rlabel_position(112.5)
-        ax.set_thetagrids(range(0, 360, 45), ["0°", "", "90°", "", "180°", "", "270°", ""])
+        ax.set_rlabel_position(112.5)  # type: ignore[attr-defined]  # a polar axes
+        ax.set_thetagrids(  # type: ignore[attr-defined]
+range(0, 360, 45), ["0°", "", "90°", "", "180°", "", "270°", ""])
         ax.yaxis.set_major_locator(MaxNLocator(3))
         ax.tick_params(labelsize="small")
         ax.grid(True, alpha=0.4, linewidth=0.6)
@@ -511,9 +512,9 @@ def plot_torque_power(
     omega = float(speed.ravel()[0]) if speed.size else 0.0
     constant = bool(speed.size) and np.allclose(speed, omega) and omega != 0.0
     if power and constant:
-        sec = ax.secondary_yaxis("right", functions=(lambda t: t * omega, lambda p: p / omega))
+        sec = ax.secondary_yaxis("right", functions=(lambda t: np.multiply(t, omega), lambda p: np.divide(p, omega)))
         sec.set_ylabel(f"Input power [W] at ω = {omega:.4g} rad/s")
-        ax.power_axis = sec
+        ax.power_axis = sec  # type: ignore[attr-defined]  # the power axis travels with the torque axis
     elif power:
         pax = ax.twinx()
         for d, series in _rows(forces.input_power, design):
@@ -527,7 +528,7 @@ def plot_torque_power(
             )
         pax.set_ylabel("Input power [W]")
         _align_zero(ax, pax)
-        ax.power_axis = pax
+        ax.power_axis = pax  # type: ignore[attr-defined]
         h1, l1 = ax.get_legend_handles_labels()
         h2, l2 = pax.get_legend_handles_labels()
         if title:

@@ -112,7 +112,7 @@ def _reduce(values: Any, how: str, designs: int | None) -> float | list[float]:
     arr = np.asarray(values, dtype=float)
     if arr.ndim == 0:
         arr = arr.reshape(1)
-    funcs = {
+    funcs: dict[str, Any] = {
         "max": np.nanmax,
         "min": np.nanmin,
         "max_abs": lambda a, axis: np.nanmax(np.abs(a), axis=axis),
@@ -255,7 +255,7 @@ def linkage_scalars(
         if dead is not None:
             out["dead_positions.count"] = float(len(list(_flatten(dead))))
     if harmonic_orders > 0 and designs is None:
-        values, hunits = harmonic_scalars(analysis, tuple(about), harmonic_orders)
+        values, hunits = harmonic_scalars(analysis, (float(about[0]), float(about[1])), harmonic_orders)
         out.update(values)
         units.update(hunits)
     return out, units
