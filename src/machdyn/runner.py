@@ -225,6 +225,7 @@ def run_problem(problem: Any, *, text: str | None = None, step: Step = no_step) 
         summary += outcome.summary
         warnings += [w for w in outcome.warnings if w not in warnings]
         failed += [c for c in outcome.failed_checks if c not in failed]
+    _refuse_non_finite(values)
     results = collect(values, known, units)
     title = k.title(loaded.spec)
     return RunResult(
@@ -232,6 +233,26 @@ def run_problem(problem: Any, *, text: str | None = None, step: Step = no_step) 
         summary=summarise(title, results, summary), outcomes=outcomes, warnings=warnings, failed_checks=failed,
         mechanism=first.mechanism, analysis=first.analysis,
     )
+
+
+def _refuse_non_finite(values: dict[str, Any]) -> None:
+    """Never a silent NaN or infinity: an infinite result anywhere, or NaN where one value is expected (a list
+    over design variants may hold NaN for a design that does not assemble), fails the run naming the results."""
+    import math
+
+    bad = []
+    for key, value in values.items():
+        items = value if isinstance(value, list) else [value]
+        for v in items:
+            if isinstance(v, float) and (math.isinf(v) or (math.isnan(v) and not isinstance(value, list))):
+                bad.append(key)
+                break
+    if bad:
+        from .errors import AnalysisError
+
+        shown = ", ".join(bad[:6]) + (f" and {len(bad) - 6} more" if len(bad) > 6 else "")
+        raise AnalysisError(f"the analysis produced non-finite results ({shown}): an input is far outside the "
+                            "range of a real machine, or the mechanism is singular at a sampled position")
 
 
 # re-exported for callers that catch what a run may raise

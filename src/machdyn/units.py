@@ -44,6 +44,26 @@ SI_UNITS: dict[str, str] = {
 }
 
 
+#: The longest quantity text read (``"1.2 t/m^3"`` needs a dozen characters); longer text is refused before
+#: pint parses it, so that a pathological expression cannot exhaust the parser.
+MAX_QUANTITY_TEXT = 100
+
+#: The largest magnitude accepted for any quantity, in SI units: no machine part is 1e12 m long or turns at
+#: 1e12 rad/s, and larger numbers overflow the products the analyses form.
+MAX_MAGNITUDE = 1e12
+
+
+def _invisible(text: str) -> str | None:
+    """The first control or formatting character of ``text`` (a right-to-left override, a zero-width
+    space ...) written as U+XXXX, or None: such characters make a value read differently from what it is."""
+    import unicodedata
+
+    for ch in text:
+        if unicodedata.category(ch) in ("Cc", "Cf") and ch not in " \t":
+            return f"U+{ord(ch):04X}"
+    return None
+
+
 @lru_cache(maxsize=256)
 def _unit(unit: str) -> pint.Unit:
     return ureg.Unit(unit)
@@ -65,8 +85,16 @@ def parse_quantity(value: str | float | int, unit: str, *, field: str = "value")
                 f"The {field} needs a unit (e.g. \"{value} {unit}\"); got the bare number {value!r}."
             )
     else:
+        text = str(value)
+        if len(text) > MAX_QUANTITY_TEXT:
+            raise InputError(f"The {field} is not a quantity: its text has {len(text)} characters, more than the "
+                             f"{MAX_QUANTITY_TEXT} a quantity such as \"45 mm\" needs.")
+        hidden = _invisible(text)
+        if hidden is not None:
+            raise InputError(f"The {field} contains the invisible character {hidden}; write the quantity in plain "
+                             f"text; got {value!r}.")
         try:
-            quantity: Any = Q_(str(value).strip())
+            quantity: Any = Q_(text.strip())
         except Exception as exc:  # pint raises several unrelated exception types for bad text
             raise InputError(f"The {field} is not a quantity with a unit; got {value!r} ({exc}).") from None
         if not isinstance(quantity, pint.Quantity):
@@ -80,6 +108,9 @@ def parse_quantity(value: str | float | int, unit: str, *, field: str = "value")
             ) from None
     if magnitude != magnitude or magnitude in (float("inf"), float("-inf")):
         raise InputError(f"The {field} must be a finite number; got {value!r}.")
+    if abs(magnitude) > MAX_MAGNITUDE:
+        raise InputError(f"The {field} must be at most {MAX_MAGNITUDE:g} {unit or ''} in magnitude (larger values "
+                         f"are not physical for a machine and overflow the analysis); got {value!r}.")
     return magnitude
 
 

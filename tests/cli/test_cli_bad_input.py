@@ -77,7 +77,7 @@ CASES = [
     ("bad_gravity", GOOD_FOUR_BAR + '[loads]\ngravity = "sideways"\n',
      ['loads.gravity: must be "on", "off" or a vector', "got 'sideways'"], 2),
     ("too_few_positions", GOOD_FOUR_BAR.replace("positions = 36", "positions = 1"),
-     ["drive.positions: must be >= 2; got 1"], 2),
+     ["drive.positions: must be >= 8; got 1"], 2),
     ("fractional_positions", GOOD_FOUR_BAR.replace("positions = 36", "positions = 36.5"),
      ["drive.positions: must be a whole number; got 36.5"], 2),
     ("stop_before_start", GOOD_FOUR_BAR + 'start = "90 deg"\nstop = "10 deg"\n',

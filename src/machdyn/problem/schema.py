@@ -281,7 +281,7 @@ class DriveSpec(Spec):
 
     speed: AngularVelocity
     acceleration: AngularAcceleration = 0.0
-    positions: int = Field(360, ge=2, le=1_000_000, strict=True)
+    positions: int = Field(360, ge=8, le=1_000_000, strict=True)  # fewer cannot show a cycle's extremes
     start: Angle | None = None
     stop: Angle | None = None
 
