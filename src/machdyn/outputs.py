@@ -69,3 +69,76 @@ def write_json(path: str | os.PathLike, data: Any) -> Path:
 def write_frame_csv(path: str | os.PathLike, frame) -> Path:
     """Write a pandas DataFrame (units in its column headers) to ``path`` as CSV without the index, atomically."""
     return atomic_write(path, lambda f: frame.to_csv(f, index=False, float_format="%.10g", lineterminator="\n"))
+
+
+MANIFEST = ".machdyn-outputs.json"
+
+
+class OutputSet:
+    """The files of one run, written into a hidden staging folder inside ``out_dir`` and swapped in together.
+
+    Until :meth:`commit` the folder keeps the previous run's set untouched; an interrupted or failed run removes
+    its staging folder (and ``out_dir`` itself if the run created it and left it empty). At commit each new file
+    replaces its old one and the files of the previous set that this run did not write (a CSV of a capability
+    no longer in the file) are removed, as listed in the folder's manifest, so old and new never mix.
+    """
+
+    def __init__(self, out_dir: str | os.PathLike):
+        self.out = Path(out_dir)
+        if self.out.exists() and not self.out.is_dir():
+            raise OSError(f"the output path '{self.out}' exists and is not a directory")
+        self._created = not self.out.exists()
+        self.out.mkdir(parents=True, exist_ok=True)
+        for stale in self.out.glob(".machdyn-partial-*"):  # left by a run that was killed
+            _remove_tree(stale)
+        self.stage = Path(tempfile.mkdtemp(dir=self.out, prefix=".machdyn-partial-"))
+        self.names: list[str] = []
+
+    def _target(self, name: str) -> Path:
+        self.names.append(name)
+        return self.stage / name
+
+    def text(self, name: str, text: str) -> None:
+        atomic_write_text(self._target(name), text)
+
+    def json(self, name: str, data: Any) -> None:
+        write_json(self._target(name), data)
+
+    def frame(self, name: str, frame) -> None:
+        write_frame_csv(self._target(name), frame)
+
+    def commit(self) -> list[Path]:
+        """Move the set into place; return the final paths."""
+        previous: list[str] = []
+        try:
+            previous = list(json.loads((self.out / MANIFEST).read_text(encoding="utf-8")))
+        except (OSError, ValueError, TypeError):
+            previous = []
+        paths = []
+        for name in self.names:
+            os.replace(self.stage / name, self.out / name)
+            paths.append(self.out / name)
+        for name in set(previous) - set(self.names):
+            if isinstance(name, str) and "/" not in name and name not in (MANIFEST, ""):
+                try:
+                    (self.out / name).unlink()
+                except OSError:
+                    pass
+        atomic_write_text(self.out / MANIFEST, json.dumps(self.names) + "\n")
+        _remove_tree(self.stage)
+        return paths
+
+    def abort(self) -> None:
+        """Remove the staging folder (and the output folder if this run created it and it is empty)."""
+        _remove_tree(self.stage)
+        if self._created:
+            try:
+                self.out.rmdir()
+            except OSError:
+                pass
+
+
+def _remove_tree(path: Path) -> None:
+    import shutil
+
+    shutil.rmtree(path, ignore_errors=True)

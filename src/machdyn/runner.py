@@ -132,20 +132,22 @@ class RunResult:
 
     def write(self, out_dir: str | os.PathLike, *, step: Step = no_step) -> list[Path]:
         """Write ``results.json``, ``<series>.csv`` per time series and ``report.html`` into ``out_dir``
-        (created if missing); each file atomically. Returns the paths written."""
-        from .outputs import atomic_write_text, write_frame_csv, write_json
+        (created if missing) as one set: all are written first, then swapped in together, so an interrupted
+        run leaves the previous set whole. Returns the paths written."""
+        from .outputs import OutputSet
 
-        out = Path(out_dir)
-        if out.exists() and not out.is_dir():
-            raise OSError(f"the output path '{out}' exists and is not a directory")
-        out.mkdir(parents=True, exist_ok=True)
-        paths = [write_json(out / "results.json", self.results_json())]
-        step("tables")
-        for name, frame in self.frames.items():
-            paths.append(write_frame_csv(out / f"{name}.csv", frame))
-        step("report")
-        paths.append(atomic_write_text(out / "report.html", self.report_html()))
-        return paths
+        outputs = OutputSet(out_dir)
+        try:
+            outputs.json("results.json", self.results_json())
+            step("tables")
+            for name, frame in self.frames.items():
+                outputs.frame(f"{name}.csv", frame)
+            step("report")
+            outputs.text("report.html", self.report_html())
+        except BaseException:
+            outputs.abort()
+            raise
+        return outputs.commit()
 
 
 def _loaded(problem: Any, text: str | None) -> LoadedProblem:

@@ -51,7 +51,7 @@ def test_every_example_runs_from_the_command_line(example, tmp_path):
     html = (out / "report.html").read_text()
     assert html.lstrip().lower().startswith("<!doctype html")
     assert "<script src" not in html and "<link" not in html  # self-contained
-    leftovers = [p.name for p in out.iterdir() if p.name.startswith(".")]
+    leftovers = [p.name for p in out.iterdir() if p.name.startswith(".") and p.name != ".machdyn-outputs.json"]
     assert leftovers == [], "no temporary files remain"
     if "conveyor" not in example.stem:
         for name in ("motion", "joint_forces", "torque_power", "shaking", "energy"):
@@ -199,11 +199,16 @@ def test_interrupted_write_leaves_no_half_file(tmp_path, monkeypatch):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["results.json"]
 
 
-def test_interrupted_run_leaves_only_whole_files(tmp_path, monkeypatch):
-    """Ctrl-C while the report is rendered: the files already written are whole, the report is absent."""
+def test_interrupted_run_leaves_the_previous_set_whole(tmp_path, monkeypatch):
+    """Ctrl-C while the report is rendered: an output folder of an earlier run keeps that run's whole set (no
+    mix of old and new files), a new folder is not left behind, and no staging files remain."""
     from machdyn import runner as runner_module
     from machdyn.problem import load_problem
 
+    old = runner_module.run_problem(load_problem(ROOT / "examples" / "slider_crank.toml"))
+    kept = tmp_path / "kept"
+    old.write(kept)
+    before = {p.name: p.read_bytes() for p in kept.iterdir()}
     result = runner_module.run_problem(load_problem(ROOT / "examples" / "four_bar.toml"))
 
     def interrupt(self):
@@ -211,10 +216,24 @@ def test_interrupted_run_leaves_only_whole_files(tmp_path, monkeypatch):
 
     monkeypatch.setattr(runner_module.RunResult, "report_html", interrupt)
     with pytest.raises(KeyboardInterrupt):
-        result.write(tmp_path)
-    names = sorted(p.name for p in tmp_path.iterdir())
-    assert "report.html" not in names and not [n for n in names if n.startswith(".")]
-    json.loads((tmp_path / "results.json").read_text())
+        result.write(kept)
+    assert {p.name: p.read_bytes() for p in kept.iterdir()} == before
+    fresh = tmp_path / "fresh"
+    with pytest.raises(KeyboardInterrupt):
+        result.write(fresh)
+    assert not fresh.exists(), "a folder the run created is removed with its partial files"
+
+
+def test_a_new_set_replaces_the_old_one_entirely(tmp_path):
+    """A sweep's sweep.csv does not outlive the sweep: files the new run did not write are removed."""
+    from machdyn import runner as runner_module
+
+    runner_module.run_problem(ROOT / "examples" / "four_bar_sweep.toml").write(tmp_path)
+    assert (tmp_path / "sweep.csv").exists()
+    (tmp_path / "notes.txt").write_text("mine")
+    runner_module.run_problem(ROOT / "examples" / "four_bar.toml").write(tmp_path)
+    assert not (tmp_path / "sweep.csv").exists()
+    assert (tmp_path / "notes.txt").read_text() == "mine", "files machdyn did not write are left alone"
 
 
 def test_out_directory_is_created(tmp_path):
