@@ -17,8 +17,8 @@ from pathlib import Path
 import pytest
 
 from machdyn.report import render_report
-from machdyn.report.mechanism import analysis_sections
-from machdyn.results.linkage import analysis_scalars
+from machdyn.report.mechanism import analysis_sections, torque_harmonics
+from machdyn.results.linkage import analysis_scalars, linkage_scalars
 
 CANDIDATES = ("chromium", "chromium-browser", "google-chrome", "google-chrome-stable", "chrome")
 
@@ -80,7 +80,8 @@ def test_report_opens_without_console_errors(tmp_path, which, four_bar_analysis,
         problem_text="[mechanism]\ntype = \"four_bar\"  # <b>not bold</b>\n",
         summary_rows=rows,
         warnings=["a warning with <tags> & ampersands"],
-        sections=[*analysis_sections(analysis), ("Extra", "<table><tr><td>extra cell</td></tr></table>")],
+        sections=[*analysis_sections(analysis, harmonics=torque_harmonics(linkage_scalars(analysis, harmonic_orders=6)[0])),  # noqa: E501
+                  ("Extra", "<table><tr><td>extra cell</td></tr></table>")],
     )
     page = tmp_path / "report.html"
     page.write_text(html, encoding="utf-8")

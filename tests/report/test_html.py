@@ -5,13 +5,21 @@ from __future__ import annotations
 import re
 import time
 
+import numpy as np
 import pytest
 
 from machdyn.report import format_value, render_report
-from machdyn.report.mechanism import analysis_sections
-from machdyn.results.linkage import analysis_scalars
+from machdyn.report.mechanism import analysis_sections, torque_harmonics
+from machdyn.results.linkage import analysis_scalars, linkage_scalars
 
 NASTY = '<script>alert("x")</script> & <b>bold</b>'
+
+
+def _sections(analysis, shaking_about):
+    """The report sections of an analysis, with the harmonics the results stage gives (6 orders)."""
+    designs = np.ndim(analysis.forces.driving_torque) == 2
+    scalars = {} if designs else linkage_scalars(analysis, harmonic_orders=6)[0]
+    return analysis_sections(analysis, shaking_about=shaking_about, harmonics=torque_harmonics(scalars))
 
 
 def _render(analysis=None, extra=(), shaking_about=(0.0, 0.0), **kw):
@@ -20,8 +28,7 @@ def _render(analysis=None, extra=(), shaking_about=(0.0, 0.0), **kw):
         problem_text=f"[mechanism]\nname = '{NASTY}'\n",
         summary_rows=[(f"quantity {NASTY}", 1.23456789, "N*m"), ("text value", NASTY, ""), ("n", 3, "")],
         warnings=[f"warning {NASTY}"],
-        sections=[*(analysis_sections(analysis, shaking_about=shaking_about) if analysis is not None else []),
-                  *extra],
+        sections=[*(_sections(analysis, shaking_about) if analysis is not None else []), *extra],
     )
     args.update(kw)
     return render_report(**args)

@@ -102,8 +102,12 @@ def run(ctx: StageContext) -> Outcome:
             best = int(np.argmin(data))
             key = f"sweep.lowest_{attr}"
             values[key] = float(data[best])
-            labels[key] = Label(f"Sweep: lowest {text.lower()} (at {plan.parameter} = "
-                                f"{plan.values_display[best]:.6g} {unit})", u)
+            # Designs within round-off of the best tie: name them all rather than pick one arbitrarily.
+            ties = np.flatnonzero(data <= data[best] + 1e-9 * max(abs(data[best]), 1e-300))
+            at = ", ".join(f"{plan.values_display[i]:.6g}" for i in ties[:5]) + (" ..." if ties.size > 5 else "")
+            where = (f"at {plan.parameter} = {at} {unit}" if ties.size == 1
+                     else f"{ties.size} designs tie, at {plan.parameter} = {at} {unit}")
+            labels[key] = Label(f"Sweep: lowest {text.lower()} ({where})", u)
             summary.append(key)
     else:
         warnings.append(f"No design of the sweep of {plan.parameter} is regular: each fails to assemble or passes "

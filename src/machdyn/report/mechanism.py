@@ -4,34 +4,58 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from ..linkage import model as _model
-from ..results.linkage import full_uniform_cycle, includes_end_point, joint_list, mechanism_of
+from ..results.linkage import LINKAGE_LABELS, joint_list, mechanism_of
 from ..results.linkage import slider_bodies as _slider_bodies
 from . import plots
 from .html import Figure, _render, figures_html, format_value, rows_html
+
+
+@dataclass(frozen=True)
+class HarmonicBars:
+    """Amplitudes of the driving torque's harmonics (orders 1..K) and its mean, as the results stage gave them."""
+
+    orders: np.ndarray
+    amplitude: np.ndarray
+    mean: float | None
+
+
+def torque_harmonics(scalars: Any) -> HarmonicBars | None:
+    """The driving torque's harmonics among a run's scalar results (None if the run has none)."""
+    orders = sorted(int(k.split(".")[1].removeprefix("harmonic_")) for k in scalars
+                    if k.startswith("driving_torque.harmonic_") and k.endswith(".amplitude"))
+    if not orders:
+        return None
+    amp = np.array([scalars[f"driving_torque.harmonic_{k}.amplitude"] for k in orders], dtype=float)
+    mean = scalars.get("driving_torque.mean")
+    return HarmonicBars(np.asarray(orders, dtype=float), amp, None if mean is None else float(mean))
 
 
 def sections(outcome: Any) -> list[tuple[str, str]]:
     """The diagnostics table and the plots of a linkage kind's outcome."""
     about = (float(outcome.scalars.get("shaking_moment.about_x", 0.0)),
              float(outcome.scalars.get("shaking_moment.about_y", 0.0)))
-    return analysis_sections(outcome.analysis, outcome.mechanism, shaking_about=about)
+    return analysis_sections(outcome.analysis, outcome.mechanism, shaking_about=about,
+                             harmonics=torque_harmonics(outcome.scalars))
 
 
 def analysis_sections(
-    analysis: Any, mechanism: Any = None, *, shaking_about: tuple[float, float] = (0.0, 0.0)
+    analysis: Any, mechanism: Any = None, *, shaking_about: tuple[float, float] = (0.0, 0.0),
+    harmonics: HarmonicBars | None = None,
 ) -> list[tuple[str, str]]:
-    """("Diagnostics", table) and ("Plots", figures) of an :func:`~machdyn.linkage.analyse` result."""
+    """("Diagnostics", table) and ("Plots", figures) of an :func:`~machdyn.linkage.analyse` result; the
+    torque's ``harmonics`` (from the results stage, see :func:`torque_harmonics`) add a bar chart."""
     mech = mechanism if mechanism is not None else mechanism_of(analysis)
     out = []
     rows = diagnostics_rows(analysis.diagnostics, mech)
     if rows:
         out.append(("Diagnostics", rows_html(rows)))
-    figures = analysis_figures(analysis, mech, shaking_about=shaking_about)
+    figures = analysis_figures(analysis, mech, shaking_about=shaking_about, harmonics=harmonics)
     if figures:
         out.append(("Plots", figures_html(figures)))
     return out
@@ -86,7 +110,7 @@ def diagnostics_rows(diagnostics: Any, mechanism: Any = None) -> list[tuple[str,
             rows.append((f"Swing of {body}", _deg(stroke)))
     tr = getattr(diagnostics, "time_ratio", None)
     if tr is not None:
-        rows.append(("Time ratio (working / return stroke)", format_value(np.asarray(tr, float).tolist())))
+        rows.append((LINKAGE_LABELS["time_ratio"].text, format_value(np.asarray(tr, float).tolist())))
     lo = getattr(diagnostics, "transmission_angle_min", None)
     hi = getattr(diagnostics, "transmission_angle_max", None)
     if lo is not None:
@@ -131,6 +155,7 @@ def analysis_figures(
     *,
     positions: int = 4,
     shaking_about: tuple[float, float] = (0.0, 0.0),
+    harmonics: HarmonicBars | None = None,
 ) -> list[Figure]:
     """The standard plots of an analysis, rendered to inline SVG (the shaking moment about
     ``shaking_about`` [m])."""
@@ -265,18 +290,18 @@ def analysis_figures(
         )
     )
 
-    harmonics = _torque_harmonics(forces, kin)
     if harmonics is not None:
+        bars = harmonics
         out.append(
             _render(
                 "harmonics",
                 "Harmonics of the driving torque",
-                "Amplitudes of the Fourier series of the driving torque over the crank angle "
-                "(order 0 is the mean).",
+                f"Amplitudes of the Fourier series of the driving torque over the crank angle, orders 1 to "
+                f"{int(bars.orders.max())} as asked for by [output] harmonics (order 0 is the mean).",
                 (7.4, 2.7),
                 lambda fig: plots.plot_harmonics(
                     fig.add_subplot(),
-                    harmonics,
+                    bars,
                     unit="N·m",
                     label="driving torque",
                     title="Harmonics of the driving torque",
@@ -284,21 +309,3 @@ def analysis_figures(
             )
         )
     return out
-
-
-def _torque_harmonics(forces: Any, kin: Any):
-    if not full_uniform_cycle(kin.crank_angle):
-        return None
-    torque = np.asarray(forces.driving_torque, dtype=float)
-    torque = torque[0] if torque.ndim == 2 else torque
-    if not np.all(np.isfinite(torque)):
-        return None
-    from ..linkage.harmonics import harmonics
-
-    phi = np.asarray(kin.crank_angle, dtype=float).ravel()
-    if includes_end_point(phi):
-        phi, torque = phi[:-1], torque[:-1]
-    orders = min(10, phi.size // 2 - 1)
-    return harmonics(torque, phi, orders=orders) if orders >= 1 else None
-
-
