@@ -105,11 +105,40 @@ def _show(value: Any) -> str:
     return repr(value)
 
 
+def _member_label(key: Any) -> bool:
+    """True for the labels pydantic puts in an error's location for the members of a union
+    (``literal['on','off']``, ``tuple[function-before[...], ...]``): they are not keys of the file."""
+    return isinstance(key, str) and ("[" in key or key.startswith("function-"))
+
+
+def _merge_alternatives(errors: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """Errors of a value that matches none of a union's members come once per member; keep the members that
+    fit the value's type (a list is not a misspelled 'on'), and say the others in one message."""
+    groups: dict[tuple, list[dict[str, Any]]] = {}
+    order: list[tuple] = []
+    for err in errors:
+        loc = tuple(err["loc"])
+        cut = next((i for i, k in enumerate(loc) if _member_label(k)), None)
+        key = loc[:cut] if cut is not None else ("", *loc)
+        if key not in groups:
+            order.append(key)
+            groups[key] = []
+        groups[key].append(dict(err, loc=tuple(k for k in loc if not _member_label(k))))
+    out: list[dict[str, Any]] = []
+    for key in order:
+        group = groups[key]
+        if len(group) > 1 and key and key[0] != "":
+            fitting = [e for e in group if not (e["type"] == "literal_error" and not isinstance(e.get("input"), str))]
+            group = fitting or group
+        out += group
+    return out
+
+
 def problems_from(exc: ValidationError, root: type[BaseModel], prefix: tuple[Any, ...] = ()) -> list[tuple[str, str]]:
     """One (path, message) per error of ``exc`` raised while validating ``root``."""
     out: list[tuple[str, str]] = []
     seen: set[tuple[str, str]] = set()
-    for err in exc.errors(include_url=False):
+    for err in _merge_alternatives(list(exc.errors(include_url=False))):
         loc = tuple(err["loc"])
         kind = err["type"]
         ctx = err.get("ctx") or {}

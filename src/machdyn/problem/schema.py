@@ -331,6 +331,8 @@ def _gravity(value: Any) -> Any:
         if word in ("on", "off"):
             return word
         raise FieldError(f'must be "on", "off" or a vector ["0 m/s^2", "-9.81 m/s^2"]; got {value!r}')
+    if not isinstance(value, list | tuple):
+        raise FieldError(f'must be "on", "off" or a vector ["0 m/s^2", "-9.81 m/s^2"]; got {value!r}')
     return value
 
 

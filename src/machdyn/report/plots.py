@@ -392,7 +392,9 @@ def plot_point_motion(
         else:
             b = kinematics.body(point)
             unit = ("deg", "rad/s", "rad/s²")[level]
-            values = (np.degrees(b.angle), b.omega, b.alpha)[level]
+            # A rocker swinging through +-180 deg would jump by 360 deg: draw the continuous angle.
+            angle = np.degrees(np.unwrap(np.asarray(b.angle, dtype=float), axis=-1)) if level == 0 else None
+            values = (angle, b.omega, b.alpha)[level]
             curves = [(f"{point} {('θ', 'ω', 'α')[level]}", values)]
     n_before = len(ax.get_lines())
     for k, (label, values) in enumerate(curves):
