@@ -77,7 +77,24 @@ def run_sweep(problem: Any) -> SweepRun:
         raise ProblemFileError([("sweep", "a sweep of the drive needs a number of values different from "
                                           f"drive.positions ({np.size(angles)}); got as many")])
     about = tuple(problem.output.shaking_moment_about)
-    return SweepRun(plan, sweep(stack_designs(mechs), angles, speed, accel, shaking_about=about))
+    result = sweep(stack_designs(mechs), angles, speed, accel, shaking_about=about)
+    return SweepRun(plan, _per_variant(result, len(plan.problems)))
+
+
+def _per_variant(result: Any, n: int) -> Any:
+    """The summaries with one entry per variant: variants that are all alike stack into one design."""
+    from dataclasses import fields, replace
+
+    if np.size(result.regular) == n:
+        return result
+
+    def spread(values: Any) -> np.ndarray:
+        return np.broadcast_to(np.asarray(values).ravel(), (n,)).copy()
+
+    changes: dict[str, Any] = {f.name: spread(getattr(result, f.name)) for f in fields(result)
+                               if isinstance(getattr(result, f.name), np.ndarray)}
+    changes["max_joint_force"] = {k: spread(v) for k, v in result.max_joint_force.items()}
+    return replace(result, **changes)
 
 
 def run(ctx: StageContext) -> Outcome:
