@@ -9,7 +9,6 @@ import os
 import shutil
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
@@ -84,21 +83,9 @@ def test_rotary_screen_prints_the_seed_002_energy_figures(tmp_path):
     assert (out / "report.html").exists()
 
 
-def test_rotary_screen_run_takes_under_3_seconds(tmp_path):
-    best = float("inf")
-    for _ in range(2):
-        started = time.perf_counter()
-        proc = _machdyn("run", "examples/rotary_screen.toml", "--out", str(tmp_path / "out"), "--quiet")
-        best = min(best, time.perf_counter() - started)
-        assert proc.returncode == 0, proc.stderr
-        if best < 3.0:
-            break
-    assert best < 3.0, f"machdyn run took {best:.2f} s"
-
-
 def test_start_up_does_not_import_heavy_libraries():
-    code = ("import sys, machdyn.cli; heavy = [m for m in ('matplotlib', 'pandas', 'dask', 'scipy') "
-            "if m in sys.modules]; print(','.join(heavy))")
+    heavy = "('matplotlib', 'pandas', 'dask', 'scipy', 'numba', 'pyarrow', 'pymoo', 'distributed')"
+    code = f"import sys, machdyn.cli; heavy = [m for m in {heavy} if m in sys.modules]; print(','.join(heavy))"
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert proc.stdout.strip() == ""
 

@@ -54,6 +54,17 @@ def analyse_linkage(problem: Any, mech: Any, step: Step, warnings: list[str] | N
     for w in getattr(analysis.diagnostics, "warnings", None) or []:
         if str(w) not in said:
             said.append(str(w))
+    if np.ndim(analysis.forces.driving_torque) == 1:
+        from ..results.linkage import full_uniform_cycle, load_powers
+
+        for name, (mean, rms) in load_powers(analysis).items():
+            values[f"load.{name}.mean_power"] = mean
+            # Over a whole turn a process load takes work out of the machine; one that puts work in has
+            # most likely been given the wrong sign.
+            if full_uniform_cycle(analysis.kinematics.crank_angle) and mean > 1e-3 * rms:
+                said.append(f"The load '{name}' does positive work over the cycle (mean power {mean:.4g} W): it "
+                            "drives the mechanism instead of resisting it. If it is a process load (a cutting, "
+                            "pressing or compaction force), reverse its sign or its active window.")
     joints = [k for k in values if k.startswith("joint.")]
     strokes = [k for k in values if k.startswith("stroke.")]
     return Outcome(

@@ -51,6 +51,8 @@ def _pattern(key: str, unit: str) -> Label | None:
     parts = key.split(".")
     if parts[0] == "joint" and len(parts) == 3 and parts[2] == "max_force":
         return Label(f"Joint {parts[1]}, max force", "N")
+    if parts[0] == "load" and len(parts) == 3 and parts[2] == "mean_power":
+        return Label(f"Load {parts[1]}, mean power (negative: the drive works against it)", "W")
     if parts[0] == "stroke" and len(parts) == 2:
         return Label(f"Stroke of {parts[1]}", unit)
     if len(parts) >= 3 and parts[-2].startswith("harmonic_"):

@@ -290,6 +290,24 @@ def harmonic_scalars(analysis: Any, about: tuple[float, float], orders: int) -> 
     return values, units
 
 
+def load_powers(analysis: Any) -> dict[str, tuple[float, float]]:
+    """(time-mean, RMS) power [W] of each applied point force and body torque over the analysed positions:
+    P = F·v_point for a force, T·ω_body for a torque. A negative mean is a load the drive works against; a
+    positive mean is a load that drives the mechanism. Single designs only."""
+    from ..linkage.averages import time_mean, time_rms
+    from ..linkage.loads import applied_forces, applied_torques
+
+    kin = analysis.kinematics
+    out: dict[str, tuple[float, float]] = {}
+    for f in applied_forces(kin):
+        power = np.asarray(f.fx * f.motion.vx + f.fy * f.motion.vy, dtype=float)
+        out[f.name] = (float(np.ravel(time_mean(power, kin))[0]), float(np.ravel(time_rms(power, kin))[0]))
+    for t in applied_torques(kin):
+        power = np.asarray(t.torque * kin.body(t.body).omega, dtype=float)
+        out[t.name] = (float(np.ravel(time_mean(power, kin))[0]), float(np.ravel(time_rms(power, kin))[0]))
+    return out
+
+
 def analysis_scalars(analysis: Any, mechanism: _model.Mechanism | None = None) -> dict[str, dict[str, Any]]:
     """Every scalar result of an analysis as ``{key: {"value", "unit"}}`` in display units (angles in
     degrees), as written to results.json; for N design variants each value is a list of N floats."""
