@@ -138,3 +138,22 @@ def test_a_rocker_through_180_deg_is_plotted_without_a_jump():
     plots.plot_point_motion(ax, result.kinematics, "rocker")
     drawn = ax.get_lines()[0].get_ydata()
     assert np.max(np.abs(np.diff(drawn))) < 10
+
+
+def test_a_load_that_drives_the_machine_is_warned_about():
+    """A process force acting over half a turn does net work; the sign that helps the motion is warned about,
+    the sign that resists it is not. (A constant force does no net work over a closed cycle: no warning.)"""
+    from machdyn.runner import run_problem
+
+    def run(fy: str):
+        text = FOUR_BAR + ('\n[[loads.forces]]\nname = "process"\npoint = "coupler.P"\nfx = "0 N"\n'
+                           f'fy = "{fy}"\nactive = ["0 deg", "180 deg"]\n')
+        result = run_problem(text)
+        warned = any("'process' does positive work" in w for w in result.warnings)
+        return result.results["load.process.mean_power"], warned
+
+    (down, warned_down), (up, warned_up) = run("-50 N"), run("50 N")
+    assert down == pytest.approx(-up, rel=1e-9) and abs(down) > 0.1
+    assert warned_down == (down > 0) and warned_up == (up > 0) and warned_down != warned_up
+    constant = run_problem(FOUR_BAR + '\n[[loads.forces]]\nname = "weight"\npoint = "coupler.P"\nfy = "-50 N"\n')
+    assert not any("'weight' does positive work" in w for w in constant.warnings)
