@@ -157,3 +157,13 @@ def test_a_load_that_drives_the_machine_is_warned_about():
     assert warned_down == (down > 0) and warned_up == (up > 0) and warned_down != warned_up
     constant = run_problem(FOUR_BAR + '\n[[loads.forces]]\nname = "weight"\npoint = "coupler.P"\nfy = "-50 N"\n')
     assert not any("'weight' does positive work" in w for w in constant.warnings)
+
+
+def test_the_rotary_screen_names_its_joints_as_the_paper_does():
+    """Seed 002, fig 2: A is the crank centre, B the crank-rod joint, C the rod-slider joint."""
+    from machdyn.runner import run_problem
+
+    rows = {r.key: r.label for r in run_problem(ROOT / "examples" / "rotary_screen.toml").summary.rows}
+    assert rows["joint.O.max_force"].startswith("Joint A, the crank centre")
+    assert rows["joint.A.max_force"].startswith("Joint B, crank to rod")
+    assert rows["joint.B.max_force"].startswith("Joint C, rod to slider")

@@ -11,6 +11,10 @@ from ..results.labels import Label
 from ..results.linkage import LINKAGE_LABELS
 from .linkage_run import analyse_linkage, check_assembly
 
+#: The engine's joints by the paper's names (seed 002, fig 2): A the crank centre, B crank-rod, C rod-slider.
+PAPER_JOINTS = {"O": "A, the crank centre", "A": "B, crank to rod", "B": "C, rod to slider",
+                "slider/ground": "of the slider on its guide"}
+
 _COLUMNS = {"paper": "as printed", "formula": "paper's formula, corrected", "engine": "exact, engine"}
 
 #: The figures shown in the summary (figure, column), in order.
@@ -51,6 +55,8 @@ def analyse(problem: Any, mech: Any, step: Step) -> Outcome:
                 where = f", {f['source']}" if f.get("source") and col != "engine" else ""
                 text = f["quantity"][:1].upper() + f["quantity"][1:]
                 labels[name] = Label(f"{text}{where} ({words})", f["unit"])
+    for joint, paper in PAPER_JOINTS.items():
+        labels[f"joint.{joint}.max_force"] = Label(f"Joint {paper} (engine: {joint}), max force", "N")
     summary = tuple(f"rotary_screen.{k}.{c}" for k, c in SUMMARY_FIGURES if f"rotary_screen.{k}.{c}" in values)
     return Outcome(
         results=figures, scalars={**linkage.scalars, **values}, units=linkage.units, labels=labels,
