@@ -211,7 +211,7 @@ def analysis_figures(
     if mech is not None:
         order = [j[0] for j in _model.joints(mech)]
         joints.sort(key=lambda name: order.index(name) if name in order else len(order))
-    ncols = min(4, max(1, len(joints)))
+    ncols = 2 if len(joints) == 4 else min(3, max(1, len(joints)))  # room for the radial tick labels
     nrows = math.ceil(len(joints) / ncols)
 
     def draw_joints(fig):
@@ -227,7 +227,7 @@ def analysis_figures(
             "Polar diagrams of the joint reactions: the tip of the force vector on the later body from "
             "the earlier body over one cycle (radius = magnitude in N, angle = direction in the global "
             f"frame); the dot marks the first crank position.{note}",
-            (7.4, 2.3 * nrows),
+            (7.4, 3.1 * nrows),
             draw_joints,
             margins=(0.4, 0.4, 0.25, 0.5),
             wspace=0.65,

@@ -431,7 +431,8 @@ def _polar_locus(ax: Axes, fx: Any, fy: Any, label: str, colour: str, design: in
             (line,) = ax.plot(x, y, color=c, linewidth=1.5, label=_label(label, d))
             ax.plot(x[:1], y[:1], marker="o", color=line.get_color(), markersize=5, linestyle="none")
     if polar:
-        ax.set_rlabel_position(112.5)  # type: ignore[attr-defined]  # a polar axes
+        ax.set_rlabel_position(67.5)  # type: ignore[attr-defined]  # between the 45 and 90 deg labels
+        ax.tick_params(axis="y", labelsize=7)
         ax.set_thetagrids(  # type: ignore[attr-defined]
 range(0, 360, 45), ["0°", "", "90°", "", "180°", "", "270°", ""])
         ax.yaxis.set_major_locator(MaxNLocator(3))
