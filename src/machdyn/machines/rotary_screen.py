@@ -171,11 +171,32 @@ def link_ratio(screen: RotaryScreen) -> float:
 
 
 def slider_position_series(alpha, R, L):
-    """Seed 002 eq 1: S ~ L + R [cos alpha - (lambda/4)(1 - cos 2 alpha)] [m], lambda = R/L.
+    """Slider position of a centred slider-crank, first order in λ (seed 002, eq 1).
 
-    First-order expansion of the exact S = R cos alpha + sqrt(L^2 - R^2 sin^2 alpha) (correct; repro 002.3).
-    Parameters: alpha crank angle [rad]; R crank radius [m] > 0; L rod length [m] > R. Error about
-    R lambda^3 sin^4 alpha / 8.
+    S ≈ L + R [cos α − (λ/4)(1 − cos 2α)], λ = R/L: the expansion of the exact
+    S = R cos α + √(L² − R² sin² α) (:func:`slider_position_exact`), correct (repro 002.3).
+
+    Parameters
+    ----------
+    alpha : float or array
+        Crank angle α [rad], any real.
+    R : float
+        Crank radius [m], > 0.
+    L : float
+        Rod length [m], > R.
+
+    Returns
+    -------
+    float or array
+        S [m], measured from the crank centre along the slide line. Valid for λ ≲ 0.3: the error is about
+        R λ³ sin⁴ α / 8.
+
+    Examples
+    --------
+    >>> round(float(slider_position_series(np.pi / 3, 0.1, 0.8)), 7)
+    0.8453125
+    >>> round(float(slider_position_exact(np.pi / 3, 0.1, 0.8)), 7)
+    0.8452987
     """
     check_positive("crank radius R", R, "m")
     check_positive("rod length L", L, "m")
@@ -184,9 +205,26 @@ def slider_position_series(alpha, R, L):
 
 
 def slider_velocity_series(alpha, R, L, omega):
-    """Seed 002 eq 2: v ~ -omega R (sin alpha + (lambda/2) sin 2 alpha) [m/s]. Correct to first order in lambda.
+    """Slider velocity, first order in λ (seed 002, eq 2): v ≈ −ω R (sin α + (λ/2) sin 2α).
 
-    Parameters: alpha [rad]; R [m] > 0; L [m] > R; omega [rad/s] (constant).
+    Parameters
+    ----------
+    alpha : float or array
+        Crank angle α [rad].
+    R, L : float
+        Crank radius and rod length [m], 0 < R < L.
+    omega : float
+        Constant crank speed ω [rad/s].
+
+    Returns
+    -------
+    float or array
+        v [m/s]; correct to first order in λ = R/L (valid for λ ≲ 0.3).
+
+    Examples
+    --------
+    >>> round(float(slider_velocity_series(np.pi / 3, 0.1, 0.8, 21.0)), 6)
+    -1.932319
     """
     check_positive("crank radius R", R, "m")
     check_positive("rod length L", L, "m")
@@ -195,9 +233,26 @@ def slider_velocity_series(alpha, R, L, omega):
 
 
 def slider_acceleration_series(alpha, R, L, omega):
-    """Seed 002 eq 3: a ~ -omega^2 R (cos alpha + lambda cos 2 alpha) [m/s^2]. Correct to first order.
+    """Slider acceleration, first order in λ (seed 002, eq 3): a ≈ −ω² R (cos α + λ cos 2α).
 
-    Parameters: alpha [rad]; R [m] > 0; L [m] > R; omega [rad/s] (constant).
+    Parameters
+    ----------
+    alpha : float or array
+        Crank angle α [rad].
+    R, L : float
+        Crank radius and rod length [m], 0 < R < L.
+    omega : float
+        Constant crank speed ω [rad/s].
+
+    Returns
+    -------
+    float or array
+        a [m/s²]; correct to first order in λ = R/L (valid for λ ≲ 0.3).
+
+    Examples
+    --------
+    >>> round(float(slider_acceleration_series(np.pi / 3, 0.1, 0.8, 21.0)), 5)
+    -19.29375
     """
     check_positive("crank radius R", R, "m")
     check_positive("rod length L", L, "m")
@@ -230,16 +285,47 @@ def slider_velocity_exact(alpha, R, L, omega):
 
 
 def rotating_mass(screen: RotaryScreen) -> float:
-    """Seed 002 eq 4: m_B = (l_AS1/R) m1 + (l_CS2/L) m2 [kg] (567.5556 kg for the paper's screen).
+    """Mass substituted at the crank pin B (seed 002, eq 4): m_B = (l_AS1/R) m1 + (l_CS2/L) m2.
 
-    Static two-point substitution: the rod's share at B is weighted by l_CS2 (correct; repro 002).
+    Static two-point substitution of the crank and of the rod's share at B (correct; repro 002).
+
+    Parameters
+    ----------
+    screen : RotaryScreen
+        The screen: R, L [m]; m1, m2 [kg]; l_AS1, l_CS2 [m].
+
+    Returns
+    -------
+    float
+        m_B [kg].
+
+    Examples
+    --------
+    >>> round(rotating_mass(PAPER_SCREEN), 4)
+    567.5556
     """
     s = _s(screen)
     return s.l_AS1 / s.R * s.m1 + s.l_CS2 / s.L * s.m2
 
 
 def translating_mass(screen: RotaryScreen) -> float:
-    """Seed 002 eq 5: m_C = (l_BS2/L) m2 + m3 [kg] (637.3333 kg for the paper's screen)."""
+    """Mass substituted at the slider C (seed 002, eq 5): m_C = (l_BS2/L) m2 + m3.
+
+    Parameters
+    ----------
+    screen : RotaryScreen
+        The screen: L, l_BS2 [m]; m2, m3 [kg].
+
+    Returns
+    -------
+    float
+        m_C [kg].
+
+    Examples
+    --------
+    >>> round(translating_mass(PAPER_SCREEN), 4)
+    637.3333
+    """
     s = _s(screen)
     return s.l_BS2 / s.L * s.m2 + s.m3
 
@@ -258,7 +344,24 @@ def t1(screen: RotaryScreen, alpha, *, with_lambda: bool = True):
 
 
 def t1_max(screen: RotaryScreen) -> float:
-    """Seed 002 eq 15: T1max = 1/2 m_C R^2 omega^2 [J], lambda ignored (284.5773 J for the paper's screen)."""
+    """Largest kinetic energy of the translating mass (seed 002, eq 15): T1max = ½ m_C R² ω².
+
+    Parameters
+    ----------
+    screen : RotaryScreen
+        The screen: R [m], ω [rad/s] and the masses of eq 5 [kg].
+
+    Returns
+    -------
+    float
+        T1max [J] with λ = R/L ignored, as the paper does; :func:`t1_max_with_lambda` keeps λ (it is 0.0156 %
+        larger for the paper's screen). Valid for λ ≲ 0.1.
+
+    Examples
+    --------
+    >>> round(t1_max(PAPER_SCREEN), 4)
+    284.5773
+    """
     s = _s(screen)
     return 0.5 * translating_mass(s) * s.R**2 * s.omega**2
 
@@ -327,10 +430,25 @@ def fluctuation_power(screen: RotaryScreen) -> float:
 
 
 def spring_stiffness(screen: RotaryScreen) -> float:
-    """Seed 002 eq 17: K = m_C omega^2 [N/m] (281 064 N/m for the paper's screen).
+    """Stiffness of the energy-storing spring (seed 002, eq 17): K = m_C ω².
 
-    From T1max = V1max = 1/2 K R^2 (eqs 14-16); sqrt(K/m_C) = omega, i.e. the spring tunes the translating mass
-    to resonate at the running speed.
+    From T1max = V1max = ½ K R² (eqs 14–16); √(K/m_C) = ω, i.e. the spring tunes the translating mass to
+    resonate at the running speed.
+
+    Parameters
+    ----------
+    screen : RotaryScreen
+        The screen: ω [rad/s] and the masses of eq 5 [kg].
+
+    Returns
+    -------
+    float
+        K [N/m].
+
+    Examples
+    --------
+    >>> round(spring_stiffness(PAPER_SCREEN))
+    281064
     """
     s = _s(screen)
     return translating_mass(s) * s.omega**2
