@@ -139,6 +139,11 @@ def force_gain_crank(alpha):
     balances a force P / cos alpha **normal to the plate at A** (V_A . n_plate = r omega1 cos alpha). It is not
     the force along the plate (that would be P / sin alpha). alpha [rad], |alpha| != 90 deg.
     Returns 1/cos alpha (negative when the plate's normal opposes the crank's tangent).
+
+    Examples
+    --------
+    >>> round(float(force_gain_crank(np.radians(60.0))), 12)
+    2.0
     """
     check_finite("angle alpha", alpha, "rad")
     return 1.0 / np.cos(alpha)
@@ -150,6 +155,11 @@ def force_gain_lever(l, a):
     The plate is a lever with its fulcrum at B (supported by the near-vertical pendulum): a force at A
     (distance l from B) gives l/a times that force at a particle a distance a from B. Parameters: l plate length
     [m] > 0; a distance of the particle from B along the plate [m], 0 < a <= l.
+
+    Examples
+    --------
+    >>> float(force_gain_lever(0.6, 0.15))
+    4.0
     """
     check_positive("plate length l", l, "m")
     check_positive("lever arm a", a, "m")
@@ -163,6 +173,11 @@ def plate_normal_force(driving_torque, r, alpha):
 
     Virtual work on a massless mechanism (repro 003.3). Parameters: driving torque M [N m]; r crank radius [m]
     > 0; alpha crank-plate angle [rad].
+
+    Examples
+    --------
+    >>> round(float(plate_normal_force(30.0, 0.05, np.radians(60.0))), 9)
+    1200.0
     """
     check_positive("crank radius r", r, "m")
     return np.asarray(driving_torque, dtype=float) / r * force_gain_crank(alpha)
@@ -172,6 +187,11 @@ def transmission_angle(theta2, theta3):
     """Transmission angle [rad] between plate and pendulum, |theta2 - theta3| folded into 0 ... pi.
 
     theta2, theta3 [rad]. For the illustrative geometry it stays within 82.5 ... 97.9 deg (repro 003.2).
+
+    Examples
+    --------
+    >>> round(float(np.degrees(transmission_angle(np.radians(10.0), np.radians(100.0)))), 9)
+    90.0
     """
     return np.abs(_wrap(np.asarray(theta2, dtype=float) - theta3))
 
