@@ -166,7 +166,9 @@ def slider_crank_masses(mech: Mechanism) -> SliderCrankMasses:
     m_pin, m_slide = rod_sub.masses
     extra_rod = [pm for pm in mech.point_masses if pm.body == rod.name]
     if extra_rod:
-        raise InputError(f"Point masses on the rod '{rod.name}' are not split; fold them into the rod's mass and centre.")
+        raise InputError(
+            f"Point masses on the rod '{rod.name}' are not split; fold them into the rod's mass and centre."
+        )
     _, crank_moment = _first_moment(mech, crank.name, pivot)
     slider_mass, _ = _first_moment(mech, dyad.b, np.zeros(2))
     rotating = crank_moment + m_pin * (pin - pivot)

@@ -10,6 +10,7 @@ Mechanisms*, 5th ed., sec. 16.3); springs and external loads of the model stay a
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import Any
 
 import numpy as np
 
@@ -123,8 +124,9 @@ def frame_loads(mech: Mechanism, crank_angle=None, speed: float = 1.0) -> FrameL
 
 def centre_of_mass(kin) -> tuple[np.ndarray, np.ndarray]:
     """Total centre of mass (x, y) [m] of every moving mass (bodies and point masses) at each position."""
-    total = 0.0
-    mx = my = 0.0
+    total: Any = 0.0
+    mx: Any = 0.0
+    my: Any = 0.0
     for m in mass_elements(kin):
         total = total + m.mass
         mx = mx + m.mass * m.motion.x

@@ -93,7 +93,8 @@ def _reference(mech: Mechanism, slot: CounterweightSlot) -> tuple[np.ndarray, bo
 @dataclass(frozen=True)
 class LinearForceModel:
     """The shaking force as F(x) = F0 + A x over the crank angles: ``f0`` (2M,) stacks Fx then Fy [N] of the
-    model as it is, ``matrix`` (2M, n) the force per unit of each unknown, ``unknowns`` names them."""
+    model as it is (without the point masses of :class:`MassSlot` slots, whose whole mass is an unknown),
+    ``matrix`` (2M, n) the force per unit of each unknown, ``unknowns`` names them."""
 
     f0: np.ndarray
     matrix: np.ndarray
@@ -108,6 +109,7 @@ def force_model(mech: Mechanism, slots: Sequence[Slot], crank_angle, speed: floa
     kin = kinematics(replace(mech, gravity=(0.0, 0.0)), phi, speed, 0.0)
     base = base or frame_loads(mech, phi, speed)
     cols, names, index = [], [], []
+    f0 = np.concatenate([base.fx, base.fy])
     for i, slot in enumerate(slots):
         if isinstance(slot, MassSlot):
             pm = next((p for p in mech.point_masses if p.name == slot.point_mass), None)
@@ -116,6 +118,7 @@ def force_model(mech: Mechanism, slots: Sequence[Slot], crank_angle, speed: floa
                                  f"{', '.join(p.name for p in mech.point_masses) or 'none'}.")
             P = kin.local_point(pm.body, pm.position)
             cols.append(np.concatenate([-np.broadcast_to(P.ax, phi.shape), -np.broadcast_to(P.ay, phi.shape)]))
+            f0 = f0 - float(pm.mass) * cols[-1]  # the unknown is the whole mass, not a change of it
             names.append(f"{pm.name}.mass")
             index.append((i, "m"))
             continue
@@ -131,7 +134,7 @@ def force_model(mech: Mechanism, slots: Sequence[Slot], crank_angle, speed: floa
             names.append(f"{slot.name}.{key}")
             index.append((i, key))
     matrix = np.stack(cols, axis=1) if cols else np.zeros((2 * phi.size, 0))
-    return LinearForceModel(np.concatenate([base.fx, base.fy]), matrix, tuple(names), tuple(index))
+    return LinearForceModel(f0, matrix, tuple(names), tuple(index))
 
 
 def _point_masses(mech: Mechanism, slots: Sequence[Slot], values: dict) -> Mechanism:
@@ -173,7 +176,7 @@ def _decode(mech: Mechanism, slots: Sequence[Slot], lin: LinearForceModel, x: np
     per: dict[int, dict[str, float]] = {}
     for (i, key), value in zip(lin.columns, x, strict=True):
         per.setdefault(i, {})[key] = float(value)
-    values = {}
+    values: dict[int, tuple[float, np.ndarray | None]] = {}
     for i, slot in enumerate(slots):
         v = per.get(i, {})
         if isinstance(slot, MassSlot):
@@ -240,7 +243,8 @@ def optimise_counterweights(mech: Mechanism, slots: Sequence[Slot], weights: Wei
     before = frame_loads(mech, phi, speed)
     scale = _terms(before, weights.measure)
     scale = np.where(scale > 0, scale, 1.0)
-    bounds, refs = [], []
+    bounds: list[tuple[float, float]] = []
+    refs: list[np.ndarray | None] = []
     for slot in slots:
         _check_bounds(slot)
         if isinstance(slot, MassSlot):

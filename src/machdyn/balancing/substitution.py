@@ -183,7 +183,9 @@ def dynamic_two_point(body: Body, point) -> Substitute:
     d = p - g
     a = float(np.hypot(*d))
     if a <= 0:
-        raise InputError(f"The substitute point of body '{body.name}' must differ from its centre of mass {g.tolist()} m.")
+        raise InputError(
+            f"The substitute point of body '{body.name}' must differ from its centre of mass {g.tolist()} m."
+        )
     b = equimomental_distance(m, inertia, a)
     q = g - d * (b / a)
     m1, m2 = two_point_masses(m, a, b)
@@ -218,7 +220,7 @@ def substituted_model(mech: Mechanism, sub: Substitute) -> Mechanism:
     body = mech.body(sub.body)
     bodies = tuple(replace(b, mass=0.0, inertia=0.0) if b.name == body.name else b for b in mech.bodies)
     added = tuple(
-        PointMass(f"{body.name}_sub{i + 1}", body.name, float(m), tuple(float(c) for c in xy))
+        PointMass(f"{body.name}_sub{i + 1}", body.name, float(m), (float(xy[0]), float(xy[1])))
         for i, (m, xy) in enumerate(zip(sub.masses, sub.points, strict=True))
     )
     return replace(mech, bodies=bodies, point_masses=tuple(mech.point_masses) + added)

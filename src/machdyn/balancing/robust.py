@@ -1,0 +1,170 @@
+"""One set of balancing masses for several operating states (strokes, phases, speeds) at once.
+
+Each state is a model of the same machine (same bodies and point masses, other geometry or speed). The shaking
+force of every state is linear in the shared counterweight unknowns (:func:`~machdyn.balancing.general.
+force_model`), so minimising the weighted sum of the states' mean square shaking forces is one stacked linear
+least-squares problem, solved with bounds by :func:`scipy.optimize.lsq_linear`; minimising the worst state is
+the small convex problem min t subject to ms_s(x) <= t, solved by :func:`scipy.optimize.minimize` (SLSQP) from
+the weighted-sum solution. The residual of each state is reported next to its value before.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import InputError, check_positive
+from ..linkage import Mechanism
+from .frame import FrameLoads, cycle, frame_loads
+from .general import CounterweightSlot, MassSlot, Slot, _decode, _point_masses, _reference, force_model
+
+__all__ = ["OperatingState", "StateRow", "RobustResult", "robust_counterweights"]
+
+
+@dataclass(frozen=True)
+class OperatingState:
+    """An operating state: a ``name``, its ``mechanism``, crank ``speed`` [rad/s] and ``weight`` [-] in the sum."""
+
+    name: str
+    mechanism: Mechanism
+    speed: float = 1.0
+    weight: float = 1.0
+
+
+@dataclass(frozen=True)
+class StateRow:
+    """Shaking force of one state before and after [N]: RMS and peak, and the RMS reduction [-]."""
+
+    state: str
+    rms_before: float
+    rms_after: float
+    peak_before: float
+    peak_after: float
+
+    @property
+    def reduction(self) -> float:
+        return 1.0 - self.rms_after / self.rms_before if self.rms_before > 0 else 0.0
+
+
+@dataclass(frozen=True)
+class RobustResult:
+    """The shared balancing masses: ``values`` {unknown name: value} (masses [kg], first moments [kg*m]), the
+    balanced ``models`` per state, ``rows`` per state, the frame loads ``before``/``after`` per state, the
+    ``mode`` ('sum' or 'worst') and ``notes``."""
+
+    values: dict
+    models: tuple[Mechanism, ...]
+    rows: tuple[StateRow, ...]
+    before: tuple[FrameLoads, ...]
+    after: tuple[FrameLoads, ...]
+    mode: str
+    notes: tuple[str, ...]
+
+    @property
+    def worst_after(self) -> float:
+        return max(r.rms_after for r in self.rows)
+
+    @property
+    def mean_reduction(self) -> float:
+        return float(np.mean([r.reduction for r in self.rows]))
+
+
+def _bounds(mech: Mechanism, slots: Sequence[Slot], columns) -> tuple[np.ndarray, np.ndarray]:
+    lo, hi = [], []
+    for i, key in columns:
+        slot = slots[i]
+        if isinstance(slot, MassSlot):
+            lo.append(slot.mass_bounds[0])
+            hi.append(slot.mass_bounds[1])
+        elif key == "m":
+            lo.append(slot.mass_bounds[0])
+            hi.append(slot.mass_bounds[1])
+        else:
+            lo.append(-np.inf)
+            hi.append(np.inf)
+    return np.array(lo, dtype=float), np.array(hi, dtype=float)
+
+
+def robust_counterweights(states: Sequence[OperatingState], slots: Sequence[Slot], mode: str = "sum",
+                          crank_angle=None) -> RobustResult:
+    """Balancing masses shared by all ``states`` minimising the weighted sum (``mode='sum'``) or the largest
+    (``mode='worst'``) mean square shaking force over a cycle (default 120 crank angles).
+
+    Slots as in :mod:`machdyn.balancing.general`; counterweights on pivoted bodies need a ``radius``.
+    """
+    from scipy.optimize import lsq_linear
+
+    if mode not in ("sum", "worst"):
+        raise InputError(f"The robust balancing mode must be 'sum' or 'worst'; got {mode!r}.")
+    if not states:
+        raise InputError("robust_counterweights needs at least one operating state; got none.")
+    if not slots:
+        raise InputError("robust_counterweights needs at least one slot; got none.")
+    for s in states:
+        check_positive(f"speed of state '{s.name}'", s.speed, "rad/s")
+        check_positive(f"weight of state '{s.name}'", s.weight, allow_zero=True)
+    for slot in slots:
+        if isinstance(slot, CounterweightSlot):
+            _reference(states[0].mechanism, slot)
+    phi = cycle(120) if crank_angle is None else np.asarray(crank_angle, dtype=float)
+    before = tuple(frame_loads(s.mechanism, phi, s.speed) for s in states)
+    models = [force_model(s.mechanism, slots, phi, s.speed, b) for s, b in zip(states, before, strict=True)]
+    lo, hi = _bounds(states[0].mechanism, slots, models[0].columns)
+    n = phi.size
+    scale = np.array([np.sqrt(s.weight / n) for s in states])
+    A = np.concatenate([w * lm.matrix for w, lm in zip(scale, models, strict=True)])
+    b = np.concatenate([-w * lm.f0 for w, lm in zip(scale, models, strict=True)])
+    col_scale = np.linalg.norm(A, axis=0)
+    col_scale = np.where(col_scale > 0, col_scale, 1.0)
+    fit = lsq_linear(A / col_scale, b, bounds=(lo * col_scale, hi * col_scale))
+    x = fit.x / col_scale
+    notes = [f"weighted-sum least squares: {fit.message}"]
+    if mode == "worst":
+        x, note = _minimax(models, x, lo, hi, n)
+        notes.append(note)
+    values = _decode(states[0].mechanism, slots, models[0], x)
+    balanced = tuple(_point_masses(s.mechanism, slots, values) for s in states)
+    after = tuple(frame_loads(m, phi, s.speed) for m, s in zip(balanced, states, strict=True))
+    rows = tuple(StateRow(s.name, bf.rms_force, af.rms_force, bf.peak_force, af.peak_force)
+                 for s, bf, af in zip(states, before, after, strict=True))
+    named = dict(zip(models[0].unknowns, (float(v) for v in x), strict=True))
+    return RobustResult(named, balanced, rows, before, after, mode, tuple(notes))
+
+
+def _minimax(models, x_sum: np.ndarray, lo: np.ndarray, hi: np.ndarray, n: int) -> tuple[np.ndarray, str]:
+    """min t subject to ms_s(x) <= t for every state (SLSQP with exact gradients), in variables scaled by the
+    weighted-sum solution and constraints scaled by its worst mean square; falls back to ``x_sum`` if the
+    optimiser ends worse than its start."""
+    from scipy.optimize import minimize
+
+    s = np.maximum(np.abs(x_sum), 1e-3 * max(float(np.max(np.abs(x_sum))), 1e-12))
+
+    def ms(x, lm):
+        r = lm.f0 + lm.matrix @ x
+        return float(r @ r) / n
+
+    ref = max(ms(x_sum, lm) for lm in models) or 1.0
+
+    def constraint(lm):
+        def fun(z):
+            return z[-1] - ms(z[:-1] * s, lm) / ref
+
+        def jac(z):
+            r = lm.f0 + lm.matrix @ (z[:-1] * s)
+            return np.append(-2.0 * (lm.matrix.T @ r) * s / n / ref, 1.0)
+
+        return {"type": "ineq", "fun": fun, "jac": jac}
+
+    start = np.append(x_sum / s, 1.0)
+    bounds = [(a / k if np.isfinite(a) else None, b / k if np.isfinite(b) else None)
+              for a, b, k in zip(lo, hi, s, strict=True)] + [(0.0, None)]
+    objective_grad = np.append(np.zeros(x_sum.size), 1.0)
+    res = minimize(lambda z: z[-1], start, jac=lambda z: objective_grad, method="SLSQP", bounds=bounds,
+                   constraints=[constraint(lm) for lm in models], options={"maxiter": 500, "ftol": 1e-12})
+    status = "converged" if res.success else f"did not converge ({res.message})"
+    x = res.x[:-1] * s
+    if max(ms(x, lm) for lm in models) > ref:
+        return x_sum, f"worst-state SLSQP {status} after {res.nit} iterations; no improvement, weighted-sum kept"
+    return x, f"worst-state SLSQP {status} after {res.nit} iterations"
