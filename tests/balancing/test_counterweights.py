@@ -15,7 +15,6 @@ from machdyn.balancing.counterweights import (
     slider_crank_masses,
     tradeoff_curve,
 )
-from machdyn.balancing.frame import frame_loads
 from machdyn.errors import InputError
 from machdyn.linkage import PointMass, four_bar, slider_crank
 
