@@ -103,8 +103,9 @@ def required_first_moments(coupler_mass, coupler_ratio, crank_vector, rocker_vec
     --------
     A uniform coupler (c = 1/2) of 2 kg on a 0.1 m crank and a 0.3 m rocker:
 
-    >>> required_first_moments(2.0, 0.5, 0.1, 0.3)
-    ((-0.1-0j), (-0.3-0j))
+    >>> crank, rocker = required_first_moments(2.0, 0.5, 0.1, 0.3)
+    >>> round(crank.real, 12), round(rocker.real, 12)
+    (-0.1, -0.3)
     """
     check_positive("coupler mass", coupler_mass, "kg", allow_zero=True)
     c = complex(coupler_ratio)

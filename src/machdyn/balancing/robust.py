@@ -11,26 +11,39 @@ the weighted-sum solution. The residual of each state is reported next to its va
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from ..errors import InputError, check_positive
 from ..linkage import Mechanism
 from .frame import FrameLoads, cycle, frame_loads
-from .general import CounterweightSlot, MassSlot, Slot, _decode, _point_masses, _reference, force_model
+from .general import (
+    CounterweightSlot,
+    LinearForceModel,
+    MassSlot,
+    Slot,
+    _decode,
+    _point_masses,
+    _reference,
+    force_model,
+)
 
 __all__ = ["OperatingState", "StateRow", "RobustResult", "robust_counterweights"]
 
 
 @dataclass(frozen=True)
 class OperatingState:
-    """An operating state: a ``name``, its ``mechanism``, crank ``speed`` [rad/s] and ``weight`` [-] in the sum."""
+    """An operating state: a ``name``, its ``mechanism``, crank ``speed`` [rad/s], ``weight`` [-] in the sum and
+    ``crank_turn`` [rad]: how far the crank's frame of this state is turned against the shaft on which the
+    shared counterweights of the crank sit (e.g. an eccentric sleeve turned to change the stroke moves the
+    crank pin, not the shaft's counterweight)."""
 
     name: str
     mechanism: Mechanism
     speed: float = 1.0
     weight: float = 1.0
+    crank_turn: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -110,7 +123,8 @@ def robust_counterweights(states: Sequence[OperatingState], slots: Sequence[Slot
             _reference(states[0].mechanism, slot)
     phi = cycle(120) if crank_angle is None else np.asarray(crank_angle, dtype=float)
     before = tuple(frame_loads(s.mechanism, phi, s.speed) for s in states)
-    models = [force_model(s.mechanism, slots, phi, s.speed, b) for s, b in zip(states, before, strict=True)]
+    models = [_turned(force_model(s.mechanism, slots, phi, s.speed, b), slots, s)
+              for s, b in zip(states, before, strict=True)]
     lo, hi = _bounds(states[0].mechanism, slots, models[0].columns)
     n = phi.size
     scale = np.array([np.sqrt(s.weight / n) for s in states])
@@ -125,7 +139,7 @@ def robust_counterweights(states: Sequence[OperatingState], slots: Sequence[Slot
         x, note = _minimax(models, x, lo, hi, n)
         notes.append(note)
     values = _decode(states[0].mechanism, slots, models[0], x)
-    balanced = tuple(_point_masses(s.mechanism, slots, values) for s in states)
+    balanced = tuple(_point_masses(s.mechanism, slots, _turn_values(values, slots, s)) for s in states)
     after = tuple(frame_loads(m, phi, s.speed) for m, s in zip(balanced, states, strict=True))
     rows = tuple(StateRow(s.name, bf.rms_force, af.rms_force, bf.peak_force, af.peak_force)
                  for s, bf, af in zip(states, before, after, strict=True))
@@ -168,3 +182,40 @@ def _minimax(models, x_sum: np.ndarray, lo: np.ndarray, hi: np.ndarray, n: int) 
     if max(ms(x, lm) for lm in models) > ref:
         return x_sum, f"worst-state SLSQP {status} after {res.nit} iterations; no improvement, weighted-sum kept"
     return x, f"worst-state SLSQP {status} after {res.nit} iterations"
+
+
+def _on_crank(slot: Slot, state: OperatingState) -> bool:
+    return isinstance(slot, CounterweightSlot) and slot.body == state.mechanism.crank.body
+
+
+def _turned(lm: LinearForceModel, slots: Sequence[Slot], state: OperatingState) -> LinearForceModel:
+    """The force model in the shaft's frame: a crank counterweight at (mu, mv) on the shaft sits at
+    R(-turn) (mu, mv) in the state's crank frame."""
+    if state.crank_turn == 0.0:
+        return lm
+    c, s = np.cos(state.crank_turn), np.sin(state.crank_turn)
+    matrix = lm.matrix.copy()
+    for i, slot in enumerate(slots):
+        if not _on_crank(slot, state):
+            continue
+        ju = lm.columns.index((i, "mu"))
+        jv = lm.columns.index((i, "mv"))
+        cu, cv = lm.matrix[:, ju], lm.matrix[:, jv]
+        matrix[:, ju], matrix[:, jv] = c * cu - s * cv, s * cu + c * cv
+    return replace(lm, matrix=matrix)
+
+
+def _turn_values(values: dict, slots: Sequence[Slot], state: OperatingState) -> dict:
+    """Counterweight positions of the shaft frame in the state's crank frame (turned by -crank_turn about the
+    slot's reference point)."""
+    if state.crank_turn == 0.0:
+        return values
+    c, s = np.cos(state.crank_turn), np.sin(state.crank_turn)
+    out = dict(values)
+    for i, slot in enumerate(slots):
+        if isinstance(slot, CounterweightSlot) and _on_crank(slot, state):
+            mass, pos = values[i]
+            ref, _ = _reference(state.mechanism, slot)
+            d = np.asarray(pos) - ref
+            out[i] = (mass, ref + np.array([c * d[0] + s * d[1], -s * d[0] + c * d[1]]))
+    return out

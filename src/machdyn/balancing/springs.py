@@ -37,7 +37,7 @@ def spring_torque(stiffness, free_length, length, length_rate):
 
     Examples
     --------
-    >>> float(spring_torque(1000.0, 0.1, 0.12, 0.05))
+    >>> round(float(spring_torque(1000.0, 0.1, 0.12, 0.05)), 12)
     1.0
     """
     for name, v, unit in (("stiffness", stiffness, "N/m"), ("free length", free_length, "m"),
