@@ -243,7 +243,7 @@ def optimise_counterweights(mech: Mechanism, slots: Sequence[Slot], weights: Wei
     before = frame_loads(mech, phi, speed)
     scale = _terms(before, weights.measure)
     scale = np.where(scale > 0, scale, 1.0)
-    bounds: list[tuple[float, float]] = []
+    bounds: list[tuple[float | None, float | None]] = []
     refs: list[np.ndarray | None] = []
     for slot in slots:
         _check_bounds(slot)
@@ -252,7 +252,7 @@ def optimise_counterweights(mech: Mechanism, slots: Sequence[Slot], weights: Wei
             refs.append(None)
         else:
             refs.append(_reference(mech, slot)[0])
-            bounds += [slot.mass_bounds, slot.radius_bounds, (-np.pi, np.pi)]
+            bounds += [slot.mass_bounds, slot.radius_bounds, (None, None)]  # the angle wraps: no bound
     start = _start(mech, slots, phi, speed, before, bounds)
 
     def model_of(z):
@@ -310,6 +310,6 @@ def _start(mech, slots, phi, speed, before, bounds) -> np.ndarray:
         if "m" in v and mass > 0:
             rho = size / mass
         z += [mass, rho, float(np.arctan2(first[1], first[0]))]
-    lower = np.array([b[0] for b in bounds], dtype=float)
-    upper = np.array([b[1] for b in bounds], dtype=float)
+    lower = np.array([-np.inf if b[0] is None else b[0] for b in bounds], dtype=float)
+    upper = np.array([np.inf if b[1] is None else b[1] for b in bounds], dtype=float)
     return np.clip(np.array(z, dtype=float), lower, upper)

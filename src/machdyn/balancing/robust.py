@@ -11,7 +11,7 @@ the weighted-sum solution. The residual of each state is reported next to its va
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -65,7 +65,8 @@ class StateRow:
 class RobustResult:
     """The shared balancing masses: ``values`` {unknown name: value} (masses [kg], first moments [kg*m]), the
     balanced ``models`` per state, ``rows`` per state, the frame loads ``before``/``after`` per state, the
-    ``mode`` ('sum' or 'worst') and ``notes``."""
+    ``mode`` ('sum' or 'worst'), ``notes`` and ``placed``: {counterweight or point-mass name: (mass [kg],
+    body-frame position [m] or None)}, positions of crank counterweights in the shaft's frame."""
 
     values: dict
     models: tuple[Mechanism, ...]
@@ -74,6 +75,7 @@ class RobustResult:
     after: tuple[FrameLoads, ...]
     mode: str
     notes: tuple[str, ...]
+    placed: dict = field(default_factory=dict)
 
     @property
     def worst_after(self) -> float:
@@ -133,7 +135,11 @@ def robust_counterweights(states: Sequence[OperatingState], slots: Sequence[Slot
     col_scale = np.linalg.norm(A, axis=0)
     col_scale = np.where(col_scale > 0, col_scale, 1.0)
     fit = lsq_linear(A / col_scale, b, bounds=(lo * col_scale, hi * col_scale))
-    x = fit.x / col_scale
+    # values on a bound come back a rounding error inside it (1e-28 kg for a mass at 0): put them on it
+    tol = 1e-9 * max(float(np.max(np.abs(fit.x))), 1e-300)
+    y = np.where(np.abs(fit.x - lo * col_scale) <= tol, lo * col_scale, fit.x)
+    y = np.where(np.abs(y - hi * col_scale) <= tol, hi * col_scale, y)
+    x = y / col_scale
     notes = [f"weighted-sum least squares: {fit.message}"]
     if mode == "worst":
         x, note = _minimax(models, x, lo, hi, n)
@@ -144,7 +150,12 @@ def robust_counterweights(states: Sequence[OperatingState], slots: Sequence[Slot
     rows = tuple(StateRow(s.name, bf.rms_force, af.rms_force, bf.peak_force, af.peak_force)
                  for s, bf, af in zip(states, before, after, strict=True))
     named = dict(zip(models[0].unknowns, (float(v) for v in x), strict=True))
-    return RobustResult(named, balanced, rows, before, after, mode, tuple(notes))
+    placed = {
+        (slot.name if isinstance(slot, CounterweightSlot) else slot.point_mass):
+            (float(m), None if pos is None else (float(pos[0]), float(pos[1])))
+        for slot, (m, pos) in ((slots[i], v) for i, v in values.items())
+    }
+    return RobustResult(named, balanced, rows, before, after, mode, tuple(notes), placed)
 
 
 def _minimax(models, x_sum: np.ndarray, lo: np.ndarray, hi: np.ndarray, n: int) -> tuple[np.ndarray, str]:

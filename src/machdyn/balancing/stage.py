@@ -276,11 +276,14 @@ def _outcome(done: BalanceRun) -> Outcome:
             "balance.worst_after": r.worst_after,
         }
         labels: dict[str, Label] = {}
-        for name, value in r.values.items():
-            key = f"balance.{name}"
-            scalars[key] = value
-            unit = "kg" if name.endswith(".m") or name.endswith(".mass") else "kg*m"
-            labels[key] = Label(f"Balance: {name}", unit)
+        for name, (mass, pos) in r.placed.items():
+            key = f"balance.{name}.mass"
+            scalars[key] = mass
+            labels[key] = Label(f"Balance: mass of {name}", "kg")
+            if pos is not None:
+                for axis, value in zip("xy", pos, strict=True):
+                    scalars[f"balance.{name}.{axis}"] = value
+                    labels[f"balance.{name}.{axis}"] = Label(f"Balance: {axis} of {name} (body frame)", "m", "mm")
         series = {"balance_states": {
             "state": (np.array([x.state for x in rows]), ""),
             "rms_before": (np.array([x.rms_before for x in rows]), "N"),

@@ -121,10 +121,14 @@ def _robust_html(done: Any) -> str:
         if ref is not None:
             cells.append(f"{100 * ref:.0f} %")
         rows.append(cells)
-    values = "; ".join(f"{k} = {v:.6g}" for k, v in r.values.items())
+    values = "; ".join(
+        f"{name} {mass:.4g} kg" + ("" if pos is None else f" at ({1e3 * pos[0]:.4g}, {1e3 * pos[1]:.4g}) mm")
+        for name, (mass, pos) in r.placed.items()
+    )
     source = f" Published reduction: {escape(done.reference_source)}." if done.reference_source else ""
     intro = (f"<p>One set of balancing masses for {len(r.rows)} operating states, minimising the "
              f"{'sum' if r.mode == 'sum' else 'worst'} of their mean square shaking forces: {escape(values)} "
-             f"(masses in kg, first moments in kg·m). Mean reduction {100 * r.mean_reduction:.1f} %.{source}</p>")
+             "(positions in the body frame; on the crank, in the frame of the shaft). "
+             f"Mean reduction {100 * r.mean_reduction:.1f} %.{source}</p>")
     notes = "<p>" + "<br>".join(escape(n) for n in r.notes) + "</p>"
     return f"{intro}{figures_html([figure])}{rows_html(rows, head)}{notes}"
