@@ -75,3 +75,14 @@ def test_bad_input():
         slider_crank_masses(four_bar(1, 3, 3, 3))
     with pytest.raises(InputError, match="radius"):
         crank_counterweight(_point_engine(4.0), 0.5, 0.0)
+
+
+def test_crank_counterweight_costs_no_driving_torque_at_constant_speed(engine):
+    # a mass on the uniformly turning crank keeps its kinetic energy (gravity off): the drive feels nothing,
+    # while the crank bearing carries the counterweight's centrifugal force
+    result = crank_counterweight(engine, 0.5, 0.08, speed=80.0)
+    assert np.max(np.abs(result.after.torque - result.before.torque)) < 1e-9 * np.max(np.abs(result.before.torque))
+    cw = result.counterweights[0]
+    assert result.after.joint_peaks["O"] != pytest.approx(result.before.joint_peaks["O"])
+    assert cw.mass * 0.08 == pytest.approx(slider_crank_masses(engine).rotating_moment[0]
+                                           + 0.5 * slider_crank_masses(engine).reciprocating_mass * 0.05)

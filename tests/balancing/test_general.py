@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from machdyn.balancing.frame import cycle, frame_loads
 from machdyn.balancing.general import (
@@ -87,3 +89,23 @@ def test_bad_input(fourbar):
         optimise_counterweights(fourbar, [CounterweightSlot("crank", mass_bounds=(2.0, 1.0))])
     with pytest.raises(InputError, match="no body"):
         least_squares_counterweights(fourbar, [CounterweightSlot("flywheel", radius=0.1)])
+
+
+@settings(max_examples=15, deadline=None)
+@given(mx=st.floats(-0.05, 0.05), my=st.floats(-0.05, 0.05), speed=st.floats(1.0, 100.0))
+def test_property_least_squares_residual_is_orthogonal_to_every_counterweight(mx, my, speed):
+    # the normal equations: at the optimum no counterweight direction can lower the mean square force
+    from dataclasses import replace
+
+    from machdyn.linkage import PointMass, four_bar
+
+    fourbar = four_bar(0.1, 0.35, 0.3, 0.4, masses=(1.0, 2.0, 1.5), coms=((0.05, 0.01), (0.15, 0.04), (0.12, -0.02)),
+                       gravity=(0.0, 0.0))
+    mech = replace(fourbar, point_masses=(PointMass("lump", "coupler", 0.5, (mx + 0.1, my)),))
+    phi = cycle(36)
+    slots = [CounterweightSlot("crank", radius=0.05)]  # one counterweight: a residual force is left
+    result = least_squares_counterweights(mech, slots, phi, speed)
+    assert result.after.rms_force > 1e-3 * result.before.rms_force
+    lin = force_model(mech, slots, phi, speed)
+    residual = np.concatenate([result.after.fx, result.after.fy])
+    assert np.max(np.abs(lin.matrix.T @ residual)) <= 1e-9 * np.linalg.norm(lin.matrix) * np.linalg.norm(lin.f0)

@@ -460,3 +460,17 @@ def test_worst_state_balance_lowers_the_worst_state(corrected):
     worst = corrected_balance(mode="worst")
     assert worst.worst_after < corrected.worst_after
     assert "converged" in worst.notes[-1]
+
+
+def test_offset_beams_follow_the_exact_offset_slider_crank():
+    # with offsets e the engine's beam end moves as seed 000's exact offset slider-crank (repro 000.4)
+    from dataclasses import replace as _replace
+
+    from machdyn.linkage import kinematics
+    from machdyn.machines.tamper.balance import TamperBeams, tamper_state
+
+    beams = _replace(TamperBeams(), offset_main=5e-3, offset_aux=-4e-3)
+    state = tamper_state(beams, 2.5e-3, 0.0, 3e-3, 0.0)
+    phi = np.linspace(0, 2 * np.pi, 73)
+    slide = kinematics(state, phi, 1.0).slide("slider_1").s
+    assert np.ptp(slide) == pytest.approx(np.ptp(tamper.exact_position(phi, 2.5e-3, beams.l_main, 5e-3)), rel=1e-9)

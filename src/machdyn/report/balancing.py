@@ -11,7 +11,7 @@ from markupsafe import escape
 from .html import _render, figures_html, format_value, rows_html
 from .plots import PALETTE, _finish
 
-__all__ = ["plot_polar_before_after", "plot_tradeoff", "plot_state_reductions", "sections"]
+__all__ = ["plot_polar_before_after", "plot_before_after", "plot_tradeoff", "plot_state_reductions", "sections"]
 
 
 def plot_polar_before_after(ax: Any, before: Any, after: Any, *, title: str | None = "Shaking force [N]") -> Any:
@@ -26,6 +26,20 @@ def plot_polar_before_after(ax: Any, before: Any, after: Any, *, title: str | No
     ax.set_ylim(bottom=0)
     ax.grid(True, alpha=0.4, linewidth=0.6)
     return _finish(ax, title)
+
+
+def plot_before_after(ax: Any, before: Any, after: Any, quantity: str = "torque", *, title: str | None = None) -> Any:
+    """A cycle quantity of two :class:`~machdyn.balancing.frame.FrameLoads` against the crank angle [deg]:
+    ``quantity`` 'torque' (driving torque [N*m]) or 'moment' (shaking moment about the crank pivot [N*m])."""
+    names = {"torque": "Driving torque [N·m]", "moment": "Shaking moment [N·m]"}
+    for loads, label, colour in ((before, "before", PALETTE[1]), (after, "after", PALETTE[0])):
+        ax.plot(np.degrees(loads.crank_angle), getattr(loads, quantity), color=colour, label=label)
+    ax.set_xlabel("crank angle [deg]")
+    ax.set_xlim(0, 360)
+    ax.set_xticks(range(0, 361, 90))
+    ax.axhline(0.0, color="#888888", linewidth=0.6)
+    ax.grid(True, alpha=0.35, linewidth=0.6)
+    return _finish(ax, title if title is not None else names[quantity])
 
 
 def plot_tradeoff(ax: Any, curve: Any, *, chosen: float | None = None, title: str | None = None) -> Any:
@@ -67,7 +81,7 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
     r = done.result
     if isinstance(r, RobustResult):
         return [("Balance over operating states", _robust_html(done))]
-    parts = [_polar_and_tradeoff(done), _table_html(r)]
+    parts = [_polar_and_tradeoff(done), _cost_figure(r), _table_html(r)]
     if r.notes:
         parts.append("<p>" + "<br>".join(escape(n) for n in r.notes) + "</p>")
     return [(f"Balance ({done.method.replace('_', ' ')})", "".join(parts))]
@@ -89,6 +103,17 @@ def _polar_and_tradeoff(done: Any) -> str:
                + ("; right: the trade-off of partial balance (balance_tradeoff.csv)." if curve else "."))
     figure = _render("balance", "Shaking force before and after", caption, size, draw,
                      margins=(0.6, 0.3, 0.7, 0.45), wspace=0.35)
+    return figures_html([figure])
+
+
+def _cost_figure(r: Any) -> str:
+    def draw(fig):
+        plot_before_after(fig.add_subplot(1, 2, 1), r.before, r.after, "torque")
+        plot_before_after(fig.add_subplot(1, 2, 2), r.before, r.after, "moment")
+
+    caption = "What balancing changes elsewhere: the driving torque and the shaking moment over the cycle."
+    figure = _render("balance-cost", "Driving torque and shaking moment before and after", caption, (9.6, 3.4),
+                     draw, margins=(0.7, 0.3, 0.6, 0.4), wspace=0.3)
     return figures_html([figure])
 
 

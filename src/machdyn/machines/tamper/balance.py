@@ -51,7 +51,8 @@ PAPER_RMS_REDUCTION = (0.4348, 0.4370)
 class TamperBeams:
     """Beams, sleeves and eccentricities of the double tamper (SI). Defaults: Table 2 (m_d2 = 90 kg,
     m_d3 = 63.21 kg, p1 = 233.19, q1 = 2.7, p2 = 229.84, q2 = 13.03 mm), Table 1's eccentricities (3, 1.5, 3,
-    3 mm), and the assumptions of the module docstring for what Table 2 leaves open."""
+    3 mm), and the assumptions of the module docstring for what Table 2 leaves open; ``offset_main``,
+    ``offset_aux`` [m] are the offsets e of the beams' slide lines from the shaft axis (seed 000 eqs 5-10)."""
 
     m_main: float = 90.0
     m_aux: float = 63.21
@@ -67,6 +68,8 @@ class TamperBeams:
     e_sleeve_main: float = 1.5e-3
     e_journal_aux: float = 3.0e-3
     e_sleeve_aux: float = 3.0e-3
+    offset_main: float = 0.0
+    offset_aux: float = 0.0
 
     def __post_init__(self) -> None:
         for name in ("m_main", "m_aux", "l_main", "l_aux"):
@@ -83,6 +86,7 @@ def tamper_state(beams: TamperBeams, r_main: float, phase_main: float, r_aux: fl
     check_positive("auxiliary resultant eccentricity", r_aux, "m", allow_zero=True)
     mech = double_tamper(
         r_main, beams.l_main, max(r_aux, r_main), beams.l_aux, np.pi,
+        offset_main=beams.offset_main, offset_aux=beams.offset_aux,
         beam_masses=(beams.m_main, beams.m_aux), beam_coms=((beams.p1, beams.q1), (beams.p2, beams.q2)),
         sleeve_masses=(beams.sleeve_main, beams.sleeve_aux), name=name,
     )
