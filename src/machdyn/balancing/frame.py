@@ -123,7 +123,8 @@ def frame_loads(mech: Mechanism, crank_angle=None, speed: float = 1.0) -> FrameL
 
 
 def centre_of_mass(kin) -> tuple[np.ndarray, np.ndarray]:
-    """Total centre of mass (x, y) [m] of every moving mass (bodies and point masses) at each position."""
+    """Total centre of mass (x, y) [m] of every moving mass (bodies and point masses) at each position
+    (zeros when no moving body or point mass has mass)."""
     total: Any = 0.0
     mx: Any = 0.0
     my: Any = 0.0
@@ -131,8 +132,9 @@ def centre_of_mass(kin) -> tuple[np.ndarray, np.ndarray]:
         total = total + m.mass
         mx = mx + m.mass * m.motion.x
         my = my + m.mass * m.motion.y
-    if not np.all(np.asarray(total) > 0):
-        raise InputError("The centre of mass needs a moving mass > 0 kg; every moving mass of the mechanism is 0.")
+    if not np.all(np.asarray(total) > 0):  # nothing moves that has mass: no centre to travel, reported at 0
+        zero = np.zeros(np.shape(kin.crank_angle))
+        return zero, zero.copy()
     return np.asarray(mx / total, dtype=float), np.asarray(my / total, dtype=float)
 
 

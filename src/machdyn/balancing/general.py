@@ -20,7 +20,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..errors import InputError, check_finite, check_positive
+from ..errors import AnalysisError, InputError, check_finite, check_positive
 from ..linkage import Mechanism, PointMass, kinematics
 from ..linkage.model import GROUND, split_ref
 from .frame import BalanceResult, FrameLoads, compare, cycle, frame_loads
@@ -151,25 +151,61 @@ def _point_masses(mech: Mechanism, slots: Sequence[Slot], values: dict) -> Mecha
 def least_squares_counterweights(mech: Mechanism, slots: Sequence[Slot], crank_angle=None,
                                  speed: float = 1.0) -> BalanceResult:
     """Counterweights that minimise the mean square shaking force over ``crank_angle`` (default one turn):
-    the closed-form linear least-squares solution (:func:`numpy.linalg.lstsq`, minimum norm where the
-    counterweights are not all independent).
+    the linear least-squares solution - closed form (:func:`numpy.linalg.lstsq`, minimum norm where the
+    counterweights are not all independent) when no mass bound is reached, else the bounded linear least
+    squares of :func:`scipy.optimize.lsq_linear` (masses of :class:`MassSlot` and of floating counterweights
+    within their ``mass_bounds``).
 
     On a pivoted body the force fixes only the first moment m (u, v): the slot's ``radius`` then sets the mass.
-    On a floating body the force fixes m and m (u, v); a negative mass cannot be built and raises InputError
-    (use :func:`optimise_counterweights` with bounds).
+    On a floating body the force fixes m and m (u, v); an optimum at zero mass with a non-zero first moment
+    cannot be built and raises :class:`~machdyn.errors.AnalysisError` (use :func:`optimise_counterweights`).
     """
     if not slots:
         raise InputError("least_squares_counterweights needs at least one slot; got none.")
     phi = cycle() if crank_angle is None else np.asarray(crank_angle, dtype=float)
     before = frame_loads(mech, phi, speed)
     lin = force_model(mech, slots, phi, speed, before)
-    x, *_ = np.linalg.lstsq(lin.matrix, -lin.f0, rcond=None)
+    lo, hi = unknown_bounds(slots, lin.columns)
+    x, _ = solve_bounded(lin.matrix, -lin.f0, lo, hi)
     values = _decode(mech, slots, lin, x)
     balanced = _point_masses(mech, slots, values)
     after = frame_loads(balanced, phi, speed)
     added = tuple(p for p in balanced.point_masses if p not in mech.point_masses)
     return BalanceResult(balanced, before, after, compare(before, after), added,
                          ("closed-form least squares of the shaking force",))
+
+
+def unknown_bounds(slots: Sequence[Slot], columns) -> tuple[np.ndarray, np.ndarray]:
+    """Lower and upper bounds of the linear unknowns: masses within their slot's ``mass_bounds``, first
+    moments free."""
+    lo, hi = [], []
+    for i, key in columns:
+        slot = slots[i]
+        if key == "m":
+            lo.append(slot.mass_bounds[0])
+            hi.append(slot.mass_bounds[1])
+        else:
+            lo.append(-np.inf)
+            hi.append(np.inf)
+    return np.array(lo, dtype=float), np.array(hi, dtype=float)
+
+
+def solve_bounded(matrix: np.ndarray, rhs: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, str]:
+    """min |A x - b| within lo <= x <= hi: the closed form if it lies within the bounds, else
+    :func:`scipy.optimize.lsq_linear` on unit-norm columns; values a rounding error off a bound are put on it.
+    Returns (x, how it was solved)."""
+    x, *_ = np.linalg.lstsq(matrix, rhs, rcond=None)
+    if np.all((x >= lo) & (x <= hi)):
+        return x, "closed-form least squares"
+    from scipy.optimize import lsq_linear
+
+    scale = np.linalg.norm(matrix, axis=0)
+    scale = np.where(scale > 0, scale, 1.0)
+    fit = lsq_linear(matrix / scale, rhs, bounds=(lo * scale, hi * scale))
+    tol = 1e-9 * max(float(np.max(np.abs(fit.x))), 1e-300)
+    y = np.where(np.abs(fit.x - lo * scale) <= tol, lo * scale, fit.x)
+    y = np.where(np.abs(y - hi * scale) <= tol, hi * scale, y)
+    return y / scale, f"bounded least squares ({fit.message})"
 
 
 def _decode(mech: Mechanism, slots: Sequence[Slot], lin: LinearForceModel, x: np.ndarray) -> dict:
@@ -195,8 +231,9 @@ def _decode(mech: Mechanism, slots: Sequence[Slot], lin: LinearForceModel, x: np
         else:
             mass = v["m"]
             if mass <= 0:
-                raise InputError(f"The force-optimal counterweight on floating body '{slot.body}' has mass "
-                                 f"{mass:.4g} kg <= 0; bound it with optimise_counterweights.")
+                raise AnalysisError(f"The force-optimal counterweight on floating body '{slot.body}' has mass "
+                                    f"{mass:.4g} kg with first moment {first.tolist()} kg*m: it cannot be built; "
+                                    "use the bounded optimisation (optimise_counterweights, [balance.objective]).")
             pos = ref + first / mass
         values[i] = (mass, pos)
     return values

@@ -21,12 +21,13 @@ from .frame import FrameLoads, cycle, frame_loads
 from .general import (
     CounterweightSlot,
     LinearForceModel,
-    MassSlot,
     Slot,
     _decode,
     _point_masses,
     _reference,
     force_model,
+    solve_bounded,
+    unknown_bounds,
 )
 
 __all__ = ["OperatingState", "StateRow", "RobustResult", "robust_counterweights"]
@@ -86,22 +87,6 @@ class RobustResult:
         return float(np.mean([r.reduction for r in self.rows]))
 
 
-def _bounds(mech: Mechanism, slots: Sequence[Slot], columns) -> tuple[np.ndarray, np.ndarray]:
-    lo, hi = [], []
-    for i, key in columns:
-        slot = slots[i]
-        if isinstance(slot, MassSlot):
-            lo.append(slot.mass_bounds[0])
-            hi.append(slot.mass_bounds[1])
-        elif key == "m":
-            lo.append(slot.mass_bounds[0])
-            hi.append(slot.mass_bounds[1])
-        else:
-            lo.append(-np.inf)
-            hi.append(np.inf)
-    return np.array(lo, dtype=float), np.array(hi, dtype=float)
-
-
 def robust_counterweights(states: Sequence[OperatingState], slots: Sequence[Slot], mode: str = "sum",
                           crank_angle=None) -> RobustResult:
     """Balancing masses shared by all ``states`` minimising the weighted sum (``mode='sum'``) or the largest
@@ -109,8 +94,6 @@ def robust_counterweights(states: Sequence[OperatingState], slots: Sequence[Slot
 
     Slots as in :mod:`machdyn.balancing.general`; counterweights on pivoted bodies need a ``radius``.
     """
-    from scipy.optimize import lsq_linear
-
     if mode not in ("sum", "worst"):
         raise InputError(f"The robust balancing mode must be 'sum' or 'worst'; got {mode!r}.")
     if not states:
@@ -127,20 +110,13 @@ def robust_counterweights(states: Sequence[OperatingState], slots: Sequence[Slot
     before = tuple(frame_loads(s.mechanism, phi, s.speed) for s in states)
     models = [_turned(force_model(s.mechanism, slots, phi, s.speed, b), slots, s)
               for s, b in zip(states, before, strict=True)]
-    lo, hi = _bounds(states[0].mechanism, slots, models[0].columns)
+    lo, hi = unknown_bounds(slots, models[0].columns)
     n = phi.size
     scale = np.array([np.sqrt(s.weight / n) for s in states])
     A = np.concatenate([w * lm.matrix for w, lm in zip(scale, models, strict=True)])
     b = np.concatenate([-w * lm.f0 for w, lm in zip(scale, models, strict=True)])
-    col_scale = np.linalg.norm(A, axis=0)
-    col_scale = np.where(col_scale > 0, col_scale, 1.0)
-    fit = lsq_linear(A / col_scale, b, bounds=(lo * col_scale, hi * col_scale))
-    # values on a bound come back a rounding error inside it (1e-28 kg for a mass at 0): put them on it
-    tol = 1e-9 * max(float(np.max(np.abs(fit.x))), 1e-300)
-    y = np.where(np.abs(fit.x - lo * col_scale) <= tol, lo * col_scale, fit.x)
-    y = np.where(np.abs(y - hi * col_scale) <= tol, hi * col_scale, y)
-    x = y / col_scale
-    notes = [f"weighted-sum least squares: {fit.message}"]
+    x, how = solve_bounded(A, b, lo, hi)
+    notes = [f"weighted sum over the states: {how}"]
     if mode == "worst":
         x, note = _minimax(models, x, lo, hi, n)
         notes.append(note)

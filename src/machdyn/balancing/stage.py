@@ -63,6 +63,12 @@ class ObjectiveSpec(Spec):
     joint: float = Field(0.0, ge=0.0)
     measure: Literal["rms", "peak"] = "rms"
 
+    @model_validator(mode="after")
+    def _some_weight(self):
+        if not any(w > 0 for w in (self.force, self.moment, self.torque, self.joint)):
+            raise ValueError("at least one of force, moment, torque, joint must be > 0")
+        return self
+
 
 class StateSpec(Spec):
     """An operating state: quantities of the file set to other values (``set``, dotted paths as in ``[sweep]``),
@@ -74,6 +80,12 @@ class StateSpec(Spec):
     weight: float = Field(1.0, ge=0.0)
     crank_turn: Angle = 0.0
 
+    @model_validator(mode="after")
+    def _moving(self):
+        if self.speed is not None and self.speed == 0.0:
+            raise ValueError("speed must not be zero (the shaking force of a state at rest is not defined)")
+        return self
+
 
 class SpringSpec(Spec):
     """A compensating spring from the body-frame ``point`` of ``body`` to the ground ``anchor``."""
@@ -84,6 +96,13 @@ class SpringSpec(Spec):
     stiffness_max: Stiffness | None = None
     free_length_min: NonNegativeLength = 0.0
     free_length_max: NonNegativeLength | None = None
+
+    @model_validator(mode="after")
+    def _ordered(self):
+        if self.free_length_max is not None and self.free_length_max < self.free_length_min:
+            raise ValueError(f"free_length_max ({self.free_length_max:g} m) must not be below free_length_min "
+                             f"({self.free_length_min:g} m)")
+        return self
 
 
 class BalanceSpec(Spec):
@@ -205,18 +224,69 @@ def _states(problem: Any, table: BalanceSpec):
 
 
 def check(problem: Any, table: BalanceSpec) -> list[tuple[str, str]]:
-    """Validations that need the model: the states' quantities and models, the bodies and masses named."""
+    """Validations that need the model, so that ``check`` and ``run`` agree: the method fits the linkage, the
+    bodies, points and masses named exist, closed-form counterweights on pivoted bodies have a radius, a spring
+    never has zero length, and every operating state builds and assembles over the whole turn."""
+    from ..problem.build import build_mechanism
+
+    try:
+        mech = build_mechanism(problem)
+    except (ProblemFileError, InputError):
+        return []  # the kind reports the model's own problems
     found: list[tuple[str, str]] = []
     try:
-        _states(problem, table)
-    except ProblemFileError as exc:
-        found += list(exc.problems)
+        _check_method(mech, table, abs(float(problem.drive.speed)))
+    except InputError as exc:
+        found.append(("balance", str(exc)))
     names = {c.name for c in problem.counterweights if c.name}
     for i, m in enumerate(table.masses):
         if m.name not in names:
             found.append((f"balance.masses[{i}].name", f"no [[counterweights]] entry named '{m.name}'; named: "
                           f"{', '.join(sorted(names)) or 'none'}"))
+    try:
+        states = _states(problem, table)
+    except ProblemFileError as exc:
+        return found + list(exc.problems)
+    from ..linkage import kinematics
+    from .frame import cycle
+
+    for i, state in enumerate(states):
+        try:
+            kinematics(state.mechanism, cycle(table.positions), state.speed, 0.0, on_fail="raise")
+            _check_method(state.mechanism, table, state.speed)
+        except InputError as exc:
+            found.append((f"balance.states[{i}]", str(exc)))
     return found
+
+
+def _check_method(mech: Any, table: BalanceSpec, speed: float) -> None:
+    """Raise InputError if the table's method cannot run on ``mech``."""
+    from .berkof_lowen import four_bar_masses
+    from .counterweights import slider_crank_masses
+    from .general import CounterweightSlot, _reference, pivot_point
+
+    if table.method == "crank":
+        slider_crank_masses(mech)
+    elif table.method == "berkof_lowen":
+        four_bar_masses(mech)
+    elif table.method == "spring" and table.spring is not None:
+        from ..linkage import kinematics
+        from .frame import cycle
+        from .springs import _geometry
+
+        mech.body(table.spring.body)
+        kin = kinematics(mech, cycle(table.positions), speed, 0.0, on_fail="raise")
+        _geometry(kin, table.spring.body, np.asarray(table.spring.point), np.asarray(table.spring.anchor))
+    elif table.method == "counterweights":
+        for slot in _slots(table):
+            if not isinstance(slot, CounterweightSlot):
+                continue
+            _reference(mech, slot)
+            closed_form = table.objective is None
+            if closed_form and slot.radius is None and (slot.about or pivot_point(mech, slot.body)) == \
+                    pivot_point(mech, slot.body) and pivot_point(mech, slot.body) is not None:
+                raise InputError(f"The counterweight slot on pivoted body '{slot.body}' needs a radius for the "
+                                 "closed-form solution (the force fixes only mass x radius).")
 
 
 def run(ctx: StageContext) -> Outcome:
