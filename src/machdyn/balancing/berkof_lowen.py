@@ -136,6 +136,7 @@ def berkof_lowen(mech: Mechanism, crank_radius: float, rocker_radius: float, cra
     balanced = replace(mech, point_masses=tuple(mech.point_masses) + tuple(added))
     phi = cycle() if crank_angle is None else crank_angle
     before, after = frame_loads(mech, phi, speed), frame_loads(balanced, phi, speed)
-    notes = tuple(f"{p.name}: {p.mass:.6g} kg at {np.hypot(*(np.asarray(p.position))):.4g} m from the body origin"
-                  for p in added)
+    pivots = {fb.crank: fb.crank_pivot, fb.rocker: fb.rocker_pivot}
+    notes = tuple(f"{p.name}: {p.mass:.6g} kg at {np.hypot(*(np.asarray(p.position) - pivots[p.body])):.4g} m "
+                  "from its pivot" for p in added)
     return BalanceResult(balanced, before, after, compare(before, after), tuple(added), notes)
