@@ -30,6 +30,23 @@ def test_tamper_inputs():
         tamper.complex_mass_substitution(90.0, 0.0, 0.2, 0.0)
 
 
+def test_tamper_balance_inputs():
+    from machdyn.machines.tamper import balance
+
+    with raises(InputError, "The tamper m_aux must be > 0 kg; got -1 kg."):
+        balance.TamperBeams(m_aux=-1.0)
+    with raises(InputError, "The tamper sleeve_aux mass must be >= 0 kg; got -2 kg."):
+        balance.TamperBeams(sleeve_aux=-2.0)
+    with raises(InputError, "The main resultant eccentricity must be > 0 m; got 0 m."):
+        balance.tamper_state(balance.TamperBeams(), 0.0, 0.0, 3e-3, 0.0)
+    with raises(InputError, "The shaft speed must be > 0 rad/s; got 0 rad/s."):
+        balance.tamper_states(speed=0.0)
+    with raises(InputError, "The counterweight radius must be > 0 m; got -0.05 m."):
+        balance.corrected_balance(counterweight_radius=-0.05)
+    with raises(InputError, "The robust balancing mode must be 'sum' or 'worst'; got 'max'."):
+        balance.corrected_balance(mode="max")
+
+
 def test_rotary_screen_inputs():
     with raises(InputError, "The rotary screen crank radius R must be smaller than the rod length L = 3.6 m; "
                             "got 4 m."):

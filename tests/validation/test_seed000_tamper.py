@@ -377,3 +377,100 @@ def test_corrected_eq14_reproduces_engine_shaking_force():
     scale = np.max(np.abs(f))
     assert np.max(np.abs(reversed_force(tamper.complex_mass_substitution) - f)) < 1e-9 * scale
     assert np.max(np.abs(reversed_force(tamper.complex_mass_substitution_printed) - f)) > 1e-2 * scale
+
+
+# ----------------------------------------------------------- the complete tamper: Table 2 and 20 states
+
+
+@pytest.fixture(scope="module")
+def states():
+    from machdyn.machines.tamper.balance import tamper_states
+
+    return tamper_states()
+
+
+def test_states_have_table1_strokes_and_phases(states):
+    # the pins in the shaft frame differ by Table 1's phase and sit at half the true strokes (repro 000.2)
+    from machdyn.linkage import kinematics
+
+    assert len(states) == 20
+    for state in states:
+        m_label, a_label = (int(s.split()[1]) for s in state.name.split(" / "))
+        crank = state.mechanism.body("crank")
+        a1, a2 = (complex(*crank.points[p]) for p in ("A1", "A2"))
+        row = {(r.main_label_mm, r.aux_label_mm): r for r in tamper.table1()}[(m_label, a_label)]
+        assert 2 * abs(a1) == pytest.approx(row.main_stroke, rel=1e-12)
+        assert 2 * abs(a2) == pytest.approx(row.aux_stroke, abs=1e-15)
+        if a_label:
+            assert np.mod(np.angle(a2 / a1), 2 * np.pi) == pytest.approx(row.phase, abs=1e-12)
+        # the beam end moves one full stroke (the engine's slide travel)
+        travel = kinematics(state.mechanism, np.linspace(0, 2 * np.pi, 721), 1.0).slide("slider_1").s
+        assert np.ptp(travel) == pytest.approx(row.main_stroke, rel=1e-5)
+
+
+def test_table2_as_printed_leaves_a_residual_eq22_cannot_remove():
+    # repro 000.3: arg m_C - arg m_B = 3.2447 - 0.6634 = 2.58 deg, so F_B = -F_C cannot hold as complex numbers;
+    # magnitude balance then leaves 2 sin(1.29 deg) = 4.5 % of the first harmonic; and with Phi = 180 deg the
+    # second harmonics (lambda cos 2wt) of the two beams add instead of cancelling.
+    from machdyn.machines.tamper.balance import table2_check
+
+    check = table2_check()
+    assert np.degrees(check.phase_mismatch) == pytest.approx(3.2447 - 0.6634, abs=2e-4)  # 4-digit table values
+    assert check.magnitude_residual == pytest.approx(0.045, abs=5e-4)
+    # engine values with the stated assumptions (l_EB = 2 p1, l_FC = 0.832 l_EB, m_d1 = 0, m_d4 = 11.79 kg):
+    # far below the main beam alone, but not zero - both harmonics are left
+    assert check.rms_pair < 0.05 * check.rms_main_alone
+    assert 0.005 < check.first_harmonic_left < 0.05
+    # second harmonics add (eqs 17, 21 with Phi = pi): (m_B r1 lambda1 + m_C r2 lambda2) w^2 against the main
+    # beam's first harmonic (m_d1 + m_d2) r1 w^2, with the real parts m_B = m_d2 p1/l_EB, m_C = m_d3 p2/l_FC;
+    # 1e-3 covers the terms of order lambda^2 (~5e-5) the series drops
+    l1, l2 = 2 * 233.19e-3, 0.832 * 2 * 233.19e-3
+    m_b, m_c = 90.0 * 233.19e-3 / l1, 63.21 * 229.84e-3 / l2
+    expected = (m_b * 2.5e-3 * (2.5e-3 / l1) + m_c * 3e-3 * (3e-3 / l2)) / (90.0 * 2.5e-3)
+    assert check.second_harmonic_left == pytest.approx(expected, rel=1e-3)
+
+
+@pytest.fixture(scope="module")
+def corrected():
+    from machdyn.machines.tamper.balance import corrected_balance
+
+    return corrected_balance(mode="sum")
+
+
+def test_corrected_balance_over_all_20_states(corrected):
+    from machdyn.machines.tamper.balance import PAPER_RMS_REDUCTION
+
+    assert len(corrected.rows) == 20
+    before = np.array([r.rms_before for r in corrected.rows])
+    after = np.array([r.rms_after for r in corrected.rows])
+    # the objective (sum of mean squares over the states) falls; a shared balance cannot improve every state
+    assert np.sum(after**2) < 0.7 * np.sum(before**2)
+    assert corrected.mean_reduction > 0.15
+    # the paper's 43 % is a measured RMS acceleration of the screed, not a shaking force of this model: it is
+    # shown next to ours in the report, not asserted equal
+    assert PAPER_RMS_REDUCTION == (0.4348, 0.4370)
+    # the engine's after-values equal the linear model's prediction (the least squares is exact)
+    sleeves = {k: v for k, v in corrected.values.items() if k.startswith("sleeve")}
+    assert all(0.0 <= v <= 60.0 for v in sleeves.values())
+
+
+def test_worst_state_balance_lowers_the_worst_state(corrected):
+    from machdyn.machines.tamper.balance import corrected_balance
+
+    worst = corrected_balance(mode="worst")
+    assert worst.worst_after < corrected.worst_after
+    assert "converged" in worst.notes[-1]
+
+
+def test_offset_beams_follow_the_exact_offset_slider_crank():
+    # with offsets e the engine's beam end moves as seed 000's exact offset slider-crank (repro 000.4)
+    from dataclasses import replace as _replace
+
+    from machdyn.linkage import kinematics
+    from machdyn.machines.tamper.balance import TamperBeams, tamper_state
+
+    beams = _replace(TamperBeams(), offset_main=5e-3, offset_aux=-4e-3)
+    state = tamper_state(beams, 2.5e-3, 0.0, 3e-3, 0.0)
+    phi = np.linspace(0, 2 * np.pi, 73)
+    slide = kinematics(state, phi, 1.0).slide("slider_1").s
+    assert np.ptp(slide) == pytest.approx(np.ptp(tamper.exact_position(phi, 2.5e-3, beams.l_main, 5e-3)), rel=1e-9)

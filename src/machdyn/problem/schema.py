@@ -291,6 +291,9 @@ class DriveSpec(Spec):
         # Energy rates, reduced quantities and the work balance divide by the crank speed.
         if speed == 0.0:
             raise FieldError("must not be zero (the analysis divides by the crank speed); got 0 rad/s")
+        if speed * speed == 0.0:  # e.g. 1e-300 rad/s: the reduced inertia divides by the speed squared
+            raise FieldError(f"must be at least 1e-150 rad/s in magnitude (its square must not underflow); got "
+                             f"{speed:g} rad/s")
         return speed
 
     @field_validator("stop")
