@@ -1,7 +1,7 @@
 """Crank effort and piston effort: the textbook forces of the reciprocating engine from machdyn's results.
 
-Textbook terms (Khurmi & Gupta, *Theory of Machines*, ch. 15 "Inertia forces in reciprocating parts";
-Rattan, *Theory of Machines*, ch. 12) and machdyn's names:
+Textbook terms (R. S. Khurmi & J. K. Gupta, *Theory of Machines*, chapter "Inertia forces in reciprocating
+parts"; S. S. Rattan, *Theory of Machines*, the dynamic force analysis of the slider-crank) and machdyn's names:
 
 ===================================  ===============================================================
 textbook                             machdyn
@@ -72,8 +72,10 @@ def crank_effort(forces: Forces, pin: str | None = None) -> CrankEffort:
 
         F_T = F . e_t,    F_R = -F . e_r,    T = F_T r
 
-    (Khurmi & Gupta, *Theory of Machines*, 14th ed., §15.8: F_T = F_Q sin(theta + phi), F_B = F_Q cos(theta +
-    phi), T = F_T r for the slider-crank; here from the exact joint reaction of any linkage).
+    (Khurmi & Gupta, *Theory of Machines*, "Inertia forces in reciprocating parts": F_T = F_Q sin(theta + phi),
+    F_B = F_Q cos(theta + phi), T = F_T r for the slider-crank; here from the exact joint reaction of any
+    linkage). Valid wherever
+    :func:`~machdyn.linkage.kinetostatics.kinetostatics` is: any crank position away from dead positions.
 
     Parameters
     ----------
@@ -165,7 +167,8 @@ def piston_effort(forces: Forces, slider: str | None = None) -> PistonEffort:
 
         F_P = F . u sign((A - B) . u),    F_Q = F . (A - B) / |A - B|
 
-    (Khurmi & Gupta, *Theory of Machines*, 14th ed., §15.8: F_P = F_L -+ F_I, F_Q = F_P / cos phi.)
+    (Khurmi & Gupta, *Theory of Machines*, "Inertia forces in reciprocating parts": F_P = F_L -+ F_I,
+    F_Q = F_P / cos phi.)
 
     Parameters
     ----------

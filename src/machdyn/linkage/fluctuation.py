@@ -5,12 +5,13 @@ work per cycle). The energy stored in the rotating parts above its value at the 
 
     E(phi) = integral from phi_0 to phi of (T - T_mean) dphi
 
-and the maximum fluctuation of energy is its largest swing, dE = max E - min E (Khurmi & Gupta, *Theory of
-Machines*, 14th ed., ch. 16 "Turning moment diagrams and flywheel", §16.5-16.6: the largest difference of the
-energies at the crossings of the turning-moment curve with the mean-torque line). The cycle is one crank
-revolution (2 pi) for a two-stroke engine, a steam engine or a press, two (4 pi) for a four-stroke engine.
+and the maximum fluctuation of energy is its largest swing, dE = max E - min E (R. S. Khurmi & J. K. Gupta,
+*Theory of Machines*, ch. 16 "Turning moment diagrams and flywheel", "Maximum fluctuation of energy": the largest
+difference of the energies at the crossings of the turning-moment curve with the mean-torque line). The cycle
+is one crank revolution (2 pi) for a two-stroke engine, a steam engine or a press, two (4 pi) for a four-stroke
+engine.
 A flywheel of moment of inertia I at mean speed omega then keeps the coefficient of fluctuation of speed at
-C_s = dE / (I omega^2) (ibid. §16.8).
+C_s = dE / (I omega^2) (ibid., "Energy stored in a flywheel").
 """
 
 from __future__ import annotations
@@ -26,8 +27,11 @@ def energy_fluctuation(torque, crank_angle, *, cycle: float | None = None) -> np
     """Maximum fluctuation of energy dE [J] of the torque ``torque`` over one whole cycle of the crank.
 
     dE = max E - min E with E(phi) = integral (T - T_mean) dphi over the cycle, T_mean the cycle mean
-    (Khurmi & Gupta, *Theory of Machines*, 14th ed., ch. 16, §16.5-16.6); integrated with the trapezoidal
-    rule, whose error falls with the square of the step.
+    (Khurmi & Gupta, *Theory of Machines*, ch. 16, "Maximum fluctuation of energy"); integrated with the trapezoidal
+    rule, whose error falls with the square of the step, the extremes taken at the crossings of T with T_mean.
+    Valid for a uniform resisting torque (the cycle mean) and a crank speed close to constant over the cycle
+    (the turning-moment diagram is then the energy diagram); exact to rounding for a piecewise-linear diagram
+    with its corners on the samples.
 
     Parameters
     ----------

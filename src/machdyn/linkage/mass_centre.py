@@ -3,9 +3,9 @@
 The moving bodies and the point masses attached to them (counterweights) together have the mass M and the
 centre of mass G with M r_G = sum m_i r_i, and likewise for its velocity and acceleration. Newton's second law
 for the whole moving mechanism gives the shaking force: with gravity off and no external loads, the force the
-mechanism exerts on its frame is -M a_G (Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th
-ed., §16.2; Wilson & Sadler, *Kinematics and Dynamics of Machinery*, 3rd ed., §15.1). The mechanism is
-force-balanced exactly when G stands still.
+mechanism exerts on its frame is -M a_G (Newton's second law for a system of bodies; Uicker, Pennock &
+Shigley, *Theory of Machines and Mechanisms*, 5th ed., chapter "Balancing"). The mechanism is force-balanced
+exactly when G stands still.
 """
 
 from __future__ import annotations
@@ -50,7 +50,8 @@ def mass_centre(kin: Kinematics) -> MassCentre:
     """The total centre of mass of every moving body and point mass of the mechanism.
 
     M = sum m_i,  r_G = sum m_i r_i / M,  v_G = sum m_i v_i / M,  a_G = sum m_i a_i / M, each r_i the centre of
-    mass of a body or the position of a point mass (Uicker, Pennock & Shigley, 5th ed., §16.2).
+    mass of a body or the position of a point mass (the definition of the centre of mass of a system;
+    Uicker, Pennock & Shigley, 5th ed., chapter "Balancing").
 
     Parameters
     ----------
