@@ -26,6 +26,12 @@ S6  Slider-crank with crank 150 mm, rod 600 mm, 300 r.p.m. clockwise, 45° from 
     of the mid-point of the rod by velocity and acceleration diagrams, "v = 4.1 m/s" and "aD = 117 m/s²" by
     measurement (http://mechdiploma.com/crank-slider-crank-mechanism-rotates-clockwise-constant-speed-300-rpm-
     crank-150-mm-and-connecting; https://qna.carrieradda.com/26888/ and /26697/).
+S7  R. S. Khurmi & J. K. Gupta, *Theory of Machines*, Example 15.1 (p. 521 in the edition of the FOSSEE Python
+    Textbook Companion, https://tbc-python.fossee.in/convert-notebook/Theory_Of_Machines/ch15.ipynb): crank
+    200 mm, rod 700 mm, 120 rad/s clockwise, crank at 30° to I.D.C., by Klein's construction. Printed "[Ans.
+    15.24 m/s, 2880 m/s2 ; 16.8 m/s, 2779.2 m/s2 ; 29.66 rad/s, 1913.14 rad/s2]" (https://assignmentexpert.com/
+    homework-answers/engineering/mechanical-engineering/question-198982), from lengths measured on the
+    full-size construction: OM = 127, NO = 200, OD1 = 140, OD2 = 193, CM = 173, QN = 93 mm (the companion).
 
 Tolerances. The textbooks compute with the two-term series of the piston's motion (x = r(1 - cos t + sin² t /
 2n), v = w r (sin t + sin 2t / 2n), a = w² r (cos t + cos 2t / n)) and round intermediate values; machdyn is
@@ -33,7 +39,10 @@ exact. Each test therefore (1) checks machdyn against the exact closed form to r
 textbook's own series formula reproduces the printed value to its printed digits and the book's rounding of
 the crank speed (omega to 4 significant figures, e.g. 52.36 rad/s: up to 2e-4 relative on omega²), and (3)
 allows machdyn to differ from the printed value by |exact - series| plus that same allowance. Graphical answers
-(S6) are readings of a drawing: 3 % (a velocity diagram read to 0.1 m/s at ~1 m/s per 10 mm).
+(S6) are readings of a drawing: 3 % (a velocity diagram read to 0.1 m/s at ~1 m/s per 10 mm). Klein's
+construction (S7) is drawn at full size and its lengths read to the millimetre; the book's readings differ from
+the exact lengths by up to 3 mm, the accuracy of a hand construction, so each length may differ by 2 % of the
+crank (4 mm).
 """
 
 import numpy as np
@@ -199,3 +208,33 @@ def test_mid_point_of_the_rod_by_velocity_and_acceleration_diagrams():
     np.testing.assert_allclose([mid.vx, mid.ax], [(a.vx + b.vx) / 2, (a.ax + b.ax) / 2], rtol=1e-12)
     assert float(mid.accel) == pytest.approx(117.0, rel=0.03)
     assert float(mid.speed) == pytest.approx(4.1, rel=0.03)
+
+
+def test_khurmi_15_1_klein_construction():
+    # Klein's construction turns every answer into a length: v = w x length, a = w^2 x length, and for the rod
+    # omega_PC = w CM / PC, alpha_PC = w^2 QN / PC. machdyn's exact motion gives the exact lengths.
+    r, l, omega = 0.2, 0.7, 120.0
+    mech = slider_crank(r, l, coms=((r / 2, 0.0), (l / 2, 0.0), (0.0, 0.0)))
+    kin = kinematics(mech, np.radians(-30.0), -omega)  # clockwise crank at 30° from I.D.C.
+    lengths = {
+        "OM": abs(float(kin.slide("slider").v)) / omega,
+        "NO": abs(float(kin.slide("slider").a)) / omega**2,
+        "OD1": float(kin.com("rod").speed) / omega,
+        "OD2": float(kin.com("rod").accel) / omega**2,
+        "CM": abs(float(kin.body("rod").omega)) * l / omega,
+        "QN": abs(float(kin.body("rod").alpha)) * l / omega**2,
+    }
+    # Exact closed forms of the first and the rod's angular velocity: v_P = w r sin(t + phi) / cos(phi), and
+    # omega_PC = w cos(t) / sqrt(n^2 - sin^2 t).
+    t, n = np.radians(30.0), l / r
+    phi = np.arcsin(np.sin(t) / n)
+    np.testing.assert_allclose(lengths["OM"], r * np.sin(t + phi) / np.cos(phi), rtol=1e-12)
+    np.testing.assert_allclose(lengths["CM"], l * np.cos(t) / np.sqrt(n * n - np.sin(t) ** 2), rtol=1e-12)
+    printed = {"OM": 0.127, "NO": 0.200, "OD1": 0.140, "OD2": 0.193, "CM": 0.173, "QN": 0.093}
+    for name, value in printed.items():
+        assert abs(lengths[name] - value) <= 0.02 * r, (name, lengths[name], value)
+    # The printed answers are those lengths times w or w^2 (and / PC for the rod).
+    answers = (15.24, 2880.0, 16.8, 2779.2, 29.66, 1913.14)
+    from_lengths = (omega * 0.127, omega**2 * 0.200, omega * 0.140, omega**2 * 0.193, omega * 0.173 / l,
+                    omega**2 * 0.093 / l)
+    np.testing.assert_allclose(from_lengths, answers, rtol=5e-4)
