@@ -397,3 +397,45 @@ def test_energy_fluctuation_bad_input_by_message(phi, torque, kwargs, message):
     with pytest.raises(InputError) as err:
         energy_fluctuation(t, phi, **kwargs)
     assert message in str(err.value)
+
+
+# ------------------------------------------------------------------------------------ property tests (random)
+
+
+@st.composite
+def engines(draw):
+    """A random offset slider-crank or crank-rocker four-bar, its crank without mass, with random masses, a
+    counterweight on the coupler and a force on the output: one that turns fully."""
+    masses = (0.0, draw(st.floats(0.1, 5.0)), draw(st.floats(0.1, 5.0)))
+    if draw(st.booleans()):
+        r = draw(st.floats(0.02, 0.1))
+        mech = slider_crank(r, r * draw(st.floats(2.5, 6.0)), r * draw(st.floats(-0.8, 0.8)), masses=masses,
+                            gravity=(0.0, 0.0))
+        force = PointForce("load", "slider.B", fx=draw(st.floats(-500.0, 500.0)))
+        body = "rod"
+    else:
+        crank = draw(st.floats(0.02, 0.04))
+        mech = four_bar(crank, 0.12, 0.08, 0.10, masses=masses, gravity=(0.0, 0.0))
+        force = PointForce("load", "rocker.B", fy=draw(st.floats(-500.0, 500.0)))
+        body = "coupler"
+    weight = PointMass("cw", body, draw(st.floats(0.0, 2.0)), (0.01, draw(st.floats(-0.02, 0.02))))
+    return with_loads(mech, forces=force, point_masses=weight)
+
+
+@settings(max_examples=25, deadline=None)
+@given(mech=engines(), speed=st.floats(-40.0, 40.0).filter(lambda w: abs(w) > 0.5), accel=st.floats(-50.0, 50.0))
+def test_random_engines_obey_the_centre_of_mass_and_crank_effort_identities(mech, speed, accel):
+    forces = kinetostatics(mech, crank_angles(36), speed, accel)
+    kin = forces.kinematics
+    g = mass_centre(kin)
+    # Frame force = the external force on the moving parts - M a_G (gravity off).
+    fx, fy = g.inertia_force
+    load = mech.forces[0]
+    scale = float(np.max(np.hypot(fx, fy))) + abs(float(load.fx)) + abs(float(load.fy)) + 1.0
+    np.testing.assert_allclose(forces.frame_fx, fx + load.fx, atol=1e-9 * scale)
+    np.testing.assert_allclose(forces.frame_fy, fy + load.fy, atol=1e-9 * scale)
+    # A crank without mass or load of its own: the pin's turning moment balances the drive at every position.
+    effort = crank_effort(forces)
+    torque_scale = float(np.max(np.abs(forces.driving_torque))) + 1e-9
+    np.testing.assert_allclose(effort.turning_moment, -effort.driving_torque, atol=1e-9 * torque_scale)
+    np.testing.assert_allclose(effort.driving_torque, np.sign(speed) * forces.driving_torque, rtol=1e-15)
