@@ -34,3 +34,16 @@ __all__ = [
     "diagnose", "double_slider_crank", "energy", "four_bar", "grashof_type", "harmonics", "inverted_slider_crank",
     "joints", "kinematics", "kinetostatics", "six_bar", "slider_crank", "stack_designs", "sweep",
 ]
+
+# Textbook-facing additions: loads on a built model, inverse position, crank and piston effort, the total centre
+# of mass and the maximum fluctuation of energy.
+from .effort import CrankEffort, PistonEffort, crank_effort, piston_effort  # noqa: E402
+from .fluctuation import energy_fluctuation  # noqa: E402
+from .inverse import InversePosition, inverse_position  # noqa: E402
+from .loading import with_loads  # noqa: E402
+from .mass_centre import MassCentre, mass_centre  # noqa: E402
+
+__all__ += [
+    "CrankEffort", "InversePosition", "MassCentre", "PistonEffort", "crank_effort", "energy_fluctuation",
+    "inverse_position", "mass_centre", "piston_effort", "with_loads",
+]
