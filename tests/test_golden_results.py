@@ -16,6 +16,13 @@ from machdyn.runner import run_problem
 from machdyn.units import ureg
 
 ROOT = Path(__file__).resolve().parents[1]
+
+#: Results computed more exactly on purpose since the recording, with the relative tolerance that covers it.
+CORRECTED = {
+    # The torque diagram is now integrated by the trapezoidal rule, exact for the piecewise-linear diagram the
+    # samples define, rather than by the rectangle rule: the two differ by about 1e-5 relative at 360 samples.
+    "flywheel.energy_fluctuation": 1e-4,
+}
 GOLDEN = sorted((ROOT / "tests" / "golden").glob("*.results.json"))
 
 
@@ -47,6 +54,9 @@ def test_results_json_unchanged(golden: Path) -> None:
     for key, old in recorded.items():
         new = now[key]
         value = _in_unit(new["value"], new["unit"], old["unit"]) if new["unit"] != old["unit"] else new["value"]
-        if not _close(old["value"], value):
+        if key in CORRECTED:
+            if abs(old["value"] - value) > CORRECTED[key] * abs(old["value"]):
+                changed.append((key, old, new))
+        elif not _close(old["value"], value):
             changed.append((key, old, new))
     assert not changed, f"results changed: {changed[:5]}"

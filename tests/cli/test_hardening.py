@@ -167,3 +167,30 @@ def test_the_rotary_screen_names_its_joints_as_the_paper_does():
     assert rows["joint.O.max_force"].startswith("Joint A, the crank centre")
     assert rows["joint.A.max_force"].startswith("Joint B, crank to rod")
     assert rows["joint.B.max_force"].startswith("Joint C, rod to slider")
+
+
+def test_energy_fluctuation_over_two_turns_and_a_note_for_a_partial_range():
+    """A 720 deg cycle (a four-stroke engine's) keeps its flywheel figure; a partial range says why it has none."""
+    from machdyn.runner import run_problem
+
+    two = FOUR_BAR.replace("positions = 360", 'positions = 721\nstart = "0 deg"\nstop = "720 deg"')
+    one = run_problem(FOUR_BAR).results["flywheel.energy_fluctuation"]
+    assert run_problem(two).results["flywheel.energy_fluctuation"] == pytest.approx(one, rel=1e-4)
+    part = run_problem(FOUR_BAR.replace("positions = 360", 'positions = 91\nstart = "0 deg"\nstop = "90 deg"'))
+    assert "flywheel.energy_fluctuation" not in part.results
+    assert any(w.startswith("No energy fluctuation for a flywheel") for w in part.warnings)
+
+
+def test_inertial_shaking_force_is_told_apart_from_the_frame_load():
+    """A four-bar carrying a process force and its weight: the frame load is not the inertial shaking force."""
+    from machdyn.linkage import mass_centre
+    from machdyn.runner import run_problem
+
+    result = run_problem(FOUR_BAR + '\n[[loads.forces]]\nname = "process"\npoint = "coupler.P"\nfy = "-50 N"\n'
+                                    'active = ["0 deg", "180 deg"]\n')
+    rows = {r.key: r for r in result.summary.rows}
+    inertial, frame = rows["inertial_shaking_force.max"], rows["shaking_force.max"]
+    assert "inertial" in inertial.label and "Frame force" in frame.label
+    ix, iy = mass_centre(result.analysis.kinematics).inertia_force
+    assert inertial.value == pytest.approx(float(np.max(np.hypot(ix, iy))), rel=1e-12)
+    assert abs(frame.value - inertial.value) > 1e-3 * frame.value

@@ -43,7 +43,10 @@ def analyse_linkage(problem: Any, mech: Any, step: Step, warnings: list[str] | N
         analysis = analyse(mech, angles, speed, accel)
     said = list(warnings or []) + [str(w.message) for w in caught if issubclass(w.category, UserWarning)]
     about = tuple(problem.output.shaking_moment_about)
-    values, units = linkage_scalars(analysis, mech, about=about, harmonic_orders=problem.output.harmonics)
+    notes: list[str] = []
+    values, units = linkage_scalars(analysis, mech, about=about, harmonic_orders=problem.output.harmonics,
+                                    notes=notes)
+    said += notes
     balance = float(np.max(np.atleast_1d(analysis.work_balance.relative)))
     if not balance < 1e-6:
         said.append(

@@ -30,7 +30,8 @@ LINKAGE_LABELS: dict[str, Label] = {
     "input_power.mean": Label("Input power, mean", "W", zero_below="input_power.max"),
     "input_power.max": Label("Input power, maximum", "W"),
     "input_power.min": Label("Input power, minimum (negative: power flows back into the drive)", "W"),
-    "shaking_force.max": Label("Shaking force, max", "N"),
+    "inertial_shaking_force.max": Label("Shaking force, inertial (-sum m a_G), max", "N"),
+    "shaking_force.max": Label("Frame force, max (inertia, process loads and weight)", "N"),
     "shaking_moment.max_abs": Label("Shaking moment about the origin, max |M|", "N*m",
                                     zero_below="driving_torque.max_abs"),
     "shaking_moment.about_x": Label("Shaking moment reference point, x", "m"),
@@ -56,9 +57,9 @@ LINKAGE_LABELS: dict[str, Label] = {
 #: The keys of a linkage analysis shown in the summary, in order (joints and strokes follow).
 LINKAGE_SUMMARY = (
     "driving_torque.max_abs", "driving_torque.rms", "driving_torque.mean", "input_power.mean", "input_power.max",
-    "input_power.min", "shaking_force.max", "shaking_moment.max_abs", "kinetic_energy.max", "kinetic_energy.min",
-    "kinetic_energy.fluctuation", "flywheel.energy_fluctuation", "time_ratio", "transmission_angle.min",
-    "transmission_angle.max", "work_balance.relative_residual",
+    "input_power.min", "inertial_shaking_force.max", "shaking_force.max", "shaking_moment.max_abs",
+    "kinetic_energy.max", "kinetic_energy.min", "kinetic_energy.fluctuation", "flywheel.energy_fluctuation",
+    "time_ratio", "transmission_angle.min", "transmission_angle.max", "work_balance.relative_residual",
 )
 
 
@@ -156,23 +157,6 @@ def includes_end_point(angle: Any) -> bool:
     return bool(abs(a[-1] - a[0] - 2 * np.pi) <= 0.5 * step)
 
 
-def flywheel_energy_fluctuation(torque: Any, crank_angle: Any) -> np.ndarray:
-    """Maximum fluctuation of energy over one turn at constant speed [J].
-
-    ΔE = max − min over the cycle of the cumulative work of the torque's fluctuation, ∫(T − T_mean) dφ
-    (Khurmi & Gupta, *Theory of Machines*, 14th ed., §16.6 "Fluctuation of energy"). ``torque`` [N·m] over
-    ``crank_angle`` [rad] evenly spaced over one full turn (with or without the end point).
-    """
-    phi = np.asarray(crank_angle, dtype=float).ravel()
-    t = np.asarray(torque, dtype=float)
-    step = phi[1] - phi[0]
-    samples = t[..., :-1] if includes_end_point(phi) else t
-    dev = samples - np.nanmean(samples, axis=-1, keepdims=True)
-    work = np.cumsum(dev, axis=-1) * step
-    work = np.concatenate([np.zeros(work.shape[:-1] + (1,)), work], axis=-1)
-    return np.nanmax(work, axis=-1) - np.nanmin(work, axis=-1)
-
-
 def _flatten(items: Iterable) -> Iterable:
     for item in items:
         if isinstance(item, list | tuple | np.ndarray) and np.ndim(item) > 0:
@@ -190,10 +174,12 @@ def linkage_scalars(
     *,
     about: tuple[float, float] = (0.0, 0.0),
     harmonic_orders: int = 0,
+    notes: list[str] | None = None,
 ) -> tuple[dict[str, Any], dict[str, str]]:
     """Every scalar result of an :func:`~machdyn.linkage.analyse` result in SI: (values, units of the keys made
     at run time). ``about`` [m] is the point of the shaking moment; ``harmonic_orders`` > 0 adds the amplitude
-    and phase of that many harmonics of the driving torque, the shaking moment and the frame force components."""
+    and phase of that many harmonics of the driving torque, the shaking moment and the frame force components;
+    ``notes`` collects why a result could not be formed (the energy fluctuation of a partial crank range)."""
     designs = design_count(analysis)
     kin, forces, energy = analysis.kinematics, analysis.forces, analysis.energy
     mech = mechanism if mechanism is not None else mechanism_of(analysis)
@@ -216,6 +202,12 @@ def linkage_scalars(
         out[f"joint.{name}.max_force"] = _reduce(forces.joint(name).magnitude, "max", designs)
     fx, fy = forces.frame_force
     out["shaking_force.max"] = _reduce(np.hypot(fx, fy), "max", designs)
+    # The inertial shaking force alone (what balancing removes), apart from the process loads and the weight
+    # the frame also carries: -M a_G of the whole moving mechanism.
+    from ..linkage import mass_centre
+
+    ix, iy = mass_centre(kin).inertia_force
+    out["inertial_shaking_force.max"] = _reduce(np.hypot(ix, iy), "max", designs)
     out["shaking_moment.max_abs"] = _reduce(forces.shaking_moment(about=tuple(about)), "max_abs", designs)
     if tuple(about) != (0.0, 0.0):
         out["shaking_moment.about_x"], out["shaking_moment.about_y"] = float(about[0]), float(about[1])
@@ -226,8 +218,15 @@ def linkage_scalars(
     out["reduced_inertia.min"] = _reduce(energy.reduced_inertia, "min", designs)
     out["reduced_inertia.max"] = _reduce(energy.reduced_inertia, "max", designs)
     out["reduced_inertia.mean"] = _reduce(energy.reduced_inertia, "mean", designs)
-    if full_uniform_cycle(kin.crank_angle) and np.all(np.isfinite(torque)):
-        out["flywheel.energy_fluctuation"] = _scalar(flywheel_energy_fluctuation(torque, kin.crank_angle), designs)
+    if np.all(np.isfinite(torque)):
+        from ..errors import InputError
+        from ..linkage import energy_fluctuation
+
+        try:
+            out["flywheel.energy_fluctuation"] = _scalar(energy_fluctuation(torque, kin.crank_angle), designs)
+        except InputError as exc:
+            if notes is not None:
+                notes.append(f"No energy fluctuation for a flywheel: {exc}")
     try:
         wb = energy.work_balance()
     except Exception:  # noqa: BLE001 - a work balance that cannot be formed is simply not reported
