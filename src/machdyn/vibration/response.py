@@ -243,20 +243,25 @@ class FrameResponse:
         d = _direction_vector(direction)
         return np.abs(a @ d) if d is not None else np.sqrt(np.sum(np.abs(a) ** 2, axis=-1))
 
-    def rms(self, point, quantity: str = "velocity", direction=None) -> float:
+    def rms(self, point, quantity: str = "velocity", direction=None, band=None) -> float:
         """RMS [SI] over a revolution of ``quantity`` at ``point``: along ``direction`` [rad], or with None
-        of the vector (sqrt(rms_x^2 + rms_y^2))."""
+        of the vector (sqrt(rms_x^2 + rms_y^2)). With ``band`` (low, high) [Hz] only the orders inside it count,
+        as a band-limited measurement would see them (ISO 10816-1: 10...1000 Hz)."""
         a = self._quantity(quantity, point)
+        if band is not None:
+            low, high = (float(v) for v in band)
+            f = self.loads.frequencies
+            a = a[(f >= low) & (f <= high)]
         d = _direction_vector(direction)
         return _rms(a @ d if d is not None else a)
 
-    def rms_velocity(self, point, direction=None) -> float:
+    def rms_velocity(self, point, direction=None, band=None) -> float:
         """RMS velocity [m/s] at ``point`` (see :meth:`rms`)."""
-        return self.rms(point, "velocity", direction)
+        return self.rms(point, "velocity", direction, band)
 
-    def rms_acceleration(self, point, direction=None) -> float:
+    def rms_acceleration(self, point, direction=None, band=None) -> float:
         """RMS acceleration [m/s^2] at ``point`` (see :meth:`rms`)."""
-        return self.rms(point, "acceleration", direction)
+        return self.rms(point, "acceleration", direction, band)
 
     def time_history(self, point, quantity: str = "acceleration", samples: int = 360):
         """(t [s], x component, y component) over one crank revolution, ``samples`` points."""
