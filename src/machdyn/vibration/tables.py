@@ -10,16 +10,9 @@ from typing import Annotated, Literal
 
 from pydantic import Field, field_validator
 
-from ..problem.fields import Angle, FieldError, Inertia, Length, Mass, Point, Stiffness, quantity
+from ..problem.fields import Angle, FieldError, Inertia, Length, Mass, Point, Stiffness
 from ..problem.schema import CounterweightSpec, Name, Spec
-
-PositiveMass = quantity("kg", "mass", ">0")
-PositiveInertia = quantity("kg*m^2", "inertia", ">0")
-Damping = quantity("N*s/m", "damping", ">=0")
-PositiveStiffness = quantity("N/m", "stiffness", ">0")
-PositiveLength = quantity("m", "length", ">0")
-Frequency = quantity("Hz", "frequency", ">=0")
-Velocity = quantity("m/s", "velocity", ">0")
+from .quantities import Damping, Frequency, PositiveInertia, PositiveLength, PositiveMass, PositiveStiffness, Velocity
 
 MachineClass = Literal["I", "II", "III", "IV"]
 Standard = Literal["ISO 10816-1", "ISO 20816-1", "ISO 2372"]
