@@ -12,7 +12,6 @@ Run it from the repository root:  python examples/signals/make_record.py
 from __future__ import annotations
 
 import sys
-import tomllib
 from pathlib import Path
 
 import numpy as np
@@ -21,11 +20,10 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent.parent
 sys.path.insert(0, str(ROOT / "src"))
 
-from machdyn.linkage import analyse  # noqa: E402
-from machdyn.problem.build import build_mechanism, crank_angles  # noqa: E402
-from machdyn.problem.loader import validate_linkage  # noqa: E402
+from machdyn.kinds import kind  # noqa: E402
+from machdyn.pipeline import no_step  # noqa: E402
+from machdyn.problem.loader import read_problem  # noqa: E402
 from machdyn.vibration.study import study_frame  # noqa: E402
-from machdyn.vibration.tables import FrameTable  # noqa: E402
 
 SAMPLING_RATE = 2560.0  # Hz: more than twice the band's top of 1000 Hz
 DURATION = 2.0  # s: 40 revolutions of the 20 Hz shaft, 20 periods of the band's 10 Hz lower edge
@@ -33,13 +31,10 @@ SEED = 20160605
 
 
 def predicted_study(problem_file: Path):
-    data = tomllib.loads(problem_file.read_text(encoding="utf-8"))
-    frame = data.pop("frame")
-    data.pop("signals", None)
-    problem = validate_linkage(data)
-    mech = build_mechanism(problem)
-    analysis = analyse(mech, crank_angles(problem), problem.drive.speed)
-    return study_frame(FrameTable.model_validate(frame), mech, analysis)
+    """The frame study of the problem file (its [signals] records are not read: they are what this makes)."""
+    loaded = read_problem(problem_file)
+    outcome = kind(loaded.kind).analyse(loaded.spec, loaded.model, no_step)
+    return study_frame(loaded.spec.frame, outcome.mechanism, outcome.analysis)
 
 
 def record(response, points, direction, rng) -> np.ndarray:

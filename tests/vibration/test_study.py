@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import importlib.util
-import tomllib
 from pathlib import Path
 
 import numpy as np
@@ -11,51 +10,50 @@ import pytest
 from pydantic import ValidationError
 
 from machdyn.errors import InputError
-from machdyn.linkage import analyse
-from machdyn.problem.build import build_mechanism, crank_angles
-from machdyn.problem.loader import validate_linkage
-from machdyn.vibration.study import (
-    LABELS,
-    frame_scalars,
-    frame_series,
-    signal_scalars,
-    signal_series,
-    study_frame,
-    study_signals,
-)
+from machdyn.kinds import kind
+from machdyn.pipeline import no_step
+from machdyn.problem.loader import read_problem
+from machdyn.vibration.stage import frame_outcome, signal_outcome
+from machdyn.vibration.study import study_frame, study_signals
 from machdyn.vibration.tables import FrameTable, SignalsTable
 
 ROOT = Path(__file__).resolve().parents[2]
-EXAMPLE = ROOT / "examples" / "tamper_on_tyres.toml"
+EXAMPLE = ROOT / "examples" / "vibration_record.toml"
 
 
 @pytest.fixture(scope="module")
 def example():
-    data = tomllib.loads(EXAMPLE.read_text())
-    frame, signals = data.pop("frame"), data.pop("signals")
-    problem = validate_linkage(data)
-    mech = build_mechanism(problem)
-    analysis = analyse(mech, crank_angles(problem), problem.drive.speed)
-    fs = study_frame(FrameTable.model_validate(frame), mech, analysis)
-    ss = study_signals(SignalsTable.model_validate(signals), source=EXAMPLE, crank_speed=problem.drive.speed,
-                       frame_study=fs)
-    return problem, frame, fs, ss
+    loaded = read_problem(EXAMPLE)
+    outcome = kind(loaded.kind).analyse(loaded.spec, loaded.model, no_step)
+    problem = loaded.spec
+    fs = study_frame(problem.frame, outcome.mechanism, outcome.analysis)
+    ss = study_signals(problem.signals, source=EXAMPLE, crank_speed=problem.drive.speed, frame_study=fs)
+    frame = tomllib_table(EXAMPLE, "frame")
+    return (outcome.mechanism, outcome.analysis), frame, fs, ss
+
+
+def tomllib_table(path, name):
+    import tomllib
+
+    return tomllib.loads(Path(path).read_text())[name]
 
 
 def test_frame_study_of_the_tamper_example(example):
     _, _, fs, _ = example
-    scalars = frame_scalars(fs)
-    assert set(scalars) <= set(LABELS)
-    assert len(scalars["frame.natural_frequencies"]) == 3
-    assert len(scalars["frame.transmitted_force.before"]) == 4  # two tyres, two lines each
+    out = frame_outcome(fs)
+    values = out.scalars
+    assert set(values) == set(out.labels)
+    assert [k for k in values if k.endswith(".frequency")] == [f"frame.mode_{j}.frequency" for j in (1, 2, 3)]
+    assert len([k for k in values if k.startswith("frame.transmitted_force.before.")]) == 4  # 2 tyres x 2 lines
     # Balancing lowers the RMS acceleration at every point and the mean level (about 43 % for this setting).
-    assert all(r > 0 for r in scalars["frame.acceleration_reduction"])
-    assert 30 < scalars["frame.mean_acceleration_reduction"] < 60
-    assert scalars["frame.worst_zone.after"] <= scalars["frame.worst_zone.before"]
-    series = frame_series(fs)
-    t, centre = series["frame_time"]["time"][0], series["frame_time"]["centre_before"][0]
+    assert all(values[f"frame.acceleration_reduction.{p}"] > 0 for p in fs.points)
+    assert 30 < values["frame.mean_acceleration_reduction"] < 60
+    assert max(values[f"frame.zone.after.{p}"] for p in fs.points) <= max(values[f"frame.zone.before.{p}"]
+                                                                          for p in fs.points)
+    assert any("zone D" in w for w in out.warnings)
+    t, centre = out.series["frame_time"]["time"][0], out.series["frame_time"]["centre_before"][0]
     # RMS of the vertical time series equals the predicted RMS (one whole revolution, rel 1e-9).
-    assert np.sqrt(np.mean(centre**2)) == pytest.approx(fs.rms("before", "acceleration")[0], rel=1e-9)
+    assert np.sqrt(np.mean(centre**2)) == pytest.approx(values["frame.rms_acceleration.before.centre"], rel=1e-9)
     assert t.size == 360
 
 
@@ -68,10 +66,10 @@ def test_measured_records_match_the_prediction(example):
         assert c.velocity_rms == pytest.approx(ss.predicted_before[c.name], rel=0.03)
     for c in ss.after.channels:
         assert c.velocity_rms == pytest.approx(ss.predicted_after[c.name], rel=0.03)
-    scalars = signal_scalars(ss)
-    assert set(scalars) <= set(LABELS)
-    assert scalars["signals.mean_reduction"] == pytest.approx(ss.reduction["mean"])
-    assert signal_series(ss)["signals_psd"]["front"][0].size == signal_series(ss)["signals_psd"]["frequency"][0].size
+    out = signal_outcome(ss)
+    assert set(out.scalars) == set(out.labels)
+    assert out.scalars["signals.mean_reduction"] == pytest.approx(ss.reduction["mean"])
+    assert out.series["signals_psd"]["front"][0].size == out.series["signals_psd"]["frequency"][0].size
 
 
 def test_committed_records_are_what_the_script_makes(example, tmp_path):
@@ -101,9 +99,7 @@ def test_table_errors(example):
 
 
 def test_unknown_counterweight_body_and_missing_record(example, tmp_path):
-    problem, frame, _, _ = example
-    mech = build_mechanism(problem)
-    analysis = analyse(mech, crank_angles(problem), problem.drive.speed)
+    (mech, analysis), frame, _, _ = example
     bad = dict(frame, after={"counterweights": [{"body": "shaft", "mass": "1 kg", "radius": "1 mm",
                                                  "angle": "0 deg"}]})
     with pytest.raises(InputError, match="no body 'shaft'"):

@@ -4,7 +4,7 @@
 shaking loads (and to a variant with counterweights added), the RMS levels at the named points, the transmitted
 force per mount and the predicted severity. ``study_signals`` reads the records, judges them and, with a frame
 study, sets the predicted RMS velocity next to the measured one. ``run_frame`` / ``run_signals`` wrap them as
-capability stages; ``scalars``/``series`` give the flat SI values written to results.json and CSV.
+capability stages (:mod:`machdyn.vibration.stage`).
 """
 
 from __future__ import annotations
@@ -22,8 +22,7 @@ from .response import Comparison, FrameResponse, compare, shaking_loads, steady_
 from .severity import Severity, classify
 from .signals import RecordAnalysis, analyse_record, compare_records, read_record
 
-__all__ = ["FrameStudy", "SignalStudy", "build_frame", "study_frame", "study_signals", "frame_scalars",
-           "frame_series", "signal_scalars", "signal_series", "run_frame", "run_signals", "LABELS"]
+__all__ = ["FrameStudy", "SignalStudy", "build_frame", "study_frame", "study_signals", "with_counterweights"]
 
 
 def build_frame(table, crank_frequency: float) -> Frame:
@@ -152,15 +151,18 @@ def study_signals(table, *, source=None, crank_speed: float | None = None,
     folder); with a ``frame_study``, predicted RMS velocities at the channels named like its points."""
     band = tuple(table.band)
 
-    def analyse_file(name):
-        return analyse_record(read_record(_resolve(name, source)), band, crank_speed=crank_speed)
+    def analyse_file(name, field):
+        try:
+            return analyse_record(read_record(_resolve(name, source)), band, crank_speed=crank_speed)
+        except InputError as exc:
+            raise InputError(f"signals.{field}: {exc}") from None
 
     def judge(analysis):
         return tuple(classify(c.velocity_rms, table.machine_class, table.standard, boundaries=table.boundaries)
                      for c in analysis.channels)
 
-    before = analyse_file(table.record)
-    after = analyse_file(table.after) if table.after else None
+    before = analyse_file(table.record, "record")
+    after = analyse_file(table.after, "after") if table.after else None
     pred_b: dict = {}
     pred_a: dict = {}
     labels = ("before", "after")
@@ -174,123 +176,3 @@ def study_signals(table, *, source=None, crank_speed: float | None = None,
                     pred_a[c.name] = frame_study.after.rms(p, "velocity", frame_study.direction, band)
     return SignalStudy(before, after, judge(before), judge(after) if after else None,
                        compare_records(before, after) if after else None, pred_b, pred_a, labels)
-
-
-# ------------------------------------------------------------------------------------------- flat results
-
-#: result key -> (label, SI unit, display unit)
-LABELS: dict[str, tuple[str, str, str]] = {
-    "frame.natural_frequencies": ("Natural frequencies of the frame", "Hz", "Hz"),
-    "frame.damping_ratios": ("Modal damping ratios", "", ""),
-    "frame.rms_acceleration.before": ("RMS acceleration at the points, before", "m/s^2", "m/s^2"),
-    "frame.rms_acceleration.after": ("RMS acceleration at the points, after", "m/s^2", "m/s^2"),
-    "frame.rms_velocity.before": ("RMS velocity at the points, before", "m/s", "mm/s"),
-    "frame.rms_velocity.after": ("RMS velocity at the points, after", "m/s", "mm/s"),
-    "frame.acceleration_reduction": ("Reduction of RMS acceleration per point", "%", "%"),
-    "frame.mean_acceleration_reduction": ("Reduction of the mean RMS acceleration", "%", "%"),
-    "frame.transmitted_force.before": ("RMS force per mount to the foundation, before", "N", "N"),
-    "frame.transmitted_force.after": ("RMS force per mount to the foundation, after", "N", "N"),
-    "frame.worst_zone.before": ("Worst predicted severity zone, before (0 = A ... 3 = D)", "", ""),
-    "frame.worst_zone.after": ("Worst predicted severity zone, after (0 = A ... 3 = D)", "", ""),
-    "signals.velocity_rms.before": ("Measured RMS velocity per channel", "m/s", "mm/s"),
-    "signals.velocity_rms.after": ("Measured RMS velocity per channel, after", "m/s", "mm/s"),
-    "signals.mean_velocity_rms.before": ("Mean measured RMS velocity", "m/s", "mm/s"),
-    "signals.mean_velocity_rms.after": ("Mean measured RMS velocity, after", "m/s", "mm/s"),
-    "signals.mean_reduction": ("Reduction of the mean RMS velocity", "%", "%"),
-    "signals.worst_zone.before": ("Worst measured severity zone (0 = A ... 3 = D)", "", ""),
-    "signals.worst_zone.after": ("Worst measured severity zone, after (0 = A ... 3 = D)", "", ""),
-    "signals.crest_factor": ("Crest factor per channel", "", ""),
-}
-
-
-def frame_scalars(study: FrameStudy) -> dict:
-    out: dict = {
-        "frame.natural_frequencies": [float(v) for v in study.modes.frequencies],
-        "frame.damping_ratios": [float(v) for v in study.modes.damping_ratios],
-        "frame.rms_acceleration.before": [float(v) for v in study.rms("before", "acceleration")],
-        "frame.rms_velocity.before": [float(v) for v in study.rms("before", "velocity")],
-        "frame.transmitted_force.before": [study.before.transmitted_force_rms(m.name) for m in study.frame.mounts],
-        "frame.worst_zone.before": float(max(s.index for s in study.severity_before)),
-    }
-    if study.after is not None and study.acceleration is not None and study.severity_after is not None:
-        out.update({
-            "frame.rms_acceleration.after": [float(v) for v in study.acceleration.after],
-            "frame.rms_velocity.after": [float(v) for v in study.rms("after", "velocity")],
-            "frame.acceleration_reduction": [float(v) for v in study.acceleration.reduction],
-            "frame.mean_acceleration_reduction": study.acceleration.mean_reduction,
-            "frame.transmitted_force.after": [study.after.transmitted_force_rms(m.name) for m in study.frame.mounts],
-            "frame.worst_zone.after": float(max(s.index for s in study.severity_after)),
-        })
-    return out
-
-
-def frame_series(study: FrameStudy, samples: int = 360) -> dict:
-    """``frame_spectrum``: velocity amplitude per order at each point; ``frame_time``: acceleration along the
-    measuring direction over one revolution (before, after)."""
-    spectrum: dict = {"frequency": (study.before.loads.frequencies, "Hz")}
-    time: dict = {}
-    for name, p in study.points.items():
-        for tag, resp in (("before", study.before), ("after", study.after)):
-            if resp is None:
-                continue
-            spectrum[f"{name}_{tag}"] = (resp.amplitudes(p, "velocity", study.direction), "m/s")
-            t, ax, ay = resp.time_history(p, "acceleration", samples)
-            time.setdefault("time", (t, "s"))
-            if study.direction is None:
-                time[f"{name}_{tag}_x"] = (ax, "m/s^2")
-                time[f"{name}_{tag}_y"] = (ay, "m/s^2")
-            else:
-                time[f"{name}_{tag}"] = (ax * math.cos(study.direction) + ay * math.sin(study.direction), "m/s^2")
-    return {"frame_spectrum": spectrum, "frame_time": time}
-
-
-def signal_scalars(study: SignalStudy) -> dict:
-    out: dict = {
-        "signals.velocity_rms.before": [c.velocity_rms for c in study.before.channels],
-        "signals.mean_velocity_rms.before": study.before.mean_velocity_rms,
-        "signals.worst_zone.before": float(max(s.index for s in study.severity_before)),
-        "signals.crest_factor": [c.crest_factor for c in study.before.channels],
-    }
-    if study.after is not None and study.severity_after is not None and study.reduction is not None:
-        out["signals.velocity_rms.after"] = [c.velocity_rms for c in study.after.channels]
-        out["signals.mean_velocity_rms.after"] = study.after.mean_velocity_rms
-        out["signals.mean_reduction"] = study.reduction["mean"]
-        out["signals.worst_zone.after"] = float(max(s.index for s in study.severity_after))
-    return out
-
-
-def signal_series(study: SignalStudy) -> dict:
-    """``signals_psd``: the Welch velocity spectrum of each channel of the (before) record."""
-    first = study.before.channels[0]
-    psd: dict = {"frequency": (first.frequencies, "Hz")}
-    for c in study.before.channels:
-        psd[c.name] = (c.velocity_psd, "m^2/s^2/Hz")
-    return {"signals_psd": psd}
-
-
-def _warnings(severities, what: str) -> tuple[str, ...]:
-    return tuple(f"{what}: {s.velocity_rms * 1e3:.3g} mm/s is in zone {s.zone} of {s.standard}, class "
-                 f"{s.machine_class} ({s.meaning})." for s in severities if s.index == 3)
-
-
-def run_frame(ctx):
-    """Capability stage of ``[frame]``: (ctx) -> Outcome."""
-    from ..results import Outcome  # type: ignore[import-not-found]
-
-    study = study_frame(ctx.table, ctx.mechanism, ctx.analysis)
-    warnings = _warnings(study.severity_before, f"Predicted vibration ({study.labels[0]})")
-    if study.severity_after is not None:
-        warnings += _warnings(study.severity_after, f"Predicted vibration ({study.labels[1]})")
-    return Outcome(results=study, scalars=frame_scalars(study), series=frame_series(study), warnings=warnings)
-
-
-def run_signals(ctx):
-    """Capability stage of ``[signals]``: (ctx) -> Outcome; uses the ``[frame]`` outcome when there is one."""
-    from ..results import Outcome  # type: ignore[import-not-found]
-
-    frame_outcome = getattr(ctx, "outcomes", {}).get("frame")
-    speed = float(np.ravel(ctx.analysis.kinematics.speed)[0]) if ctx.analysis is not None else None
-    study = study_signals(ctx.table, source=ctx.source, crank_speed=speed,
-                          frame_study=frame_outcome.results if frame_outcome is not None else None)
-    warnings = _warnings(study.severity_before, "Measured vibration")
-    return Outcome(results=study, scalars=signal_scalars(study), series=signal_series(study), warnings=warnings)

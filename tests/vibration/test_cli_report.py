@@ -1,0 +1,92 @@
+"""The vibration capability through the command line and the report: outputs, sections and bad input."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from matplotlib.figure import Figure
+from typer.testing import CliRunner
+
+from machdyn.cli import app
+from machdyn.report import vibration as rv
+from machdyn.runner import run_problem
+
+ROOT = Path(__file__).resolve().parents[2]
+RECORD_EXAMPLE = ROOT / "examples" / "vibration_record.toml"
+
+
+@pytest.fixture(scope="module")
+def run():
+    return run_problem(RECORD_EXAMPLE)
+
+
+def test_cli_run_writes_vibration_results_and_report(tmp_path):
+    out = tmp_path / "out"
+    result = CliRunner().invoke(app, ["run", str(RECORD_EXAMPLE), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    scalars = json.loads((out / "results.json").read_text())["scalars"]
+    assert scalars["frame.rms_velocity.before.front"]["unit"] == "mm/s"
+    assert scalars["signals.mean_reduction"]["unit"] == "%"
+    # The same prediction twice: through the frame table and next to the measured channel (rel 1e-12).
+    assert scalars["signals.predicted_velocity_rms.before.front"]["value"] == pytest.approx(
+        scalars["frame.rms_velocity.before.front"]["value"], rel=1e-12)
+    for name in ("frame_spectrum", "frame_time", "signals_psd"):
+        header = (out / f"{name}.csv").read_text().splitlines()[0]
+        assert "[" in header
+    html = (out / "report.html").read_text()
+    for heading in ("Frame modes", "Predicted severity", "Forces to the foundation", "Measured vibration",
+                    "Predicted against measured"):
+        assert heading in html
+    assert "zone D" in result.output  # the warning for the front point before balancing
+
+
+def test_sections_and_plots_read_results_only(run):
+    frame, signals = run.outcomes["frame"], run.outcomes["signals"]
+    assert [t for t, _ in rv.frame_sections(frame)][0] == "Frame modes"
+    assert "mode" in rv.mode_table(frame.results)
+    fig = Figure()
+    axes = fig.subplots(2, 3).ravel()
+    assert rv.plot_response_spectrum(frame.results, axes[0]) is axes[0]
+    assert rv.plot_rms_comparison(frame.results, axes[1], "velocity") is axes[1]
+    assert rv.plot_severity_zones([("before", list(frame.results.severity_before))], axes[2]) is axes[2]
+    assert rv.plot_predicted_vs_measured(signals.results, axes[3]) is axes[3]
+    assert rv.plot_velocity_psd(signals.results.before, axes[4], (10, 1000)) is axes[4]
+    # bars: 3 points x (before, after)
+    assert len(axes[1].patches) == 6
+
+
+def _variant(tmp_path, old: str, new: str) -> Path:
+    text = RECORD_EXAMPLE.read_text()
+    assert old in text
+    path = tmp_path / "variant.toml"
+    path.write_text(text.replace(old, new, 1))
+    return path
+
+
+def test_negative_mount_stiffness_in_a_file_is_bad_input(tmp_path):
+    path = _variant(tmp_path, 'vertical_stiffness = "800 kN/m"', 'vertical_stiffness = "-800 kN/m"')
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 2
+    assert "frame.mounts" in result.output and "must be >= 0 N/m" in result.output
+
+
+def test_unsupported_frame_in_a_file_is_bad_input(tmp_path):
+    # Tyres without horizontal stiffness: the frame can slide fore and aft freely.
+    text = RECORD_EXAMPLE.read_text().replace('horizontal_stiffness = "500 kN/m"', 'horizontal_stiffness = "0 N/m"')
+    path = tmp_path / "sliding.toml"
+    path.write_text(text)
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 2
+    assert "mechanism, not a structure" in result.output
+
+
+def test_missing_record_is_bad_input(tmp_path):
+    before = (ROOT / "examples" / "signals" / "tamper_before.csv").as_posix()
+    path = _variant(tmp_path, 'record = "signals/tamper_before.csv"', f'record = "{before}"')
+    path.write_text(path.read_text().replace('after = "signals/tamper_after.csv"', 'after = "missing.csv"'))
+    result = CliRunner().invoke(app, ["run", str(path), "--out", str(tmp_path / "o")])
+    assert result.exit_code == 2
+    assert "signals.after: The record file" in result.output
+    assert "missing.csv does not exist" in result.output.replace("\n", "")
