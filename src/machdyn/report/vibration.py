@@ -245,7 +245,8 @@ def signal_sections(outcome: Any) -> list[tuple[str, str]]:
             rows.append([label, c.name, c.quantity, format_value(c.velocity_rms * 1e3),
                          format_value(c.velocity_peak * 1e3),
                          "–" if c.acceleration_rms is None else format_value(c.acceleration_rms),
-                         format_value(c.crest_factor), s.zone, "–" if pred is None else format_value(pred * 1e3)])
+                         "–" if c.crest_factor is None else format_value(c.crest_factor), s.zone,
+                         "–" if pred is None else format_value(pred * 1e3)])
     head = ["record", "channel", "measured", "RMS velocity [mm/s]", "peak velocity [mm/s]", "RMS acc. [m/s²]",
             "crest factor", "zone", "predicted RMS velocity [mm/s]"]
     table = rows_html(rows, head).replace('class="summary"', 'class="figures"', 1)

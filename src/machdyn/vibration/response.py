@@ -143,8 +143,14 @@ class ShakingLoads:
 
 
 def harmonic_loads(angular_frequency, force_x=0.0, force_y=0.0, moment=0.0) -> ShakingLoads:
-    """One harmonic load at ``angular_frequency`` [rad/s]: complex amplitudes ``force_x``, ``force_y`` [N]
-    and ``moment`` [N m] about the frame's reference point (e.g. a rotating unbalance m e w^2 along y)."""
+    """One harmonic load Re(Q e^{i w t}) on the frame's reference point.
+
+    Parameters
+    ----------
+    angular_frequency : w [rad/s] > 0
+    force_x, force_y : complex amplitudes [N] (e.g. a rotating unbalance m e w^2 along y)
+    moment : complex amplitude [N m], counter-clockwise
+    """
     return ShakingLoads(float(angular_frequency), np.array([1]), np.array([force_x], dtype=complex),
                         np.array([force_y], dtype=complex), np.array([moment], dtype=complex))
 
@@ -171,11 +177,14 @@ def shaking_loads(analysis, *, orders: int = 6, origin=(0.0, 0.0), angle: float 
     speed = np.asarray(kin.speed, dtype=float)
     phi = np.asarray(kin.crank_angle, dtype=float)
     if fx.ndim == 2:
-        if design is None and fx.shape[0] != 1:
-            raise InputError(f"The analysis holds {fx.shape[0]} designs; give design= to pick one.")
+        designs = fx.shape[0]
+        if design is None and designs != 1:
+            raise InputError(f"The analysis holds {designs} designs; give design= to pick one.")
         d = 0 if design is None else int(design)
+        if not 0 <= d < designs:
+            raise InputError(f"The design index must be between 0 and {designs - 1}; got {design}.")
         fx, fy, mz = fx[d], fy[d], mz[d]
-        speed = speed[d] if speed.ndim and speed.shape[0] == fx.shape[0] else speed
+        speed = speed[d] if speed.ndim and speed.shape[0] == designs else speed
         phi = phi[d] if phi.ndim == 2 else phi
     if speed.size > 1 and not np.allclose(speed, speed.ravel()[0]):
         raise InputError("Shaking loads need a constant crank speed; the analysis has a varying speed.")

@@ -241,6 +241,15 @@ def order_spectrum(signal, sampling_rate, crank_speed, *, max_order: float = 20.
     sampling_rate : f_s [Hz]
     crank_speed : Omega [rad/s] > 0
     max_order : highest order returned
+
+    Examples
+    --------
+    >>> fs = 1024.0
+    >>> t = np.arange(4096) / fs
+    >>> orders, amp = order_spectrum(3.0 * np.sin(2 * np.pi * 12.5 * t), fs, 2 * np.pi * 12.5)
+    >>> i = int(np.argmax(amp))
+    >>> round(float(orders[i]), 3), round(float(amp[i] * np.sqrt(2)), 3)
+    (1.0, 3.0)
     """
     from scipy.signal import get_window
 
@@ -358,8 +367,9 @@ class ChannelSummary:
     """The numbers a standard judges, for one channel (all SI, band-limited to ``band``).
 
     ``velocity_rms`` [m/s], ``velocity_peak`` [m/s], ``acceleration_rms`` [m/s^2] (None for a velocity channel),
-    ``crest_factor`` [-] of the measured quantity, the Welch spectrum of the velocity (``frequencies`` [Hz],
-    ``velocity_psd`` [(m/s)^2/Hz]) and, with a crank speed, the velocity ``order_spectrum`` (orders, RMS [m/s]).
+    ``crest_factor`` [-] of the measured quantity (None for a channel that is zero in the band), the Welch
+    spectrum of the velocity (``frequencies`` [Hz], ``velocity_psd`` [(m/s)^2/Hz]) and, with a crank speed, the
+    velocity order spectrum (``orders`` [-], ``order_rms`` [m/s]).
     """
 
     name: str
@@ -368,7 +378,7 @@ class ChannelSummary:
     velocity_rms: float
     velocity_peak: float
     acceleration_rms: float | None
-    crest_factor: float
+    crest_factor: float | None
     frequencies: np.ndarray
     velocity_psd: np.ndarray
     orders: np.ndarray | None = None
@@ -423,7 +433,7 @@ def analyse_record(record: Record, band=DEFAULT_BAND, *, crank_speed: float | No
         orders = order_rms = None
         if crank_speed is not None:
             orders, order_rms = order_spectrum(velocity, fs, crank_speed)
-        cf = crest_factor(measured) if rms(measured) > 0 else float("nan")
+        cf = crest_factor(measured) if rms(measured) > 0 else None
         out.append(ChannelSummary(name, record.quantities[name], band, rms(velocity), peak(velocity), acc_rms,
                                   cf, f, psd, orders, order_rms))
     return RecordAnalysis(record.source, fs, record.duration, tuple(out))

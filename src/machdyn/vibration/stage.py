@@ -113,8 +113,9 @@ def signal_outcome(study: SignalStudy) -> Outcome:
             values[f"signals.zone.{tag}.{c.name}"] = float(sev.index)
             labels[f"signals.zone.{tag}.{c.name}"] = Label(
                 f"Measured {sev.standard} zone, {c.name}, {label} ({_ZONE})")
-            values[f"signals.crest_factor.{tag}.{c.name}"] = c.crest_factor
-            labels[f"signals.crest_factor.{tag}.{c.name}"] = Label(f"Crest factor, {c.name}, {label}")
+            if c.crest_factor is not None:
+                values[f"signals.crest_factor.{tag}.{c.name}"] = c.crest_factor
+                labels[f"signals.crest_factor.{tag}.{c.name}"] = Label(f"Crest factor, {c.name}, {label}")
             if c.acceleration_rms is not None:
                 values[f"signals.acceleration_rms.{tag}.{c.name}"] = c.acceleration_rms
                 labels[f"signals.acceleration_rms.{tag}.{c.name}"] = Label(
