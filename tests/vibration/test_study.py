@@ -126,3 +126,38 @@ def test_rotary_screen_frame_hung_on_ropes():
     assert study.modes.angular_frequencies[0] == pytest.approx(np.sqrt(9.80665 / 1.2), rel=1e-9)
     assert study.modes.dominant()[0] == "x"
     assert 0 < run.results["frame.rms_velocity.before.rope_end"] < 1.0
+
+
+def test_spring_variant_leaves_the_frame_loads_unchanged():
+    # At constant crank speed the frame's shaking force and moment are the rates of change of the moving parts'
+    # linear and angular momentum (Wilson & Sadler, Kinematics and Dynamics of Machinery, 3rd ed., ch. 16:
+    # shaking force = -sum m a_G, shaking moment = -sum (r_G x m a_G + I alpha)). A spring between a link and the
+    # frame (seed 002's K = m_C w^2) is internal to machine + frame: it changes the driving torque, whose
+    # reaction on the motor's stator is part of the moment, by exactly what it adds through the joints. So the
+    # harmonics must agree to rounding (1e-9 of the largest amplitude), while the driving torque does change.
+    from machdyn.linkage import analyse as run_analysis
+    from machdyn.linkage import crank_angles as angles
+    from machdyn.linkage import slider_crank
+    from machdyn.vibration import shaking_loads
+    from machdyn.vibration.study import with_variant
+    from machdyn.vibration.tables import VariantSpec
+
+    w, r, rod, m_c = 21.0, 0.045, 3.6, 637.33
+    mech = slider_crank(r, rod, offset=0.05, masses=(2.0, 120.0, m_c), gravity=(0.0, 0.0))
+    free = float(np.sqrt(rod**2 - r**2))
+    variant = VariantSpec.model_validate({"label": "with spring", "springs": [
+        {"point_1": "slider.B", "point_2": "ground.O", "stiffness": f"{m_c * w**2} N/m", "free_length": f"{free} m"}]})
+    phi = angles(360)
+    an_before, an_after = run_analysis(mech, phi, w), run_analysis(with_variant(mech, variant), phi, w)
+    before, after = shaking_loads(an_before, orders=4), shaking_loads(an_after, orders=4)
+    for name in ("force_x", "force_y", "moment"):
+        b, a = getattr(before, name), getattr(after, name)
+        np.testing.assert_allclose(a, b, atol=1e-9 * np.max(np.abs(b)))
+    torque_b, torque_a = an_before.forces.driving_torque, an_after.forces.driving_torque
+    assert np.ptp(torque_a) < 0.5 * np.ptp(torque_b)
+    with pytest.raises(ValidationError, match="at least one counterweight or spring"):
+        VariantSpec.model_validate({"label": "nothing"})
+    bad = VariantSpec.model_validate({"springs": [{"point_1": "slider.X", "point_2": "ground.O",
+                                                   "stiffness": "1 N/m"}]})
+    with pytest.raises(InputError, match=r"frame.after.springs\[0\].point_1: no point 'slider.X'"):
+        with_variant(mech, bad)

@@ -22,7 +22,7 @@ from .response import Comparison, FrameResponse, compare, shaking_loads, steady_
 from .severity import Severity, classify
 from .signals import RecordAnalysis, analyse_record, compare_records, read_record
 
-__all__ = ["FrameStudy", "SignalStudy", "build_frame", "study_frame", "study_signals", "with_counterweights"]
+__all__ = ["FrameStudy", "SignalStudy", "build_frame", "study_frame", "study_signals", "with_variant"]
 
 
 def build_frame(table, crank_frequency: float) -> Frame:
@@ -45,19 +45,29 @@ def build_frame(table, crank_frequency: float) -> Frame:
     return Frame(table.mass, table.inertia, tuple(mounts), com=tuple(table.com), name="frame")
 
 
-def with_counterweights(mechanism, counterweights):
-    """``mechanism`` with the point masses of ``counterweights`` (problem-file specs) added."""
-    from ..linkage.model import PointMass
+def with_variant(mechanism, variant):
+    """``mechanism`` with the point masses and springs of a ``[frame.after]`` table added."""
+    from ..linkage.model import PointMass, Spring
 
     bodies = {b.name for b in mechanism.bodies}
     added = []
-    for i, c in enumerate(counterweights):
+    for i, c in enumerate(variant.counterweights):
         if c.body not in bodies:
             raise InputError(f"frame.after.counterweights[{i}].body: no body '{c.body}'; bodies: "
                              f"{', '.join(sorted(bodies))}.")
         position = (c.radius * math.cos(c.angle), c.radius * math.sin(c.angle))
         added.append(PointMass(c.name or f"after_counterweight_{i + 1}", c.body, c.mass, position, c.inertia))
-    return replace(mechanism, point_masses=(*mechanism.point_masses, *added))
+    known = {f"{b.name}.{p}" for b in mechanism.bodies for p in b.points} | {f"ground.{g}" for g in mechanism.ground}
+    springs = []
+    for i, sp in enumerate(variant.springs):
+        for field in ("point_1", "point_2"):
+            if getattr(sp, field) not in known:
+                raise InputError(f"frame.after.springs[{i}].{field}: no point '{getattr(sp, field)}'; points: "
+                                 f"{', '.join(sorted(known))}.")
+        springs.append(Spring(sp.name or f"after_spring_{i + 1}", sp.point_1, sp.point_2, sp.stiffness,
+                              sp.free_length))
+    return replace(mechanism, point_masses=(*mechanism.point_masses, *added),
+                   springs=(*mechanism.springs, *springs))
 
 
 @dataclass(frozen=True)
@@ -99,7 +109,7 @@ def study_frame(table, mechanism, analysis) -> FrameStudy:
     after = acc = vel = None
     label_after = ""
     if table.after is not None:
-        variant = with_counterweights(mechanism, table.after.counterweights)
+        variant = with_variant(mechanism, table.after)
         an_after = analyse(variant, kin.crank_angle, float(np.ravel(kin.speed)[0]), diagnostics=False)
         after = steady_state(frame, shaking_loads(an_after, **opts))
         label_after = table.after.label

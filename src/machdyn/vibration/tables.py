@@ -8,10 +8,10 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from pydantic import Field, field_validator
+from pydantic import Field, field_validator, model_validator
 
 from ..problem.fields import Angle, FieldError, Inertia, Length, Mass, Point, Stiffness
-from ..problem.schema import CounterweightSpec, Name, Spec
+from ..problem.schema import CounterweightSpec, Name, Spec, SpringSpec
 from .quantities import Damping, Frequency, PositiveInertia, PositiveLength, PositiveMass, PositiveStiffness, Velocity
 
 MachineClass = Literal["I", "II", "III", "IV"]
@@ -74,11 +74,18 @@ MountSpec = Annotated[SpringMountSpec | RubberMountSpec | TyreMountSpec | RopeMo
 
 
 class VariantSpec(Spec):
-    """The variant compared with the analysed mechanism: the same machine with ``counterweights`` added
-    (e.g. after balancing); ``label`` names it in tables and plots."""
+    """The variant compared with the analysed mechanism: the same machine with ``counterweights`` and/or
+    ``springs`` added (after balancing; with an energy-storing spring); ``label`` names it in tables and plots."""
 
     label: str = "after"
-    counterweights: list[CounterweightSpec] = Field(default_factory=list, min_length=1)
+    counterweights: list[CounterweightSpec] = Field(default_factory=list)
+    springs: list[SpringSpec] = Field(default_factory=list)
+
+    @model_validator(mode="after")
+    def _something(self):
+        if not self.springs and not self.counterweights:
+            raise ValueError("the variant needs at least one counterweight or spring; got neither")
+        return self
 
 
 class FrameTable(Spec):
