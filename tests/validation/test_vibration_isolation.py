@@ -1,11 +1,14 @@
-"""Vibration isolation of a machine on mounts: a published worked problem reproduced with machdyn.vibration.
+"""Vibration isolation of a machine on mounts: published worked problems reproduced with machdyn.vibration.
 
-Source: S. S. Rao, *Mechanical Vibrations* (Pearson), problem set on vibration isolation: "When an exhaust fan of
-mass 380 kg is supported on springs with negligible damping, the resulting static deflection is found to be
-45 mm. If the fan has a rotating unbalance of 0.15 kg-m, find (a) the amplitude of vibration at 1750 rpm and
-(b) the force transmitted to the ground at this speed." Worked solution with printed answers "(a) 0.3973 mm,
-(b) 32.92 N" (g = 9.81 m/s^2): https://www.edu.com/homework-helper/math/question/1058325/ ("When an exhaust fan
-of mass 380 kg is supported on springs with negligible damping ...").
+Source 1: a textbook problem on an exhaust fan on springs, as posed in S. S. Rao, *Mechanical Vibrations*
+(Pearson), problems on vibration isolation: "When an exhaust fan of mass 380 kg is supported on springs with
+negligible damping, the resulting static deflection is found to be 45 mm. If the fan has a rotating unbalance of
+0.15 kg-m, find (a) the amplitude of vibration at 1750 rpm and (b) the force transmitted to the ground at this
+speed." Worked solution with printed answers "Question 1.a: 0.3973 mm, Question 1.b: 32.92 N" (g = 9.81 m/s^2)
+at https://www.edu.com/homework-helper/math/question/1058325/ ("When an exhaust fan of mass 380 kg is supported
+on springs with negligible damping ..."). The edition and problem number in Rao could not be checked here, and the
+stored copy of that page shows the answers and the mass but not the other inputs; the inputs above are the
+problem's, and reproducing both printed answers to four digits confirms them.
 
 machdyn models the fan as a rigid frame on one vertical mount of stiffness k = m g / delta_st (the horizontal
 motion and the rotation are held by two stiff horizontal mounts that do not couple with the vertical motion),

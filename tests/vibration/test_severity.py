@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from machdyn.errors import InputError
 from machdyn.vibration import classify, compare_severity, severity_range, zone_boundaries
@@ -42,3 +44,11 @@ def test_bad_input():
         classify(-1e-3)
     with pytest.raises(InputError, match="three increasing velocities"):
         classify(1e-3, boundaries=(3e-3, 2e-3, 1e-3))
+
+
+@settings(max_examples=100, deadline=None)
+@given(a=st.floats(0.0, 0.05), b=st.floats(0.0, 0.05), machine_class=st.sampled_from(["I", "II", "III", "IV"]),
+       standard=st.sampled_from(["ISO 10816-1", "ISO 2372"]))
+def test_zone_never_improves_with_more_vibration(a, b, machine_class, standard):
+    lo, hi = sorted((a, b))
+    assert classify(lo, machine_class, standard).index <= classify(hi, machine_class, standard).index
