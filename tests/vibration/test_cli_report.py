@@ -83,10 +83,37 @@ def test_unsupported_frame_in_a_file_is_bad_input(tmp_path):
 
 
 def test_missing_record_is_bad_input(tmp_path):
-    before = (ROOT / "examples" / "signals" / "tamper_before.csv").as_posix()
-    path = _variant(tmp_path, 'record = "signals/tamper_before.csv"', f'record = "{before}"')
-    path.write_text(path.read_text().replace('after = "signals/tamper_after.csv"', 'after = "missing.csv"'))
+    # A relative path is read when the file runs (a check does not know the file's folder) ...
+    path = _variant(tmp_path, 'after = "machdyn:examples/signals/tamper_after.csv"', 'after = "missing.csv"')
     result = CliRunner().invoke(app, ["run", str(path), "--out", str(tmp_path / "o")])
     assert result.exit_code == 2
     assert "signals.after: The record file" in result.output
     assert "missing.csv does not exist" in result.output.replace("\n", "")
+    # ... a shipped ("machdyn:") or absolute one already by check.
+    path = _variant(tmp_path, 'after = "machdyn:examples/signals/tamper_after.csv"',
+                    'after = "machdyn:examples/signals/nothing.csv"')
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 2
+    assert "signals.after" in result.output and "does not exist" in result.output
+
+
+def test_copied_example_runs_anywhere(tmp_path):
+    # `machdyn examples vibration_record --to DIR` copies the file alone; its records are named "machdyn:...",
+    # so the copy runs from any folder.
+    runner = CliRunner()
+    copied = runner.invoke(app, ["examples", "vibration_record", "--to", str(tmp_path)])
+    assert copied.exit_code == 0, copied.output
+    ran = runner.invoke(app, ["run", str(tmp_path / "vibration_record.toml"), "--out", str(tmp_path / "out")])
+    assert ran.exit_code == 0, ran.output
+    assert (tmp_path / "out" / "signals_psd.csv").exists()
+
+
+def test_record_too_short_for_the_band_is_refused_by_check(tmp_path):
+    # 2 s at 2560 Hz cannot resolve a band starting at 1 Hz (5 periods = 5 s).
+    text = RECORD_EXAMPLE.read_text()
+    i = text.index("[signals]")
+    path = tmp_path / "short.toml"
+    path.write_text(text[:i] + text[i:].replace('band = ["10 Hz", "1000 Hz"]', 'band = ["1 Hz", "1000 Hz"]'))
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 2
+    assert "too few samples for the band 1-1000 Hz" in result.output.replace("\n", " ")

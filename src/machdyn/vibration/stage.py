@@ -7,6 +7,7 @@ with the outcome. Registered in :mod:`machdyn.kinds` by one line each.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 
@@ -181,6 +182,27 @@ def check_frame(problem, table) -> list[tuple[str, str]]:
     return problems
 
 
+def check_signals(_problem, table) -> list[tuple[str, str]]:
+    """Records named by ``machdyn:`` or by an absolute path are read and checked against the band here; a
+    relative path is resolved against the problem file's folder, which a check does not know, so it is read when
+    the file is run."""
+    from ..errors import InputError
+    from .signals import check_band, read_record
+    from .study import PACKAGE_PREFIX, resolve_record
+
+    problems: list[tuple[str, str]] = []
+    for field in ("record", "after"):
+        name = getattr(table, field)
+        if name is None or not (name.startswith(PACKAGE_PREFIX) or Path(name).is_absolute()):
+            continue
+        try:
+            record = read_record(resolve_record(name))
+            check_band(record.sampling_rate, record.time.size, table.band, what=f"the record {name}")
+        except InputError as exc:
+            problems.append((f"signals.{field}", str(exc)))
+    return problems
+
+
 FRAME = Capability(
     table="frame", schema=FrameTable, run=run_frame, step="frame vibration", check=check_frame,
     kinds=("mechanism", "rotary_screen"), report="machdyn.report.vibration:frame_sections",
@@ -188,4 +210,5 @@ FRAME = Capability(
 SIGNALS = Capability(
     table="signals", schema=SignalsTable, run=run_signals, step="measured signals",
     kinds=("mechanism", "rotary_screen"), report="machdyn.report.vibration:signal_sections", after=("frame",),
+    check=check_signals,
 )

@@ -148,7 +148,17 @@ class SignalStudy:
     labels: tuple[str, str] = ("before", "after")
 
 
-def _resolve(name: str, source) -> Path:
+#: Prefix of a record shipped with machdyn: ``"machdyn:examples/signals/tamper_before.csv"``.
+PACKAGE_PREFIX = "machdyn:"
+
+
+def resolve_record(name: str, source=None) -> Path:
+    """The file a ``[signals]`` entry names: ``machdyn:PATH`` inside machdyn's data folder (the shipped example
+    records), an absolute path as it is, a relative path against the problem file's folder (``source``)."""
+    if name.startswith(PACKAGE_PREFIX):
+        from importlib import resources
+
+        return Path(str(resources.files("machdyn") / "data")) / name[len(PACKAGE_PREFIX):]
     p = Path(name)
     if not p.is_absolute() and source is not None:
         p = Path(source).parent / p
@@ -163,7 +173,7 @@ def study_signals(table, *, source=None, crank_speed: float | None = None,
 
     def analyse_file(name, field):
         try:
-            return analyse_record(read_record(_resolve(name, source)), band, crank_speed=crank_speed)
+            return analyse_record(read_record(resolve_record(name, source)), band, crank_speed=crank_speed)
         except InputError as exc:
             raise InputError(f"signals.{field}: {exc}") from None
 
