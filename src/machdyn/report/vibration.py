@@ -166,9 +166,11 @@ def mode_table(study) -> str:
     rows = []
     for j, (f, z, dom) in enumerate(zip(study.modes.frequencies, study.modes.damping_ratios, study.modes.dominant(),
                                         strict=True), start=1):
-        x, y, th = study.modes.shapes[:, j - 1]
-        rows.append((str(j), format_value(float(f)), format_value(float(z)), dom, format_value(float(x)),
-                     format_value(float(y)), format_value(float(th))))
+        shape = study.modes.shapes[:, j - 1]
+        # entries of rounding size (an uncoupled coordinate) are shown as 0
+        x, y, th = np.where(np.abs(shape) < 1e-9 * np.max(np.abs(shape)), 0.0, shape)
+        rows.append((str(j), format_value(float(f)), format_value(float(z)), {"theta": "rotation"}.get(dom, dom),
+                     format_value(float(x)), format_value(float(y)), format_value(float(th))))
     table = rows_html(rows, ("mode", "frequency [Hz]", "damping ratio", "mostly", "x [m/√kg]", "y [m/√kg]",
                              "θ [rad/√kg]"))
     return table.replace('class="summary"', 'class="figures"', 1)
