@@ -117,3 +117,27 @@ def test_record_too_short_for_the_band_is_refused_by_check(tmp_path):
     result = CliRunner().invoke(app, ["check", str(path)])
     assert result.exit_code == 2
     assert "too few samples for the band 1-1000 Hz" in result.output.replace("\n", " ")
+
+
+def test_variant_spring_on_an_unknown_point_is_refused_by_check(tmp_path):
+    path = _variant(tmp_path, '[frame.after]\nlabel = "after balancing"\n',
+                    '[frame.after]\nlabel = "after balancing"\nsprings = [{point_1 = "rod_1.Q", point_2 = "ground.O", '
+                    'stiffness = "1 kN/m"}]\n')
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 2
+    assert "frame.after.springs[0].point_1" in result.output and "no point 'rod_1.Q'" in result.output
+
+
+def test_variant_on_a_rotary_screen_is_checked_too(tmp_path):
+    text = (ROOT / "examples" / "rotary_screen.toml").read_text() + (
+        '\n[frame]\nmass = "1000 kg"\ninertia = "600 kg*m^2"\n'
+        '[[frame.mounts]]\ntype = "tyre"\nname = "a"\nposition = ["1 m", "0 m"]\n'
+        'vertical_stiffness = "1 MN/m"\nhorizontal_stiffness = "1 MN/m"\n'
+        '[[frame.mounts]]\ntype = "tyre"\nname = "b"\nposition = ["-1 m", "0 m"]\n'
+        'vertical_stiffness = "1 MN/m"\nhorizontal_stiffness = "1 MN/m"\n'
+        '[frame.after]\ncounterweights = [{body = "flywheel", mass = "1 kg", radius = "1 m", angle = "0 deg"}]\n')
+    path = tmp_path / "screen.toml"
+    path.write_text(text)
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 2
+    assert "frame.after.counterweights[0].body" in result.output and "no body 'flywheel'" in result.output

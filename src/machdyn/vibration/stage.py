@@ -158,27 +158,31 @@ def run_signals(ctx: StageContext) -> Outcome:
 
 def check_frame(problem, table) -> list[tuple[str, str]]:
     """What ``machdyn check`` can tell without analysing: the mounts support the frame, and the variant's
-    counterweights sit on bodies of the mechanism."""
+    counterweights and springs sit on bodies and points of the mechanism."""
     from ..errors import InputError, ProblemFileError
     from .modes import check_supported
-    from .study import build_frame
+    from .study import build_frame, with_variant
 
     problems: list[tuple[str, str]] = []
     try:
         check_supported(build_frame(table, 1.0))
     except InputError as exc:
         problems.append(("frame.mounts", str(exc)))
-    if table.after is not None and hasattr(problem, "mechanism"):
-        try:
-            from ..problem.build import build_mechanism
+    if table.after is not None:
+        from ..kinds import kind
 
-            bodies = {b.name for b in build_mechanism(problem).bodies}
-        except (ProblemFileError, InputError, AttributeError, TypeError):
+        owner = next((kind(k) for k in FRAME.kinds if kind(k).owns(problem)), None)
+        try:
+            mechanism, found = owner.build(problem) if owner is not None else (None, [])
+        except (ProblemFileError, InputError):
             return problems  # the kind reports its own model's problems
-        for i, c in enumerate(table.after.counterweights):
-            if c.body not in bodies:
-                problems.append((f"frame.after.counterweights[{i}].body",
-                                 f"no body '{c.body}'; bodies: {', '.join(sorted(bodies))}"))
+        if mechanism is None or found:
+            return problems
+        try:
+            with_variant(mechanism, table.after)
+        except InputError as exc:
+            where, _, message = str(exc).partition(": ")
+            problems.append((where, message))
     return problems
 
 
