@@ -161,3 +161,26 @@ def test_spring_variant_leaves_the_frame_loads_unchanged():
                                                    "stiffness": "1 N/m"}]})
     with pytest.raises(InputError, match=r"frame.after.springs\[0\].point_1: no point 'slider.X'"):
         with_variant(mech, bad)
+
+
+def test_frame_compares_with_the_balanced_model_of_the_file():
+    # A file with [balance] (crank counterweight: all the rotating and half the reciprocating mass) and a
+    # [frame] without [frame.after]: the frame study compares the analysed mechanism with the balanced one.
+    # The first-order vertical shaking force (across the stroke of this horizontal engine) grows with half
+    # the reciprocating mass moved there, the horizontal one falls: the mount along the stroke carries less.
+    from machdyn.runner import run_problem
+
+    text = (ROOT / "examples" / "slider_crank_balance.toml").read_text() + (
+        '\n[frame]\nmass = "200 kg"\ninertia = "20 kg*m^2"\n'
+        '[[frame.mounts]]\ntype = "rubber"\nname = "front"\nposition = ["0.3 m", "-0.2 m"]\n'
+        'vertical_stiffness = "400 kN/m"\nhorizontal_stiffness = "300 kN/m"\nloss_factor = 0.1\n'
+        '[[frame.mounts]]\ntype = "rubber"\nname = "rear"\nposition = ["-0.3 m", "-0.2 m"]\n'
+        'vertical_stiffness = "400 kN/m"\nhorizontal_stiffness = "300 kN/m"\nloss_factor = 0.1\n'
+        '[frame.points]\ntop = ["0 m", "0.2 m"]\n')
+    run = run_problem(text)
+    study = run.outcomes["frame"].results
+    assert study.labels[1] == "balanced" and study.after is not None
+    force = {tag: [resp.transmitted_force_rms(m) for m in ("front.h", "rear.h")]
+             for tag, resp in (("before", study.before), ("after", study.after))}
+    assert all(a < b for a, b in zip(force["after"], force["before"], strict=True))
+    assert "frame.mean_acceleration_reduction" in run.results

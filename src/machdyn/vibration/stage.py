@@ -92,9 +92,17 @@ def frame_outcome(study: FrameStudy) -> Outcome:
                    warnings=warnings)
 
 
+def balanced_model(outcomes) -> object | None:
+    """The mechanism as a ``[balance]`` of the same file left it (its single balanced model), or None."""
+    balance = outcomes.get("balance")
+    result = getattr(getattr(balance, "results", None), "result", None)
+    return getattr(result, "model", None)
+
+
 def run_frame(ctx: StageContext) -> Outcome:
-    """Stage of ``[frame]``: the frame on its mounts driven by the analysed mechanism's shaking loads."""
-    return frame_outcome(study_frame(ctx.table, ctx.mechanism, ctx.analysis))
+    """Stage of ``[frame]``: the frame on its mounts driven by the analysed mechanism's shaking loads; compared
+    with ``[frame.after]`` or, without it, with the mechanism as ``[balance]`` left it."""
+    return frame_outcome(study_frame(ctx.table, ctx.mechanism, ctx.analysis, balanced=balanced_model(ctx.outcomes)))
 
 
 def signal_outcome(study: SignalStudy) -> Outcome:
@@ -209,7 +217,7 @@ def check_signals(_problem, table) -> list[tuple[str, str]]:
 
 FRAME = Capability(
     table="frame", schema=FrameTable, run=run_frame, step="frame vibration", check=check_frame,
-    kinds=("mechanism", "rotary_screen"), report="machdyn.report.vibration:frame_sections",
+    kinds=("mechanism", "rotary_screen"), report="machdyn.report.vibration:frame_sections", after=("balance",),
 )
 SIGNALS = Capability(
     table="signals", schema=SignalsTable, run=run_signals, step="measured signals",

@@ -96,8 +96,11 @@ class FrameStudy:
         return np.array([resp.rms(p, quantity, self.direction, self.band) for p in self.points.values()])
 
 
-def study_frame(table, mechanism, analysis) -> FrameStudy:
-    """Run the frame study of a validated ``[frame]`` table for ``mechanism`` and its constant-speed ``analysis``."""
+def study_frame(table, mechanism, analysis, *, balanced=None) -> FrameStudy:
+    """Run the frame study of a validated ``[frame]`` table for ``mechanism`` and its constant-speed ``analysis``.
+
+    The variant compared is the table's ``[frame.after]``; without one, a ``balanced`` model (the mechanism as
+    the file's ``[balance]`` left it) is compared, labelled "balanced"."""
     from ..linkage import analyse
 
     kin = analysis.kinematics
@@ -108,11 +111,15 @@ def study_frame(table, mechanism, analysis) -> FrameStudy:
     before = steady_state(frame, shaking_loads(analysis, **opts))
     after = acc = vel = None
     label_after = ""
+    variant, label = None, ""
     if table.after is not None:
-        variant = with_variant(mechanism, table.after)
+        variant, label = with_variant(mechanism, table.after), table.after.label
+    elif balanced is not None:
+        variant, label = balanced, "balanced"
+    if variant is not None:
         an_after = analyse(variant, kin.crank_angle, float(np.ravel(kin.speed)[0]), diagnostics=False)
         after = steady_state(frame, shaking_loads(an_after, **opts))
-        label_after = table.after.label
+        label_after = label
     points = dict(table.points)
     if after is not None:
         acc = _banded_compare(before, after, points, "acceleration", table.direction, table.band)
