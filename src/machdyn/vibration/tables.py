@@ -10,9 +10,23 @@ from typing import Annotated, Literal
 
 from pydantic import Field, field_validator, model_validator
 
-from ..problem.fields import Angle, FieldError, Inertia, Length, Mass, Point, Stiffness
+from ..problem.fields import (
+    Angle,
+    FieldError,
+    Frequency,
+    Inertia,
+    Length,
+    Mass,
+    Point,
+    PositiveInertia,
+    PositiveLength,
+    PositiveMass,
+    PositiveStiffness,
+    Stiffness,
+)
+from ..problem.fields import LinearDamping as Damping
+from ..problem.fields import PositiveVelocity as Velocity
 from ..problem.schema import CounterweightSpec, Name, Spec, SpringSpec
-from .quantities import Damping, Frequency, PositiveInertia, PositiveLength, PositiveMass, PositiveStiffness, Velocity
 
 MachineClass = Literal["I", "II", "III", "IV"]
 Standard = Literal["ISO 10816-1", "ISO 20816-1", "ISO 2372"]
