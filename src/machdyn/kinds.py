@@ -24,6 +24,8 @@ KINDS: dict[str, str] = {
 CAPABILITIES: dict[str, str] = {
     "sweep": "machdyn.pipelines.sweep:CAPABILITY",
     "balance": "machdyn.balancing.stage:CAPABILITY",
+    "frame": "machdyn.vibration.stage:FRAME",
+    "signals": "machdyn.vibration.stage:SIGNALS",
 }
 
 

@@ -1,0 +1,205 @@
+"""The vibration capability's stages: a frame study from ``[frame]`` and a signal study from ``[signals]``.
+
+``study_frame`` builds the frame, its modes and the steady-state response to the analysed mechanism's
+shaking loads (and to a variant with counterweights added), the RMS levels at the named points, the transmitted
+force per mount and the predicted severity. ``study_signals`` reads the records, judges them and, with a frame
+study, sets the predicted RMS velocity next to the measured one. ``run_frame`` / ``run_signals`` wrap them as
+capability stages (:mod:`machdyn.vibration.stage`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import InputError
+from .frame import Frame, Mount, rope, rubber_mount, tyre
+from .modes import Modes, modes
+from .response import Comparison, FrameResponse, compare, shaking_loads, steady_state
+from .severity import Severity, classify
+from .signals import RecordAnalysis, analyse_record, compare_records, read_record
+
+__all__ = ["FrameStudy", "SignalStudy", "build_frame", "study_frame", "study_signals", "with_variant"]
+
+
+def build_frame(table, crank_frequency: float) -> Frame:
+    """The :class:`Frame` of a validated ``[frame]`` table; rubber loss factors become viscous damping at
+    ``crank_frequency`` [Hz]."""
+    mounts: list[Mount] = []
+    for m in table.mounts:
+        if m.type == "spring":
+            mounts.append(Mount(m.name, m.position, m.direction, m.stiffness, m.damping, "spring"))
+        elif m.type == "rubber":
+            mounts.extend(rubber_mount(m.name, m.position, m.vertical_stiffness, m.horizontal_stiffness,
+                                       loss_factor=m.loss_factor, frequency=crank_frequency,
+                                       vertical_damping=m.vertical_damping, horizontal_damping=m.horizontal_damping))
+        elif m.type == "tyre":
+            mounts.extend(tyre(m.name, m.position, m.vertical_stiffness, m.horizontal_stiffness,
+                               vertical_damping=m.vertical_damping, lateral_damping=m.horizontal_damping))
+        else:
+            mounts.extend(rope(m.name, m.position, m.length, m.supported_mass, m.axial_stiffness, angle=m.angle,
+                               damping=m.damping))
+    return Frame(table.mass, table.inertia, tuple(mounts), com=tuple(table.com), name="frame")
+
+
+def with_variant(mechanism, variant):
+    """``mechanism`` with the point masses and springs of a ``[frame.after]`` table added."""
+    from ..linkage.model import PointMass, Spring
+
+    bodies = {b.name for b in mechanism.bodies}
+    added = []
+    for i, c in enumerate(variant.counterweights):
+        if c.body not in bodies:
+            raise InputError(f"frame.after.counterweights[{i}].body: no body '{c.body}'; bodies: "
+                             f"{', '.join(sorted(bodies))}.")
+        position = (c.radius * math.cos(c.angle), c.radius * math.sin(c.angle))
+        added.append(PointMass(c.name or f"after_counterweight_{i + 1}", c.body, c.mass, position, c.inertia))
+    known = {f"{b.name}.{p}" for b in mechanism.bodies for p in b.points} | {f"ground.{g}" for g in mechanism.ground}
+    springs = []
+    for i, sp in enumerate(variant.springs):
+        for field in ("point_1", "point_2"):
+            if getattr(sp, field) not in known:
+                raise InputError(f"frame.after.springs[{i}].{field}: no point '{getattr(sp, field)}'; points: "
+                                 f"{', '.join(sorted(known))}.")
+        springs.append(Spring(sp.name or f"after_spring_{i + 1}", sp.point_1, sp.point_2, sp.stiffness,
+                              sp.free_length))
+    return replace(mechanism, point_masses=(*mechanism.point_masses, *added),
+                   springs=(*mechanism.springs, *springs))
+
+
+@dataclass(frozen=True)
+class FrameStudy:
+    """Frame, modes, responses before (the analysed mechanism) and after (the variant, or None), the named
+    ``points``, the measuring ``direction`` [rad] (None: vector), the ``band`` [Hz], RMS ``comparison``s of
+    acceleration and velocity, and the predicted ``severity`` per point (before, after)."""
+
+    frame: Frame
+    modes: Modes
+    points: dict
+    labels: tuple[str, str]
+    direction: float | None
+    band: tuple[float, float]
+    before: FrameResponse
+    after: FrameResponse | None
+    acceleration: Comparison | None
+    velocity: Comparison | None
+    severity_before: tuple[Severity, ...]
+    severity_after: tuple[Severity, ...] | None
+
+    def rms(self, which: str, quantity: str) -> np.ndarray:
+        resp = self.before if which == "before" else self.after
+        if resp is None:
+            raise InputError("This frame study has no 'after' variant.")
+        return np.array([resp.rms(p, quantity, self.direction, self.band) for p in self.points.values()])
+
+
+def study_frame(table, mechanism, analysis, *, balanced=None) -> FrameStudy:
+    """Run the frame study of a validated ``[frame]`` table for ``mechanism`` and its constant-speed ``analysis``.
+
+    The variant compared is the table's ``[frame.after]``; without one, a ``balanced`` model (the mechanism as
+    the file's ``[balance]`` left it) is compared, labelled "balanced"."""
+    from ..linkage import analyse
+
+    kin = analysis.kinematics
+    crank_frequency = float(np.ravel(kin.speed)[0]) / (2 * np.pi)
+    frame = build_frame(table, crank_frequency)
+    md = modes(frame)
+    opts = {"orders": table.orders, "origin": tuple(table.mechanism_origin), "angle": table.mechanism_angle}
+    before = steady_state(frame, shaking_loads(analysis, **opts))
+    after = acc = vel = None
+    label_after = ""
+    variant, label = None, ""
+    if table.after is not None:
+        variant, label = with_variant(mechanism, table.after), table.after.label
+    elif balanced is not None:
+        variant, label = balanced, "balanced"
+    if variant is not None:
+        an_after = analyse(variant, kin.crank_angle, float(np.ravel(kin.speed)[0]), diagnostics=False)
+        after = steady_state(frame, shaking_loads(an_after, **opts))
+        label_after = label
+    points = dict(table.points)
+    if after is not None:
+        acc = _banded_compare(before, after, points, "acceleration", table.direction, table.band)
+        vel = _banded_compare(before, after, points, "velocity", table.direction, table.band)
+
+    def judge(resp):
+        return tuple(classify(resp.rms(p, "velocity", table.direction, table.band), table.machine_class,
+                              table.standard) for p in points.values())
+
+    return FrameStudy(frame, md, points, (table.label, label_after), table.direction, tuple(table.band), before,
+                      after, acc, vel, judge(before), judge(after) if after is not None else None)
+
+
+def _banded_compare(before, after, points, quantity, direction, band) -> Comparison:
+    cmp = compare(before, after, points, quantity, direction)
+    b = np.array([before.rms(p, quantity, direction, band) for p in points.values()])
+    a = np.array([after.rms(p, quantity, direction, band) for p in points.values()])
+    return replace(cmp, before=b, after=a)
+
+
+@dataclass(frozen=True)
+class SignalStudy:
+    """Measured records analysed and judged: ``before`` (and ``after``) analyses, the severity of each channel,
+    the reduction per channel [%] and the predicted RMS velocity [m/s] at channels named like frame points."""
+
+    before: RecordAnalysis
+    after: RecordAnalysis | None
+    severity_before: tuple[Severity, ...]
+    severity_after: tuple[Severity, ...] | None
+    reduction: dict | None
+    predicted_before: dict
+    predicted_after: dict
+    labels: tuple[str, str] = ("before", "after")
+
+
+#: Prefix of a record shipped with machdyn: ``"machdyn:examples/signals/tamper_before.csv"``.
+PACKAGE_PREFIX = "machdyn:"
+
+
+def resolve_record(name: str, source=None) -> Path:
+    """The file a ``[signals]`` entry names: ``machdyn:PATH`` inside machdyn's data folder (the shipped example
+    records), an absolute path as it is, a relative path against the problem file's folder (``source``)."""
+    if name.startswith(PACKAGE_PREFIX):
+        from importlib import resources
+
+        return Path(str(resources.files("machdyn") / "data")) / name[len(PACKAGE_PREFIX):]
+    p = Path(name)
+    if not p.is_absolute() and source is not None:
+        p = Path(source).parent / p
+    return p
+
+
+def study_signals(table, *, source=None, crank_speed: float | None = None,
+                  frame_study: FrameStudy | None = None) -> SignalStudy:
+    """Read and judge the records of a validated ``[signals]`` table (file names relative to ``source``'s
+    folder); with a ``frame_study``, predicted RMS velocities at the channels named like its points."""
+    band = tuple(table.band)
+
+    def analyse_file(name, field):
+        try:
+            return analyse_record(read_record(resolve_record(name, source)), band, crank_speed=crank_speed)
+        except InputError as exc:
+            raise InputError(f"signals.{field}: {exc}") from None
+
+    def judge(analysis):
+        return tuple(classify(c.velocity_rms, table.machine_class, table.standard, boundaries=table.boundaries)
+                     for c in analysis.channels)
+
+    before = analyse_file(table.record, "record")
+    after = analyse_file(table.after, "after") if table.after else None
+    pred_b: dict = {}
+    pred_a: dict = {}
+    labels = ("before", "after")
+    if frame_study is not None:
+        labels = (frame_study.labels[0], frame_study.labels[1] or "after")
+        for c in before.channels:
+            if c.name in frame_study.points:
+                p = frame_study.points[c.name]
+                pred_b[c.name] = frame_study.before.rms(p, "velocity", frame_study.direction, band)
+                if frame_study.after is not None:
+                    pred_a[c.name] = frame_study.after.rms(p, "velocity", frame_study.direction, band)
+    return SignalStudy(before, after, judge(before), judge(after) if after else None,
+                       compare_records(before, after) if after else None, pred_b, pred_a, labels)
