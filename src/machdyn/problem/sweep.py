@@ -33,7 +33,7 @@ from dataclasses import dataclass
 from typing import Any, Literal
 
 import numpy as np
-from pydantic import BaseModel, Field, model_validator
+from pydantic import BaseModel, Field, field_validator, model_validator
 
 from ..errors import ProblemFileError
 from .errors import did_you_mean
@@ -99,9 +99,16 @@ class SweepSpec(BaseModel):
     seed: int | None = Field(None, ge=0, le=2**63 - 1, strict=True)
     partition: int | None = Field(None, ge=1, le=1_000_000, strict=True)
     objective: str | None = None
-    scheduler: str | None = Field(None, pattern=r"^[a-z]+://\S+$")
+    scheduler: str | None = None
     workers: int | None = Field(None, ge=1, le=512, strict=True)
     store: str | None = Field(None, min_length=1)
+
+    @field_validator("scheduler")
+    @classmethod
+    def _an_address(cls, value: str | None) -> str | None:
+        if value is not None and not re.fullmatch(r"[a-z]+://\S+", value):
+            raise ValueError(f"must be the address of a Dask scheduler, like 'tcp://host:8786'; got '{value}'")
+        return value
 
     @model_validator(mode="after")
     def _one_way_of_giving_values(self):
