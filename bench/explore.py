@@ -2,7 +2,7 @@
 processes, and the peak memory of a 10^7-design exploration.
 
     python bench/explore.py throughput [--designs 65536] [--positions 360] [--repeats 3]
-    python bench/explore.py memory [--designs 10000000] [--positions 12]
+    python bench/explore.py memory [--designs 10000000] [--positions 12] [--workers N]
     /usr/bin/time -v python bench/explore.py memory      # the kernel's own count of the peak resident set
 
 The job: the four-bar press drive of ``examples/four_bar_press_explore.toml`` (four link lengths and the crank
@@ -83,14 +83,16 @@ def throughput(args) -> dict:
 
 def memory(args) -> dict:
     spec = problem(args.designs, args.positions, args.partition)
-    seconds, regular = _run(spec, None)
+    seconds, regular = _run(spec, args.workers)
     own = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024  # kB on Linux
     children = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
     positions = args.designs * args.positions
-    print(f"{args.designs:,} designs x {args.positions} positions in {seconds:.1f} s "
+    where = "in this process" if args.workers is None else f"on {args.workers} local Dask worker(s)"
+    print(f"{args.designs:,} designs x {args.positions} positions {where} in {seconds:.1f} s "
           f"({args.designs / seconds:,.0f} designs/s, {positions / seconds / 1e6:.2f} M positions/s), "
           f"{regular:,} regular; peak resident set {own:.0f} MB (largest child {children:.0f} MB)")
-    return {"designs": args.designs, "positions_per_design": args.positions, "seconds": seconds,
+    return {"designs": args.designs, "positions_per_design": args.positions, "workers": args.workers,
+            "seconds": seconds,
             "regular": regular, "peak_rss_mb": own, "peak_child_rss_mb": children}
 
 
@@ -101,6 +103,7 @@ def main() -> None:
     parser.add_argument("--positions", type=int, default=None)
     parser.add_argument("--partition", type=int, default=None)
     parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--workers", type=int, default=None, help="memory: run on a local Dask cluster")
     args = parser.parse_args()
     if args.what == "throughput":
         args.designs = args.designs or 65536

@@ -82,3 +82,15 @@ def test_parquet_columns_carry_their_units(tmp_path):
     frame = pd.read_parquet(tmp_path / "s")
     assert len(frame) == 64 and np.array_equal(frame["design"], np.arange(64))
     assert done.units["max_driving_torque"][0] == "N*m"
+
+
+def test_store_named_in_the_file_is_relative_to_the_file(tmp_path):
+    from machdyn.explore import execution
+
+    path = tmp_path / "problem.toml"
+    path.write_text(explore_text(samples=64, partition=64, extra='store = "designs.parquet"\n'))
+    with execution(store=tmp_path / "default.parquet"):  # the file's store wins over the default
+        done = explore(path)
+    assert done.store == tmp_path / "designs.parquet"
+    assert (tmp_path / "designs.parquet" / "part-000000.parquet").exists()
+    assert not (tmp_path / "default.parquet").exists()

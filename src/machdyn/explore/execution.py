@@ -31,7 +31,8 @@ Progress = Callable[[int, int], None]
 @dataclass(frozen=True)
 class Execution:
     """How and where to run: ``workers`` local worker processes, or ``scheduler`` the address of a running Dask
-    scheduler; ``store`` the Parquet folder; ``progress`` called as partitions finish. None: not set."""
+    scheduler; ``store`` the Parquet folder when the problem names none; ``progress`` called as partitions
+    finish. None: not set."""
 
     workers: int | None = None
     scheduler: str | None = None

@@ -102,14 +102,19 @@ class Exploration:
         return pd.DataFrame(self.digest.sample_in_design_order())
 
 
-def _store_folder(plan: ExplorePlan, given: str | os.PathLike | None, source: str | None) -> Path:
+def _store_folder(plan: ExplorePlan, given: str | os.PathLike | None, default: str | os.PathLike | None,
+                  source: str | None) -> Path:
+    """The Parquet folder: the one given to the call, else ``[sweep] store`` (relative to the problem file), else
+    the execution settings' default (the command line's output folder), else one named by the exploration in
+    the temporary directory (so that a rerun resumes)."""
     if given is not None:
         return Path(given)
     spec_store = plan.problem.sweep.store
     if spec_store is not None:
         base = Path(source).parent if source else Path.cwd()
         return base / spec_store
-    # No folder named: one under the temporary directory, named by the exploration, so a rerun resumes.
+    if default is not None:
+        return Path(default)
     return Path(tempfile.gettempdir()) / f"machdyn-explore-{plan.fingerprint[:16]}"
 
 
@@ -134,8 +139,8 @@ def explore(
 ) -> Exploration:
     """Explore the design space of a linkage problem with a ``[sweep]`` table (a problem, a path or TOML text).
 
-    store : the Parquet folder (default: the execution settings', then ``[sweep] store`` relative to the
-        problem file, then a folder named by the exploration in the temporary directory). Partitions already
+    store : the Parquet folder (default: ``[sweep] store`` relative to the problem file, then the execution
+        settings' store, then a folder named by the exploration in the temporary directory). Partitions already
         there for the same problem and design space are kept, not recomputed.
     workers, scheduler : run on a local Dask cluster of ``workers`` processes, or on the Dask scheduler at this
         address (default: the execution settings', then ``[sweep]``'s, then in this process).
@@ -149,7 +154,7 @@ def explore(
         problem, source = loaded.spec, loaded.source if source is None else source
     plan = plan_exploration(problem)
     settings = current()
-    folder = _store_folder(plan, store if store is not None else settings.store, source)
+    folder = _store_folder(plan, store, settings.store, source)
     workers, scheduler = _where(workers, scheduler, problem.sweep)
     probe = evaluate_designs(plan, next(partition_designs(plan.space, [0]))[1][:1])
     units = column_units(plan, ["design", *probe])
