@@ -94,3 +94,11 @@ def test_store_named_in_the_file_is_relative_to_the_file(tmp_path):
     assert done.store == tmp_path / "designs.parquet"
     assert (tmp_path / "designs.parquet" / "part-000000.parquet").exists()
     assert not (tmp_path / "default.parquet").exists()
+
+
+def test_progress_reports_designs_done_as_partitions_finish(tmp_path):
+    problem = load_problem(explore_text(samples=150, partition=64))
+    calls: list[tuple[int, int]] = []
+    explore(problem, store=tmp_path / "s", progress=lambda done, total: calls.append((done, total)))
+    assert calls == [(0, 150), (64, 150), (128, 150), (150, 150)]
+    explore(problem, store=tmp_path / "t", progress=True)  # a rich bar on stderr; the same run otherwise

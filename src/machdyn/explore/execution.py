@@ -62,6 +62,23 @@ def execution(**settings: Any) -> Iterator[Execution]:
         _CURRENT.reset(token)
 
 
+@contextlib.contextmanager
+def progress_bar(description: str) -> Iterator[Progress]:
+    """A rich progress bar of designs done on the terminal (stderr), as a ``progress`` callback."""
+    from rich.console import Console
+    from rich.progress import BarColumn, MofNCompleteColumn, TextColumn, TimeRemainingColumn
+    from rich.progress import Progress as RichProgress
+
+    with RichProgress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeRemainingColumn(),
+                  console=Console(stderr=True), transient=True) as bar:
+        task = bar.add_task(description, total=None)
+
+        def update(done: int, total: int) -> None:
+            bar.update(task, completed=done, total=total)
+
+        yield update
+
+
 @dataclass(frozen=True)
 class RunStats:
     """How a run of partitions went: the digest, partitions computed now and read back from disk, seconds."""

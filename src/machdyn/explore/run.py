@@ -9,6 +9,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
 import tempfile
 from collections.abc import Callable
@@ -22,9 +23,12 @@ from ..errors import ProblemFileError
 from ..problem.errors import did_you_mean
 from .digest import Digest
 from .evaluate import SUMMARIES, ExplorePlan, check_vectorised_build, evaluate_designs
-from .execution import Progress, current, run_partitions
+from .execution import Progress, current, progress_bar, run_partitions
 from .sampling import DEFAULT_PARTITION, DesignSpace, partition_designs
 from .store import PartitionStore, read_exploration
+
+#: At most this many partitions (their numbers are listed in memory when a run starts).
+MAX_PARTITIONS = 1_000_000
 
 
 def plan_exploration(problem: Any) -> ExplorePlan:
@@ -40,6 +44,11 @@ def plan_exploration(problem: Any) -> ExplorePlan:
     if space.size > MAX_DESIGNS:
         raise ProblemFileError([("sweep", f"a sweep may have at most {MAX_DESIGNS:,} designs; this grid has "
                                           f"{space.size:,} ({' x '.join(map(str, space.shape))})")])
+    if space.partitions > MAX_PARTITIONS:
+        least = -(-space.size // MAX_PARTITIONS)
+        raise ProblemFileError([("sweep.partition", f"{space.size:,} designs in partitions of {space.partition:,} "
+                                                    f"make more than {MAX_PARTITIONS:,} partitions; give a partition "
+                                                    f"of at least {least:,} designs")])
     plan = ExplorePlan(problem, space, crank_angles(problem), tuple(problem.output.shaking_moment_about),
                        spec.goal)
     _, first = next(partition_designs(space, [0]))
@@ -133,7 +142,7 @@ def explore(
     store: str | os.PathLike | None = None,
     workers: int | None = None,
     scheduler: str | None = None,
-    progress: Progress | None = None,
+    progress: Progress | bool | None = None,
     on_partition: Callable[[int], None] | None = None,
     source: str | None = None,
 ) -> Exploration:
@@ -144,7 +153,8 @@ def explore(
         there for the same problem and design space are kept, not recomputed.
     workers, scheduler : run on a local Dask cluster of ``workers`` processes, or on the Dask scheduler at this
         address (default: the execution settings', then ``[sweep]``'s, then in this process).
-    progress : ``progress(designs done, designs in all)`` as partitions finish.
+    progress : ``progress(designs done, designs in all)`` as partitions finish, or True for a progress bar on
+        the terminal.
     on_partition : ``on_partition(index)`` after each partition computed is written.
     """
     if isinstance(problem, str | os.PathLike):
@@ -162,7 +172,10 @@ def explore(
             "partition": plan.space.partition, "partitions": plan.space.partitions,
             "columns": {k: {"unit": u, "label": label} for k, (u, label) in units.items()}}
     keeper = PartitionStore(folder, plan.fingerprint, info)
-    stats = run_partitions(plan, keeper, units, workers=workers, scheduler=scheduler,
-                           progress=progress if progress is not None else settings.progress,
-                           on_partition=on_partition)
+    report = progress if progress is not None else settings.progress
+    with contextlib.ExitStack() as stack:
+        if report is True:
+            report = stack.enter_context(progress_bar(f"{plan.space.size:,} designs"))
+        stats = run_partitions(plan, keeper, units, workers=workers, scheduler=scheduler,
+                               progress=report or None, on_partition=on_partition)
     return Exploration(plan, folder, stats.digest, stats.computed, stats.reused, stats.seconds, stats.where, units)
