@@ -129,18 +129,22 @@ def run_partitions(
 
     if not pending:
         where = "nothing to compute"
-    elif workers is None and scheduler is None:
-        where = "in process"
-        for index, values in partition_designs(space, pending):
-            finished(index, evaluate_partition(plan, index, values))
     else:
-        where = _on_dask(plan, pending, finished, workers, scheduler)
+        where = run_tasks(evaluate_partition, plan, partition_designs(space, pending), finished, workers=workers,
+                          scheduler=scheduler)
     return RunStats(digest, len(pending), len(have & set(range(space.partitions))),
                     time.perf_counter() - started, where)
 
 
-def _on_dask(plan: ExplorePlan, pending: list[int], finished, workers: int | None, scheduler: str | None) -> str:
-    """Run the pending partitions on a Dask cluster; return where they ran."""
+def run_tasks(task: Callable, plan: Any, items: Iterator[tuple[int, Any]], finished: Callable[[int, Any], None], *,
+              workers: int | None = None, scheduler: str | None = None) -> str:
+    """Call ``finished(index, task(plan, index, values))`` for each ``(index, values)`` of ``items``: here, or on
+    a local Dask cluster of ``workers`` processes, or on the Dask scheduler at ``scheduler``, with at most two
+    tasks per worker in flight (in the order they finish). Returns where they ran."""
+    if workers is None and scheduler is None:
+        for index, values in items:
+            finished(index, task(plan, index, values))
+        return "in process"
     from distributed import Client, LocalCluster, as_completed
 
     cluster = None
@@ -150,13 +154,13 @@ def _on_dask(plan: ExplorePlan, pending: list[int], finished, workers: int | Non
     else:
         assert workers is not None
         cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
-                               dashboard_address=None, silence_logs=40)
+                               dashboard_address="127.0.0.1:0", silence_logs=40)
         client = Client(cluster)
         where = f"local Dask cluster of {workers} worker process(es)"
     try:
         width = max(1, len(client.scheduler_info().get("workers", {})) or (workers or 1))
         shared = client.scatter(plan, broadcast=True)
-        source = partition_designs(plan.space, pending)
+        source = iter(items)
         running = as_completed()
         futures: dict[Any, int] = {}
 
@@ -165,7 +169,7 @@ def _on_dask(plan: ExplorePlan, pending: list[int], finished, workers: int | Non
             if item is None:
                 return False
             index, values = item
-            future = client.submit(evaluate_partition, shared, index, values, pure=False)
+            future = client.submit(task, shared, index, values, pure=False)
             futures[future] = index
             running.add(future)
             return True

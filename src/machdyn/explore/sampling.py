@@ -29,7 +29,8 @@ from ..problem.sweep import QuantityRange
 #: is balanced, and small enough that a partition of 360 positions takes seconds.
 DEFAULT_PARTITION = 1 << 14
 
-METHODS = ("grid", "lhs", "sobol")
+#: How designs are drawn; "given": designs given by the caller (an optimiser's population), never drawn here.
+METHODS = ("grid", "lhs", "sobol", "given")
 
 
 @dataclass(frozen=True)
@@ -45,7 +46,7 @@ class DesignSpace:
 
     def __post_init__(self) -> None:
         if self.method not in METHODS:
-            raise InputError(f"The sampling method must be one of {', '.join(METHODS)}; got '{self.method}'.")
+            raise InputError(f"The sampling method must be one of {', '.join(METHODS[:3])}; got '{self.method}'.")
         if not self.quantities:
             raise InputError("A design space needs at least one quantity; got none.")
         if self.partition < 1:
@@ -126,6 +127,8 @@ def partition_designs(space: DesignSpace, wanted: Iterable[int] | None = None) -
 
     Grid and Latin-hypercube partitions are drawn from their index alone; the Sobol' sequence is walked once,
     skipping the partitions not wanted without drawing them (:meth:`scipy.stats.qmc.Sobol.fast_forward`)."""
+    if space.method == "given":
+        raise InputError("The designs of a population are given by the caller, not drawn.")
     todo = sorted(set(range(space.partitions) if wanted is None else wanted))
     if space.method == "sobol":
         sampler = _sobol(space)

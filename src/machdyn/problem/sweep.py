@@ -358,6 +358,15 @@ def explore_quantities(problem: Any) -> tuple[QuantityRange, ...]:
     return tuple(out)
 
 
+def quantity_unit(problem: BaseModel, path: str) -> Unit:
+    """The unit and sign rule of the quantity at ``path`` of a problem; raises
+    :class:`~machdyn.errors.ProblemFileError` naming the path if it is not a quantity that can vary."""
+    try:
+        return _target(problem, path)
+    except FieldError as exc:
+        raise ProblemFileError([("parameters", str(exc))]) from None
+
+
 def substitute(problem: BaseModel, values: dict[str, Any]) -> Any:
     """``problem`` with the quantity at each path replaced by the value given (a float, or an array of one value
     per design), without validation: the values must have been checked (see :func:`explore_quantities`)."""
