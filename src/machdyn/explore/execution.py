@@ -153,8 +153,13 @@ def run_tasks(task: Callable, plan: Any, items: Iterator[tuple[int, Any]], finis
         where = f"Dask cluster at {scheduler}"
     else:
         assert workers is not None
-        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
-                               dashboard_address="127.0.0.1:0", silence_logs=40)
+        import dask
+
+        # Dask sets MALLOC_TRIM_THRESHOLD_ in its workers, which turns off glibc's adaptive mmap threshold: every
+        # large NumPy temporary of the engine is then mapped and unmapped anew, about 4x slower (measured).
+        with dask.config.set({"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None}):
+            cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                   dashboard_address="127.0.0.1:0", silence_logs=40)
         client = Client(cluster)
         where = f"local Dask cluster of {workers} worker process(es)"
     try:
