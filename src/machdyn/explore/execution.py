@@ -167,15 +167,18 @@ def run_tasks(task: Callable, plan: Any, items: Iterator[tuple[int, Any]], finis
         shared = client.scatter(plan, broadcast=True)
         source = iter(items)
         running = as_completed()
-        futures: dict[Any, int] = {}
+        futures: dict[Any, tuple[int, Any]] = {}
 
         def submit() -> bool:
             item = next(source, None)
             if item is None:
                 return False
             index, values = item
-            future = client.submit(task, shared, index, values, pure=False)
-            futures[future] = index
+            # Scattered, and released with the result: designs passed inline to submit stay referenced by the
+            # client until it closes, so its memory would grow with the number of partitions (measured).
+            sent = client.scatter(values, hash=False)
+            future = client.submit(task, shared, index, sent, pure=False)
+            futures[future] = (index, sent)
             running.add(future)
             return True
 
@@ -183,9 +186,10 @@ def run_tasks(task: Callable, plan: Any, items: Iterator[tuple[int, Any]], finis
             if not submit():
                 break
         for future in running:
-            index = futures.pop(future)
+            index, sent = futures.pop(future)
             columns = future.result()
             future.release()
+            sent.release()
             finished(index, columns)
             submit()
     finally:
