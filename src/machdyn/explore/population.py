@@ -1,13 +1,15 @@
 """Evaluate a population of designs given by the caller (an optimiser's generation, a list of candidates): the
 same engine call as an exploration, here or on Dask, the results in memory.
 
->>> import numpy as np
->>> from machdyn.explore.population import evaluate_population
->>> from machdyn.problem import load_problem
->>> problem = load_problem("examples/four_bar.toml")                     # doctest: +SKIP
->>> values = np.array([[0.035, 1.0], [0.04, 2.0]])                       # doctest: +SKIP
->>> out = evaluate_population(problem, ["mechanism.crank.length", "loads.torques[0].torque"], values)  # doctest: +SKIP
->>> out["max_driving_torque"]                                            # doctest: +SKIP
+```python
+import numpy as np
+from machdyn.explore.population import evaluate_population
+from machdyn.problem import load_problem
+problem = load_problem("examples/four_bar.toml")
+values = np.array([[0.035, -1.0], [0.04, -2.0]])   # SI: m, N*m
+out = evaluate_population(problem, ["mechanism.crank.length", "loads.torques[0].torque"], values)
+out["max_driving_torque"]
+```
 """
 
 from __future__ import annotations

@@ -1,10 +1,12 @@
 """Explore the design space of a linkage problem: plan it from the problem's ``[sweep]``, run its partitions
 (here or on Dask), keep them in a Parquet folder, and return counts, the best designs and a bounded sample.
 
->>> from machdyn.explore import explore                                    # doctest: +SKIP
->>> done = explore("examples/four_bar_press_explore.toml", workers=2)     # doctest: +SKIP
->>> done.best_frame().head()                                              # doctest: +SKIP
->>> done.frame()            # every design, read back from done.store      # doctest: +SKIP
+```python
+from machdyn.explore import explore
+done = explore("examples/four_bar_press_explore.toml", workers=2)
+done.best_frame().head()
+done.frame()            # every design, read back from done.store
+```
 """
 
 from __future__ import annotations
