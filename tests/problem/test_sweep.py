@@ -238,3 +238,21 @@ def test_cli_refuses_workers_and_scheduler_together(tmp_path):
     result = CliRunner().invoke(app, ["run", str(path), "--workers", "2", "--scheduler", "tcp://127.0.0.1:1"])
     assert result.exit_code == 2
     assert "give --workers or --scheduler, not both" in result.output
+
+
+def test_cli_workers_option_runs_on_dask_with_the_same_results(tmp_path):
+    import pandas as pd
+    from typer.testing import CliRunner
+
+    from machdyn.cli import app
+
+    path = tmp_path / "explore.toml"
+    path.write_text(BASE + EXPLORE)
+    runner = CliRunner()
+    here = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "here"), "--quiet"])
+    assert here.exit_code == 0, here.output
+    dask = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "dask"), "--quiet", "--workers", "2"])
+    assert dask.exit_code == 0, dask.output
+    pd.testing.assert_frame_equal(pd.read_parquet(tmp_path / "dask" / "sweep.parquet"),
+                                  pd.read_parquet(tmp_path / "here" / "sweep.parquet"), check_exact=True)
+    assert (tmp_path / "dask" / "sweep_best.csv").read_text() == (tmp_path / "here" / "sweep_best.csv").read_text()

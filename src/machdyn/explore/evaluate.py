@@ -50,7 +50,7 @@ class ExplorePlan:
         """A digest of everything that decides the results (problem, space, angles), not of where they run."""
         from .. import __version__
 
-        spec = self.problem.model_dump(mode="json", exclude={"sweep"})
+        spec = self.problem.model_dump(mode="json", exclude={"sweep", "meta"})  # a new title keeps the results
         data = {
             "version": __version__,
             "problem": spec,
