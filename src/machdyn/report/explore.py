@@ -36,6 +36,11 @@ def _shown(done: Any, name: str, data: Any) -> tuple[np.ndarray, str]:
     return np.asarray(data, dtype=float) * display_factor(unit, display), display
 
 
+def _short(path: str) -> str:
+    """The last two parts of a key path, for an axis (``mechanism.crank.length`` -> ``crank.length``)."""
+    return ".".join(path.split(".")[-2:])
+
+
 def plot_design_space(fig: Any, done: Any) -> Any:
     """Scatter matrix of an exploration on ``fig``: each pair of quantities (below the diagonal) and the
     objective against each quantity (on the diagonal), the sampled regular designs coloured by the objective,
@@ -63,12 +68,12 @@ def plot_design_space(fig: Any, done: Any) -> Any:
             else:
                 y, y_unit = _shown(done, y_name, sample.get(y_name, []))
                 by = _shown(done, y_name, best.get(y_name, []))[0]
-                y_label = f"{y_name} [{pretty_unit(y_unit)}]"
+                y_label = f"{_short(y_name)} [{pretty_unit(y_unit)}]"
             points = ax.scatter(x, y, c=colour, s=4, cmap="viridis", vmin=lo, vmax=hi, linewidths=0,
                                 rasterized=True)  # thousands of markers: one embedded image per panel
             ax.scatter(bx, by, s=28, facecolors="none", edgecolors="#d62728", linewidths=1.0)
             if i == k - 1:
-                ax.set_xlabel(f"{x_name} [{pretty_unit(x_unit)}]", fontsize=7)
+                ax.set_xlabel(f"{_short(x_name)} [{pretty_unit(x_unit)}]", fontsize=7)
             if j == 0:
                 ax.set_ylabel(y_label, fontsize=7)
             if i == j:
