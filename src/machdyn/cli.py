@@ -247,11 +247,25 @@ def run(
         TableFormat, typer.Option("--format", "-f", help="How the summary table is printed.")
     ] = TableFormat.table,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing but errors.")] = False,
+    workers: Annotated[
+        int | None, typer.Option("--workers", min=1, max=512, show_default=False,
+                                 help="Run a design-space exploration on a local Dask cluster of N worker processes.")
+    ] = None,
+    scheduler: Annotated[
+        str | None, typer.Option("--scheduler", metavar="ADDRESS", show_default=False,
+                                 help="Run a design-space exploration on the Dask scheduler at ADDRESS "
+                                      "(tcp://host:8786).")
+    ] = None,
     debug: DebugOpt = False,
 ) -> None:
     """Analyse a problem file, print a summary table and write the outputs."""
+    if workers is not None and scheduler is not None:
+        raise _fail("error: give --workers or --scheduler, not both", EXIT_BAD_INPUT)
     try:
-        _run(file, out, format, quiet)
+        from .explore.execution import execution
+
+        with execution(workers=workers, scheduler=scheduler, store=out / "sweep.parquet"):
+            _run(file, out, format, quiet)
     except (typer.Exit, KeyboardInterrupt):
         raise
     except Exception as exc:  # noqa: BLE001 - anything unexpected becomes exit 4 without a traceback
@@ -273,7 +287,13 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool) -> None:
             if hasattr(type(loaded.spec), "model_fields") else ()
         progress.steps = steps_of(loaded.kind, tables)
         try:
-            result = run_problem(loaded, step=progress.step)
+            from .explore.execution import execution
+
+            def partitions(done: int, total: int) -> None:
+                progress.step(f"design sweep {100 * done // max(total, 1)}%")
+
+            with execution(progress=partitions):
+                result = run_problem(loaded, step=progress.step)
         except (ProblemFileError, AssemblyError, InputError, SingularPositionError) as exc:
             raise _engine_error(exc, file) from None
         except MachdynError as exc:

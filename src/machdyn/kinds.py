@@ -22,7 +22,7 @@ KINDS: dict[str, str] = {
 
 #: optional table -> the :class:`~machdyn.pipeline.Capability`
 CAPABILITIES: dict[str, str] = {
-    "sweep": "machdyn.pipelines.sweep:CAPABILITY",
+    "sweep": "machdyn.explore.stage:CAPABILITY",
     "balance": "machdyn.balancing.stage:CAPABILITY",
     "frame": "machdyn.vibration.stage:FRAME",
     "signals": "machdyn.vibration.stage:SIGNALS",

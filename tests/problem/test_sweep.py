@@ -1,6 +1,7 @@
 """Design sweeps in problem files: every variant analysed in one vectorised call, equal to analysing each
 variant's own file; mistakes reported with their paths."""
 
+import json
 import re
 import subprocess
 import sys
@@ -110,3 +111,148 @@ def test_cli_writes_the_sweep_table(tmp_path):
     assert lines[0].startswith("mechanism.coupler.mass [kg],assembled,regular,max_driving_torque [N*m]")
     assert len(lines) == 3
     assert "Design sweep of mechanism.coupler.mass" in (tmp_path / "out" / "report.html").read_text()
+
+
+# ------------------------------------------------------------------------------- several quantities
+
+EXPLORE = """
+[sweep]
+method = "sobol"
+samples = 64
+seed = 4
+partition = 32
+
+[[sweep.quantities]]
+parameter = "mechanism.crank.length"
+start = "30 mm"
+stop = "45 mm"
+
+[[sweep.quantities]]
+parameter = "mechanism.coupler.length"
+start = "110 mm"
+stop = "130 mm"
+
+[[sweep.quantities]]
+parameter = "drive.speed"
+start = "60 rpm"
+stop = "120 rpm"
+
+[[sweep.quantities]]
+parameter = "loads.torques[0].torque"
+start = "-1 N*m"
+stop = "0 N*m"
+"""
+
+
+def test_a_one_quantity_file_is_not_an_exploration_and_an_exploration_dumps_back():
+    from machdyn.problem import dump_problem
+
+    one = load_problem(BASE + '\n[sweep]\nparameter = "mechanism.crank.length"\nvalues = ["30 mm"]\n')
+    assert not one.sweep.is_exploration
+    assert not load_problem(dump_problem(one)).sweep.is_exploration
+    several = load_problem(BASE + EXPLORE)
+    assert several.sweep.is_exploration and several.sweep.sampling == "sobol"
+    assert load_problem(dump_problem(several)) == several
+
+
+@pytest.mark.parametrize(
+    ("sweep", "path", "message"),
+    [
+        ('method = "lhs"\nsamples = 8\n[[sweep.quantities]]\nparameter = "mechanism.crank.length"\n'
+         'values = ["1 mm"]', "sweep",
+         "quantities[0]: with method = 'lhs' give start and stop (the range to sample), not values or count"),
+        ('parameter = "mechanism.crank.length"\nvalues = ["30 mm"]\nsamples = 8', "sweep",
+         "samples is for method = 'lhs' or 'sobol'; a grid takes every combination of values"),
+        ('method = "sobol"\nparameter = "mechanism.crank.length"\nstart = "30 mm"\nstop = "40 mm"', "sweep",
+         "method = 'sobol' needs samples = <number of designs>"),
+        ('method = "sobol"\nsamples = 8\nobjective = "max_drving_torque"\nparameter = "drive.speed"\n'
+         'start = "1 rad/s"\nstop = "2 rad/s"', "sweep",
+         "objective must be one of max_driving_torque, rms_driving_torque, mean_input_power, max_shaking_force, "
+         "max_shaking_moment or joint.<name>.max_force; got 'max_drving_torque'; did you mean 'max_driving_torque'?"),
+        ('scheduler = "localhost:8786"\nparameter = "drive.speed"\nvalues = ["1 rad/s"]', "sweep.scheduler",
+         "must be the address of a Dask scheduler, like 'tcp://host:8786'; got 'localhost:8786'"),
+    ],
+)
+def test_exploration_table_mistakes(sweep, path, message):
+    with pytest.raises(ProblemFileError) as info:
+        load_problem(BASE + "\n[sweep]\n" + sweep + "\n")
+    assert (path, message) in info.value.problems
+
+
+def test_exploration_mistakes_in_quantities_are_all_reported_with_their_paths():
+    text = BASE + EXPLORE.replace("mechanism.coupler.length", "mechanism.cuopler.length").replace(
+        'start = "-1 N*m"', 'start = "-1 kg"').replace('stop = "120 rpm"', 'stop = "60 rpm"')
+    with pytest.raises(ProblemFileError) as info:
+        load_problem(text)
+    assert info.value.problems == [
+        ("sweep.quantities[1].parameter", "'mechanism.cuopler.length' is not a quantity of this file: mechanism has "
+                                          "no key 'cuopler'; did you mean 'coupler'?"),
+        ("sweep.quantities[2].stop", "must differ from start to give a range to sample; got '60 rpm' "
+                                     "(for drive.speed)"),
+        ("sweep.quantities[3].start", "must be in units of [mass] * [length] ** 2 / [time] ** 2 (like N*m); got "
+                                      "'-1 kg', which is [mass] (for loads.torques[0].torque)"),
+    ]
+    bad_joint = BASE + EXPLORE.replace("partition = 32", 'partition = 32\nobjective = "joint.X.max_force"')
+    with pytest.raises(ProblemFileError) as info:
+        load_problem(bad_joint)
+    assert info.value.problems[0][0] == "sweep.objective"
+    assert "'joint.X.max_force' is not a result of this mechanism" in info.value.problems[0][1]
+
+
+def test_cli_explores_writes_parquet_and_the_design_space_section(tmp_path):
+    import pyarrow.parquet as pq
+
+    path = tmp_path / "explore.toml"
+    path.write_text(BASE + EXPLORE)
+    out = tmp_path / "out"
+    script = ("import sys; from machdyn.cli import app\n"
+              "try:\n    app(sys.argv[1:])\nexcept SystemExit as e:\n    code = e.code\n"
+              "print('CLUSTER' if any(m.split('.')[0] == 'distributed' for m in sys.modules) else 'NO CLUSTER')\n"
+              "sys.exit(code)\n")
+    done = subprocess.run([sys.executable, "-c", script, "run", str(path), "--out", str(out), "--quiet"],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    # An exploration in this process never imports dask.distributed (pint itself imports dask's core if present).
+    assert done.stdout.strip() == "NO CLUSTER"
+    parts = sorted((out / "sweep.parquet").glob("part-*.parquet"))
+    assert [p.name for p in parts] == ["part-000000.parquet", "part-000001.parquet"]
+    assert pq.read_schema(parts[0]).field("drive.speed").metadata[b"unit"] == b"rad/s"
+    best = (out / "sweep_best.csv").read_text().splitlines()
+    assert best[0].startswith("design,mechanism.crank.length [m],mechanism.coupler.length [m],drive.speed [rad/s]")
+    scalars = json.loads((out / "results.json").read_text())["scalars"]
+    assert scalars["sweep.designs"]["value"] == 64
+    assert scalars["sweep.best.drive.speed"]["unit"] == "rpm"
+    assert 60.0 <= scalars["sweep.best.drive.speed"]["value"] <= 120.0
+    html = (out / "report.html").read_text()
+    assert "Design space of mechanism.crank.length, mechanism.coupler.length, drive.speed" in html
+    assert "Best designs" in html
+
+
+def test_cli_refuses_workers_and_scheduler_together(tmp_path):
+    from typer.testing import CliRunner
+
+    from machdyn.cli import app
+
+    path = tmp_path / "explore.toml"
+    path.write_text(BASE + EXPLORE)
+    result = CliRunner().invoke(app, ["run", str(path), "--workers", "2", "--scheduler", "tcp://127.0.0.1:1"])
+    assert result.exit_code == 2
+    assert "give --workers or --scheduler, not both" in result.output
+
+
+def test_cli_workers_option_runs_on_dask_with_the_same_results(tmp_path):
+    import pandas as pd
+    from typer.testing import CliRunner
+
+    from machdyn.cli import app
+
+    path = tmp_path / "explore.toml"
+    path.write_text(BASE + EXPLORE)
+    runner = CliRunner()
+    here = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "here"), "--quiet"])
+    assert here.exit_code == 0, here.output
+    dask = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "dask"), "--quiet", "--workers", "2"])
+    assert dask.exit_code == 0, dask.output
+    pd.testing.assert_frame_equal(pd.read_parquet(tmp_path / "dask" / "sweep.parquet"),
+                                  pd.read_parquet(tmp_path / "here" / "sweep.parquet"), check_exact=True)
+    assert (tmp_path / "dask" / "sweep_best.csv").read_text() == (tmp_path / "here" / "sweep_best.csv").read_text()

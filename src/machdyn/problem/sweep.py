@@ -1,5 +1,5 @@
-"""Design sweeps in problem files: one quantity of the file takes several values, and every variant is
-analysed in one vectorised call of the engine.
+"""Design sweeps in problem files: one quantity of the file takes several values, or several quantities are
+explored together over a full grid, a Latin hypercube or a Sobol sample.
 
 ```toml
 [sweep]
@@ -7,9 +7,22 @@ parameter = "mechanism.crank.length"     # the dotted path of any quantity of th
 values = ["30 mm", "35 mm", "40 mm"]      # or: start = "30 mm", stop = "45 mm", count = 16
 ```
 
-Each value is checked by the same rule as the quantity it replaces (unit, sign); the variants are built into
-engine models, stacked into one model with array parameters (:func:`machdyn.linkage.stack_designs`) and
-analysed by :func:`machdyn.linkage.sweep` in bounded memory.
+```toml
+[sweep]
+method = "sobol"                          # "grid" (every combination), "lhs" or "sobol"
+samples = 65536                           # designs drawn (lhs, sobol)
+seed = 1                                  # the same seed draws the same designs
+
+[[sweep.quantities]]
+parameter = "mechanism.crank.length"
+start = "30 mm"                           # a grid also takes count = ..., or values = [...]
+stop = "45 mm"
+```
+
+Each value is checked by the same rule as the quantity it replaces (unit, sign). A one-quantity sweep given
+by ``parameter`` with no other key is analysed as one stacked model by :func:`machdyn.linkage.sweep`; any
+other sweep is a design-space exploration (:mod:`machdyn.explore`): designs drawn partition by partition,
+evaluated in bounded memory, written to Parquet, optionally on a Dask cluster.
 """
 
 from __future__ import annotations
@@ -17,18 +30,46 @@ from __future__ import annotations
 import re
 import typing
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
-from pydantic import BaseModel, Field, model_validator
+from pydantic import BaseModel, Field, field_validator, model_validator
 
 from ..errors import ProblemFileError
 from .errors import did_you_mean
 from .fields import FieldError, Unit, to_si
 
+#: At most this many designs in one sweep (grids and samples alike).
+MAX_DESIGNS = 100_000_000
 
-class SweepSpec(BaseModel):
-    """``[sweep]``: the quantity to vary and its values (a list, or start/stop/count evenly spaced)."""
+#: The per-design summaries an exploration can rank its designs by (``joint.<name>.max_force`` also works).
+OBJECTIVES = ("max_driving_torque", "rms_driving_torque", "mean_input_power", "max_shaking_force",
+              "max_shaking_moment")
+
+#: Keys of ``[sweep]`` that make it a design-space exploration (a one-quantity ``parameter`` sweep has none).
+EXPLORATION_KEYS = ("quantities", "method", "samples", "seed", "partition", "objective", "scheduler", "workers",
+                    "store")
+
+
+def _values_rule(where: str, method: str, values, start, stop, count) -> None:
+    ranged = (start, stop, count)
+    if method != "grid":
+        if values is not None or count is not None:
+            raise ValueError(f"{where}with method = '{method}' give start and stop (the range to sample), "
+                             "not values or count")
+        if start is None or stop is None:
+            raise ValueError(f"{where}with method = '{method}' give both start and stop")
+        return
+    if values is None and any(v is None for v in ranged):
+        raise ValueError(f"{where}give either values = [...] or all of start, stop and count")
+    if values is not None and any(v is not None for v in ranged):
+        raise ValueError(f"{where}give either values = [...] or start, stop and count, not both")
+    if values is not None and len(values) < 1:
+        raise ValueError(f"{where}values must list at least one value")
+
+
+class QuantitySpec(BaseModel):
+    """``[[sweep.quantities]]``: one quantity of an exploration and its values or its range."""
 
     model_config = {"extra": "forbid", "frozen": True}
 
@@ -38,16 +79,77 @@ class SweepSpec(BaseModel):
     stop: Any = None
     count: int | None = Field(None, ge=2, le=1_000_000, strict=True)
 
+
+class SweepSpec(BaseModel):
+    """``[sweep]``: the quantity to vary and its values (a list, or start/stop/count evenly spaced), or several
+    quantities explored together (``quantities``, ``method``, ``samples``, ``seed``), and where and how the
+    designs are evaluated (``partition`` designs per task, ``scheduler`` a Dask address, ``workers`` local
+    worker processes, ``store`` the Parquet folder, ``objective`` the summary that ranks the designs)."""
+
+    model_config = {"extra": "forbid", "frozen": True}
+
+    parameter: str | None = None
+    values: list[Any] | None = None
+    start: Any = None
+    stop: Any = None
+    count: int | None = Field(None, ge=2, le=1_000_000, strict=True)
+    quantities: list[QuantitySpec] | None = Field(None, min_length=1, max_length=32)
+    method: Literal["grid", "lhs", "sobol"] | None = None
+    samples: int | None = Field(None, ge=1, le=MAX_DESIGNS, strict=True)
+    seed: int | None = Field(None, ge=0, le=2**63 - 1, strict=True)
+    partition: int | None = Field(None, ge=1, le=1_000_000, strict=True)
+    objective: str | None = None
+    scheduler: str | None = None
+    workers: int | None = Field(None, ge=1, le=512, strict=True)
+    store: str | None = Field(None, min_length=1)
+
+    @field_validator("scheduler")
+    @classmethod
+    def _an_address(cls, value: str | None) -> str | None:
+        if value is not None and not re.fullmatch(r"[a-z]+://\S+", value):
+            raise ValueError(f"must be the address of a Dask scheduler, like 'tcp://host:8786'; got '{value}'")
+        return value
+
     @model_validator(mode="after")
     def _one_way_of_giving_values(self):
-        ranged = (self.start, self.stop, self.count)
-        if self.values is None and any(v is None for v in ranged):
-            raise ValueError("give either values = [...] or all of start, stop and count")
-        if self.values is not None and any(v is not None for v in ranged):
-            raise ValueError("give either values = [...] or start, stop and count, not both")
-        if self.values is not None and len(self.values) < 1:
-            raise ValueError("values must list at least one value")
+        if (self.parameter is None) == (self.quantities is None):
+            raise ValueError("give either parameter = \"...\" (one quantity) or [[sweep.quantities]] (several), "
+                             "not both" if self.parameter is not None else
+                             "give parameter = \"...\" (one quantity) or [[sweep.quantities]] (several)")
+        method = self.sampling
+        if self.parameter is not None:
+            _values_rule("", method, self.values, self.start, self.stop, self.count)
+        else:
+            loose = [k for k in ("values", "start", "stop", "count") if getattr(self, k) is not None]
+            if loose:
+                raise ValueError(f"with [[sweep.quantities]] give {', '.join(loose)} in each quantity, not in [sweep]")
+            for i, q in enumerate(self.quantities or ()):
+                _values_rule(f"quantities[{i}]: ", method, q.values, q.start, q.stop, q.count)
+        if method == "grid" and self.samples is not None:
+            raise ValueError("samples is for method = 'lhs' or 'sobol'; a grid takes every combination of values")
+        if method != "grid" and self.samples is None:
+            raise ValueError(f"method = '{method}' needs samples = <number of designs>")
+        goal = self.goal
+        if goal not in OBJECTIVES and not re.fullmatch(r"joint\.\w+\.max_force", goal):
+            hint = did_you_mean(goal, list(OBJECTIVES))
+            raise ValueError(f"objective must be one of {', '.join(OBJECTIVES)} or joint.<name>.max_force; "
+                             f"got '{goal}'{hint}")
         return self
+
+    @property
+    def is_exploration(self) -> bool:
+        """True unless this is a one-quantity ``parameter`` sweep with none of the exploration keys."""
+        return any(getattr(self, key) is not None for key in EXPLORATION_KEYS)
+
+    @property
+    def sampling(self) -> str:
+        """The sampling method: ``grid`` unless ``method`` says otherwise."""
+        return self.method or "grid"
+
+    @property
+    def goal(self) -> str:
+        """The per-design summary that ranks the designs (lowest is best): ``objective`` or the peak torque."""
+        return self.objective or OBJECTIVES[0]
 
 
 @dataclass(frozen=True)
@@ -92,7 +194,7 @@ def _target(problem: BaseModel, path: str) -> Unit:
                 raise FieldError(f"'{path}' refers to item {index} of '{name}', which has {size} item(s)")
         if i == len(segments) - 1:
             unit = _unit_of(fields[name])
-            if unit is None or index is not None:
+            if unit is None or index is not None or isinstance(value, list | tuple):
                 raise FieldError(f"'{path}' is not a quantity with a unit, so it cannot be swept")
             return unit
         node = value if index is None else value[index]
@@ -133,13 +235,31 @@ def _display_unit(text: Any, meta: Unit) -> str:
         return meta.unit
 
 
+def _written_unit(text: Any, meta: Unit) -> str:
+    """The unit a value was written in (``"-1 N*m"`` -> ``"N*m"``) if it is one of the quantity's dimension."""
+    from ..units import convert
+
+    parts = str(text).strip().split(maxsplit=1)
+    if len(parts) == 2:
+        try:
+            convert(1.0, meta.unit, parts[1])
+            return parts[1]
+        except Exception:  # noqa: BLE001 - not a plain unit: the pint spelling below
+            pass
+    return _display_unit(text, meta)
+
+
 def expand_sweep(problem: Any) -> SweepPlan:
     """The variants of a problem with a ``[sweep]`` table; every mistake reported at once with its path."""
     from ..units import convert
 
     spec: SweepSpec = problem.sweep
+    if spec.parameter is None or spec.is_exploration:
+        raise ProblemFileError([("sweep", "expand_sweep expands a one-quantity sweep; explore several quantities "
+                                          "with machdyn.explore")])
+    parameter: str = spec.parameter
     try:
-        meta = _target(problem, spec.parameter)
+        meta = _target(problem, parameter)
     except FieldError as exc:
         raise ProblemFileError([("sweep.parameter", str(exc))]) from None
     problems = []
@@ -150,7 +270,7 @@ def expand_sweep(problem: Any) -> SweepPlan:
             try:
                 si.append(to_si(value, meta))
             except FieldError as exc:
-                problems.append((f"sweep.values[{i}]", f"{exc} (for {spec.parameter})"))
+                problems.append((f"sweep.values[{i}]", f"{exc} (for {parameter})"))
         display = _display_unit(raw[0], meta)
     else:
         si = []
@@ -158,14 +278,98 @@ def expand_sweep(problem: Any) -> SweepPlan:
             try:
                 si.append(to_si(getattr(spec, key), meta))
             except FieldError as exc:
-                problems.append((f"sweep.{key}", f"{exc} (for {spec.parameter})"))
+                problems.append((f"sweep.{key}", f"{exc} (for {parameter})"))
         display = _display_unit(spec.start, meta)
         if not problems:
-            si = list(np.linspace(si[0], si[1], spec.count))
+            si = list(np.linspace(si[0], si[1], int(spec.count or 2)))
     if problems:
         raise ProblemFileError(problems)
     values_si = np.asarray(si, dtype=float)
-    segments = _segments(spec.parameter)
+    segments = _segments(parameter)
     variants = tuple(_replace_at(problem, segments, float(v)) for v in values_si)
     shown = np.array([convert(v, meta.unit, display) for v in values_si]) if display != meta.unit else values_si
-    return SweepPlan(spec.parameter, meta.unit, display, values_si, shown, variants)
+    return SweepPlan(parameter, meta.unit, display, values_si, shown, variants)
+
+
+# ------------------------------------------------------------------------------------- explorations
+
+
+@dataclass(frozen=True)
+class QuantityRange:
+    """One explored quantity: its path, units, its grid values (None when sampled) and the ends of its range,
+    ``start`` and ``stop`` (all in SI)."""
+
+    parameter: str
+    si_unit: str
+    display_unit: str
+    values: tuple[float, ...] | None
+    start: float
+    stop: float
+
+
+def _quantity_specs(spec: SweepSpec) -> list[tuple[str, Any]]:
+    """(path prefix for messages, spec) of each explored quantity; a one-quantity sweep is its own spec."""
+    if spec.quantities is None:
+        return [("sweep", spec)]
+    return [(f"sweep.quantities[{i}]", q) for i, q in enumerate(spec.quantities)]
+
+
+def explore_quantities(problem: Any) -> tuple[QuantityRange, ...]:
+    """The quantities a ``[sweep]`` explores, each checked against the quantity it replaces (unit, sign; every
+    value of a range obeys the rule when both ends do); every mistake reported at once with its path."""
+    spec: SweepSpec = problem.sweep
+    out: list[QuantityRange] = []
+    problems: list[tuple[str, str]] = []
+    seen: set[str] = set()
+    for where, q in _quantity_specs(spec):
+        assert q.parameter is not None
+        if q.parameter in seen:
+            problems.append((f"{where}.parameter", f"'{q.parameter}' is explored twice; give each quantity once"))
+            continue
+        seen.add(q.parameter)
+        try:
+            meta = _target(problem, q.parameter)
+        except FieldError as exc:
+            problems.append((f"{where}.parameter", str(exc)))
+            continue
+        raw = list(q.values) if q.values is not None else [q.start, q.stop]
+        keys = [f"values[{i}]" for i in range(len(raw))] if q.values is not None else ["start", "stop"]
+        si = []
+        for key, value in zip(keys, raw, strict=True):
+            try:
+                si.append(to_si(value, meta))
+            except FieldError as exc:
+                problems.append((f"{where}.{key}", f"{exc} (for {q.parameter})"))
+        if len(si) < len(raw):
+            continue
+        if q.values is None and q.count is not None:
+            values: tuple[float, ...] | None = tuple(float(v) for v in np.linspace(si[0], si[1], q.count))
+        elif q.values is not None:
+            values = tuple(float(v) for v in si)
+        else:
+            values = None
+        if values is None and not si[0] != si[1]:
+            problems.append((f"{where}.stop", f"must differ from start to give a range to sample; got "
+                                              f"'{q.stop}' (for {q.parameter})"))
+        out.append(QuantityRange(q.parameter, meta.unit, _written_unit(raw[0], meta), values, float(si[0]),
+                                 float(si[-1])))
+    if problems:
+        raise ProblemFileError(problems)
+    return tuple(out)
+
+
+def quantity_unit(problem: BaseModel, path: str) -> Unit:
+    """The unit and sign rule of the quantity at ``path`` of a problem; raises
+    :class:`~machdyn.errors.ProblemFileError` naming the path if it is not a quantity that can vary."""
+    try:
+        return _target(problem, path)
+    except FieldError as exc:
+        raise ProblemFileError([("parameters", str(exc))]) from None
+
+
+def substitute(problem: BaseModel, values: dict[str, Any]) -> Any:
+    """``problem`` with the quantity at each path replaced by the value given (a float, or an array of one value
+    per design), without validation: the values must have been checked (see :func:`explore_quantities`)."""
+    for path, value in values.items():
+        problem = _replace_at(problem, _segments(path), value)
+    return problem

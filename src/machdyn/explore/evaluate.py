@@ -1,0 +1,170 @@
+"""Evaluate one partition of designs: build the partition's engine model with one array per explored quantity
+and run the engine's sweep (:func:`machdyn.linkage.sweep`, the one place an exploration calls the engine).
+
+A partition's model is built by putting the partition's values, as arrays, into the validated problem and
+building it once (every builder and load of the engine broadcasts over designs). Before a run, a few designs
+built that way are compared with the same designs built one by one (:func:`check_vectorised_build`); where a
+quantity does not broadcast, every partition is built design by design and stacked instead: slower, same
+result.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from dataclasses import dataclass, fields, is_dataclass, replace
+from typing import Any
+
+import numpy as np
+
+from ..errors import ProblemFileError
+from .sampling import DesignSpace
+
+#: Per-design summaries of the engine's sweep kept for every design: (attribute, label, SI unit).
+SUMMARIES = (
+    ("max_driving_torque", "Peak driving torque", "N*m"),
+    ("rms_driving_torque", "RMS driving torque", "N*m"),
+    ("mean_input_power", "Mean input power", "W"),
+    ("max_shaking_force", "Peak shaking force", "N"),
+    ("max_shaking_moment", "Peak shaking moment", "N*m"),
+)
+
+#: Quantities of the drive: passed to the engine per design, not built into the model.
+DRIVE = ("drive.speed", "drive.acceleration")
+
+
+@dataclass(frozen=True)
+class ExplorePlan:
+    """Everything a worker needs to evaluate any partition: the validated problem, the design space, the crank
+    angles [rad], the point the shaking moment is taken about [m], and whether models are built vectorised."""
+
+    problem: Any
+    space: DesignSpace
+    angles: np.ndarray
+    about: tuple[float, float]
+    objective: str
+    vectorised: bool = True
+
+    @property
+    def fingerprint(self) -> str:
+        """A digest of everything that decides the results (problem, space, angles), not of where they run."""
+        from .. import __version__
+
+        spec = self.problem.model_dump(mode="json", exclude={"sweep", "meta"})  # a new title keeps the results
+        data = {
+            "version": __version__,
+            "problem": spec,
+            "space": [self.space.method, self.space.samples, self.space.seed, self.space.partition,
+                      [[q.parameter, q.values, q.start, q.stop] for q in self.space.quantities]],
+            "angles": [float(a) for a in self.angles],
+            "about": list(self.about),
+        }
+        return hashlib.sha256(json.dumps(data, sort_keys=True).encode()).hexdigest()
+
+
+def _single(plan: ExplorePlan, row: np.ndarray):
+    from ..problem.build import build_mechanism
+    from ..problem.sweep import substitute
+
+    return build_mechanism(substitute(plan.problem, {p: float(v) for p, v in zip(plan.space.names, row,
+                                                                                   strict=True)}))
+
+
+def _with_design_axis(mech, n: int):
+    """``mech`` with a designs axis of length ``n`` even when no model parameter varies (a swept drive), so that
+    per-design drive values are never mistaken for per-position ones."""
+    if mech.design_count is not None:
+        return mech
+    crank = mech.body(mech.crank.body)
+    bodies = tuple(replace(b, mass=np.full(n, float(b.mass))) if b is crank else b for b in mech.bodies)
+    return replace(mech, bodies=bodies)
+
+
+def build_designs(plan: ExplorePlan, values: np.ndarray) -> tuple[Any, Any, Any]:
+    """(model with a designs axis, crank speed, crank acceleration) of the designs ``values`` (n, K) in SI; the
+    drive values are (n, 1) columns when explored, floats otherwise."""
+    from ..linkage import stack_designs
+    from ..problem.build import build_mechanism
+    from ..problem.sweep import substitute
+
+    n = values.shape[0]
+    names = plan.space.names
+    model_values = {p: values[:, k] for k, p in enumerate(names) if p not in DRIVE}
+    if not model_values:
+        mech = build_mechanism(plan.problem)
+    elif plan.vectorised:
+        mech = build_mechanism(substitute(plan.problem, model_values))
+    else:
+        mech = stack_designs([_single(plan, row) for row in values])
+    drive = plan.problem.drive
+    speed: Any = float(drive.speed)
+    accel: Any = float(drive.acceleration)
+    if "drive.speed" in names:
+        speed = values[:, names.index("drive.speed"), None].copy()
+    if "drive.acceleration" in names:
+        accel = values[:, names.index("drive.acceleration"), None].copy()
+    return _with_design_axis(mech, n), speed, accel
+
+
+def evaluate_designs(plan: ExplorePlan, values: np.ndarray) -> dict[str, np.ndarray]:
+    """The per-design summaries of the designs ``values`` (n, K) in SI: one array per column, quantities first
+    (SI), then ``assembled``, ``regular``, the summaries and ``joint.<name>.max_force``."""
+    from ..linkage import sweep
+
+    mech, speed, accel = build_designs(plan, values)
+    res = sweep(mech, plan.angles, speed, accel, shaking_about=plan.about)
+    columns: dict[str, np.ndarray] = {p: np.ascontiguousarray(values[:, k]) for k, p in enumerate(plan.space.names)}
+    columns["assembled"] = np.asarray(res.assembled, dtype=bool)
+    columns["regular"] = np.asarray(res.regular, dtype=bool)
+    for attr, _label, _unit in SUMMARIES:
+        columns[attr] = np.asarray(getattr(res, attr), dtype=float)
+    for joint, data in res.max_joint_force.items():
+        columns[f"joint.{joint}.max_force"] = np.asarray(data, dtype=float)
+    return columns
+
+
+def evaluate_partition(plan: ExplorePlan, index: int, values: np.ndarray) -> dict[str, np.ndarray]:
+    """The columns of partition ``index`` (its designs ``values``), with the global ``design`` number first."""
+    start, stop = plan.space.bounds(index)
+    if values.shape != (stop - start, len(plan.space.quantities)):
+        raise ValueError(f"partition {index} holds {stop - start} designs of {len(plan.space.quantities)} "
+                         f"quantities; got values of shape {values.shape}")
+    return {"design": np.arange(start, stop, dtype=np.int64), **evaluate_designs(plan, values)}
+
+
+def _same(a: Any, b: Any, n: int) -> bool:
+    """True if two models hold the same numbers for each of ``n`` designs (arrays or scalars broadcast)."""
+    if isinstance(a, int | float | np.ndarray) and not isinstance(a, bool):
+        if not isinstance(b, int | float | np.ndarray) or isinstance(b, bool):
+            return False
+        x, y = (np.broadcast_to(np.asarray(v, dtype=float), (n,)) for v in (a, b))
+        return bool(np.allclose(x, y, rtol=1e-12, atol=0.0, equal_nan=True))
+    if is_dataclass(a) and not isinstance(a, type):
+        return type(a) is type(b) and all(_same(getattr(a, f.name), getattr(b, f.name), n)
+                                          for f in fields(a) if f.init)
+    if isinstance(a, dict):
+        return isinstance(b, dict) and list(a) == list(b) and all(_same(a[k], b[k], n) for k in a)
+    if isinstance(a, tuple | list):
+        return isinstance(b, tuple | list) and len(a) == len(b) and all(_same(x, y, n) for x, y in
+                                                                           zip(a, b, strict=True))
+    return bool(a == b)
+
+
+def check_vectorised_build(plan: ExplorePlan, values: np.ndarray) -> bool:
+    """True if the designs ``values`` (a few rows) built at once equal the same designs built one by one.
+
+    Raises :class:`~machdyn.errors.ProblemFileError` if a design cannot be built at all (a bad combination of
+    values); any failure of the vectorised build alone only means the slower build is used."""
+    from ..linkage import stack_designs
+
+    try:
+        one_by_one = stack_designs([_single(plan, row) for row in values])
+    except ProblemFileError as exc:
+        shown = ", ".join(f"{p} = {v:.6g}" for p, v in zip(plan.space.names, values[0], strict=True))
+        raise ProblemFileError([("sweep", f"the design ({shown}) cannot be built: {path}: {msg}")
+                                for path, msg in exc.problems]) from None
+    try:
+        at_once, _, _ = build_designs(replace(plan, vectorised=True), values)
+    except Exception:  # noqa: BLE001 - a quantity that does not broadcast: build design by design instead
+        return False
+    return _same(at_once, _with_design_axis(one_by_one, values.shape[0]), values.shape[0])

@@ -1,0 +1,183 @@
+"""Explore the design space of a linkage problem: plan it from the problem's ``[sweep]``, run its partitions
+(here or on Dask), keep them in a Parquet folder, and return counts, the best designs and a bounded sample.
+
+```python
+from machdyn.explore import explore
+done = explore("examples/four_bar_press_explore.toml", workers=2)
+done.best_frame().head()
+done.frame()            # every design, read back from done.store
+```
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import tempfile
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..errors import ProblemFileError
+from ..problem.errors import did_you_mean
+from .digest import Digest
+from .evaluate import SUMMARIES, ExplorePlan, check_vectorised_build, evaluate_designs
+from .execution import Progress, current, progress_bar, run_partitions
+from .sampling import DEFAULT_PARTITION, DesignSpace, partition_designs
+from .store import PartitionStore, read_exploration
+
+#: At most this many partitions (their numbers are listed in memory when a run starts).
+MAX_PARTITIONS = 1_000_000
+
+
+def plan_exploration(problem: Any) -> ExplorePlan:
+    """The plan of a linkage problem's ``[sweep]``: quantities checked, the space sized, the vectorised build
+    of the models checked against design-by-design building on a few designs. Every mistake is reported with
+    its path (:class:`~machdyn.errors.ProblemFileError`)."""
+    from ..problem.build import crank_angles
+    from ..problem.sweep import MAX_DESIGNS, explore_quantities
+
+    spec = problem.sweep
+    quantities = explore_quantities(problem)
+    space = DesignSpace(quantities, spec.sampling, spec.samples, spec.seed or 0, spec.partition or DEFAULT_PARTITION)
+    if space.size > MAX_DESIGNS:
+        raise ProblemFileError([("sweep", f"a sweep may have at most {MAX_DESIGNS:,} designs; this grid has "
+                                          f"{space.size:,} ({' x '.join(map(str, space.shape))})")])
+    if space.partitions > MAX_PARTITIONS:
+        least = -(-space.size // MAX_PARTITIONS)
+        raise ProblemFileError([("sweep.partition", f"{space.size:,} designs in partitions of {space.partition:,} "
+                                                    f"make more than {MAX_PARTITIONS:,} partitions; give a partition "
+                                                    f"of at least {least:,} designs")])
+    plan = ExplorePlan(problem, space, crank_angles(problem), tuple(problem.output.shaking_moment_about),
+                       spec.goal)
+    _, first = next(partition_designs(space, [0]))
+    probe = first[np.unique([0, first.shape[0] // 2, first.shape[0] - 1])]
+    plan = replace(plan, vectorised=check_vectorised_build(plan, probe))
+    columns = evaluate_designs(plan, probe[:1])
+    if plan.objective not in columns:
+        known = [c for c in columns if c.startswith("joint.")]
+        raise ProblemFileError([("sweep.objective", f"'{plan.objective}' is not a result of this mechanism"
+                                                    f"{did_you_mean(plan.objective, known)} (joints: "
+                                                    f"{', '.join(known)})")])
+    return plan
+
+
+def column_units(plan: ExplorePlan, columns: list[str]) -> dict[str, tuple[str, str]]:
+    """(SI unit, label) of each column of an exploration."""
+    out: dict[str, tuple[str, str]] = {"design": ("", "Design number"), "assembled": ("", "Assembles everywhere"),
+                                       "regular": ("", "Regular (assembles, no dead position)")}
+    out |= {q.parameter: (q.si_unit, q.parameter) for q in plan.space.quantities}
+    out |= {attr: (unit, label) for attr, label, unit in SUMMARIES}
+    for name in columns:
+        if name.startswith("joint."):
+            out[name] = ("N", f"Joint {name.split('.')[1]}, max force")
+    return {k: out[k] for k in columns if k in out}
+
+
+@dataclass(frozen=True)
+class Exploration:
+    """An explored design space: the plan, the Parquet folder holding every design (``store``), the digest
+    (counts, best designs, a bounded sample of the regular designs), partitions computed now and reused from
+    disk, the seconds it took and where it ran, and the (SI unit, label) of every column."""
+
+    plan: ExplorePlan
+    store: Path
+    digest: Digest
+    computed: int
+    reused: int
+    seconds: float
+    where: str
+    units: dict[str, tuple[str, str]]
+
+    @property
+    def designs(self) -> int:
+        return self.digest.designs
+
+    def frame(self):
+        """Every design as a pandas DataFrame (SI; for spaces that fit in memory)."""
+        return read_exploration(self.store)
+
+    def best_frame(self):
+        """The best regular designs, lowest objective first (SI)."""
+        import pandas as pd
+
+        return pd.DataFrame(self.digest.best)
+
+    def sample_frame(self):
+        """A uniform sample of at most 2,000 regular designs, in design order (SI)."""
+        import pandas as pd
+
+        return pd.DataFrame(self.digest.sample_in_design_order())
+
+
+def _store_folder(plan: ExplorePlan, given: str | os.PathLike | None, default: str | os.PathLike | None,
+                  source: str | None) -> Path:
+    """The Parquet folder: the one given to the call, else ``[sweep] store`` (relative to the problem file), else
+    the execution settings' default (the command line's output folder), else one named by the exploration in
+    the temporary directory (so that a rerun resumes)."""
+    if given is not None:
+        return Path(given)
+    spec_store = plan.problem.sweep.store
+    if spec_store is not None:
+        base = Path(source).parent if source else Path.cwd()
+        return base / spec_store
+    if default is not None:
+        return Path(default)
+    return Path(tempfile.gettempdir()) / f"machdyn-explore-{plan.fingerprint[:16]}"
+
+
+def _where(workers: int | None, scheduler: str | None, spec: Any) -> tuple[int | None, str | None]:
+    """The first of the call, the execution settings in force and the [sweep] table that says where to run."""
+    settings = current()
+    for w, s in ((workers, scheduler), (settings.workers, settings.scheduler), (spec.workers, spec.scheduler)):
+        if w is not None or s is not None:
+            return (None, s) if s is not None else (w, None)
+    return None, None
+
+
+def explore(
+    problem: Any,
+    *,
+    store: str | os.PathLike | None = None,
+    workers: int | None = None,
+    scheduler: str | None = None,
+    progress: Progress | bool | None = None,
+    on_partition: Callable[[int], None] | None = None,
+    source: str | None = None,
+) -> Exploration:
+    """Explore the design space of a linkage problem with a ``[sweep]`` table (a problem, a path or TOML text).
+
+    store : the Parquet folder (default: ``[sweep] store`` relative to the problem file, then the execution
+        settings' store, then a folder named by the exploration in the temporary directory). Partitions already
+        there for the same problem and design space are kept, not recomputed.
+    workers, scheduler : run on a local Dask cluster of ``workers`` processes, or on the Dask scheduler at this
+        address (default: the execution settings', then ``[sweep]``'s, then in this process).
+    progress : ``progress(designs done, designs in all)`` as partitions finish, or True for a progress bar on
+        the terminal.
+    on_partition : ``on_partition(index)`` after each partition computed is written.
+    """
+    if isinstance(problem, str | os.PathLike):
+        from ..problem.loader import read_problem
+
+        loaded = read_problem(problem)
+        problem, source = loaded.spec, loaded.source if source is None else source
+    plan = plan_exploration(problem)
+    settings = current()
+    folder = _store_folder(plan, store, settings.store, source)
+    workers, scheduler = _where(workers, scheduler, problem.sweep)
+    probe = evaluate_designs(plan, next(partition_designs(plan.space, [0]))[1][:1])
+    units = column_units(plan, ["design", *probe])
+    info = {"method": plan.space.method, "seed": plan.space.seed, "designs": plan.space.size,
+            "partition": plan.space.partition, "partitions": plan.space.partitions,
+            "columns": {k: {"unit": u, "label": label} for k, (u, label) in units.items()}}
+    keeper = PartitionStore(folder, plan.fingerprint, info)
+    report = progress if progress is not None else settings.progress
+    with contextlib.ExitStack() as stack:
+        if report is True:
+            report = stack.enter_context(progress_bar(f"{plan.space.size:,} designs"))
+        stats = run_partitions(plan, keeper, units, workers=workers, scheduler=scheduler,
+                               progress=report or None, on_partition=on_partition)
+    return Exploration(plan, folder, stats.digest, stats.computed, stats.reused, stats.seconds, stats.where, units)

@@ -1,0 +1,100 @@
+"""The ``[sweep]`` capability: a one-quantity sweep analysed as one stacked model (as before), or a design-space
+exploration of several quantities written to Parquet, with its best designs in the summary and the report."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from ..errors import ProblemFileError
+from ..pipeline import Capability, Outcome, StageContext
+from ..pipelines import sweep as one_quantity
+from ..problem.sweep import SweepSpec
+from ..results.labels import Label
+from .evaluate import SUMMARIES
+
+LABELS = dict(one_quantity.LABELS) | {
+    "sweep.assembled_count": Label("Sweep: designs that assemble at every crank angle"),
+    "sweep.best": Label("Sweep: best design number"),
+}
+
+
+def check(problem: Any, table: Any) -> list[tuple[str, str]]:
+    """Every mistake of the table that its schema cannot see: paths, units and signs of the values, designs
+    that cannot be built, the objective."""
+    if not table.is_exploration:
+        return one_quantity.check(problem, table)
+    from .run import plan_exploration
+
+    try:
+        plan_exploration(problem)
+    except ProblemFileError as exc:
+        return list(exc.problems)
+    return []
+
+
+def run(ctx: StageContext) -> Outcome:
+    """The sweep of ``ctx.problem``: one quantity as before, or an exploration (:func:`machdyn.explore.explore`)
+    with the execution settings in force (``--workers``, ``--scheduler``, the output folder)."""
+    if not ctx.table.is_exploration:
+        return one_quantity.run(ctx)
+    from .run import explore
+
+    return outcome(explore(ctx.problem, source=ctx.source))
+
+
+def outcome(done: Any) -> Outcome:
+    """The results of an exploration: counts, the best design's objective and quantities, the best designs as a
+    table (``sweep_best.csv``); every design is in the Parquet folder ``done.store``."""
+    from ..problem.sweep import OBJECTIVES
+    from .sampling import is_power_of_two
+
+    plan, digest = done.plan, done.digest
+    goal = plan.objective
+    unit_of = {k: u for k, (u, _) in done.units.items()}
+    values: dict[str, Any] = {
+        "sweep.designs": float(digest.designs),
+        "sweep.assembled_count": float(digest.assembled),
+        "sweep.regular_count": float(digest.regular),
+    }
+    labels: dict[str, Label] = {}
+    summary = ["sweep.designs", "sweep.assembled_count", "sweep.regular_count"]
+    warnings = []
+    if plan.space.method == "sobol" and not is_power_of_two(plan.space.size):
+        warnings.append(f"A Sobol' sample keeps its balance properties for 2^m designs; {plan.space.size} is not "
+                        "a power of 2.")
+    if digest.best and digest.best["design"].size:
+        best = {k: v[0] for k, v in digest.best.items()}
+        text = dict((a, t) for a, t, _ in SUMMARIES).get(goal) or done.units[goal][1]
+        values["sweep.best"] = float(best["design"])
+        values[f"sweep.best.{goal}"] = float(best[goal])
+        labels[f"sweep.best.{goal}"] = Label(f"Sweep: best design, {text.lower()} (objective)", unit_of[goal])
+        summary += ["sweep.best", f"sweep.best.{goal}"]
+        for q in plan.space.quantities:
+            key = f"sweep.best.{q.parameter}"
+            values[key] = float(best[q.parameter])
+            labels[key] = Label(f"Sweep: best design, {q.parameter}", q.si_unit, q.display_unit)
+            summary.append(key)
+        for name in (*OBJECTIVES, *(c for c in digest.best if c.startswith("joint."))):
+            if name != goal:
+                values[f"sweep.best.{name}"] = float(best[name])
+                labels[f"sweep.best.{name}"] = Label(f"Sweep: best design, {done.units[name][1].lower()}",
+                                                     unit_of[name])
+    else:
+        warnings.append(f"No design of the exploration of {', '.join(plan.space.names)} is regular: each fails to "
+                        "assemble or passes a dead position somewhere in the crank range.")
+    columns = {name: (np.asarray(data), unit_of.get(name, "")) for name, data in digest.best.items()}
+    return Outcome(results=done, scalars=values, labels=labels, series={"sweep_best": columns} if columns else {},
+                   summary=tuple(summary), warnings=tuple(warnings))
+
+
+CAPABILITY = Capability(
+    table="sweep",
+    schema=SweepSpec,
+    run=run,
+    step="design sweep",
+    labels=LABELS,
+    report="machdyn.report.explore:sections",
+    check=check,
+)
