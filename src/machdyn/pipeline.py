@@ -85,8 +85,9 @@ class Capability:
     labels : result key -> :class:`~machdyn.results.labels.Label` of the keys the stage reports.
     report : ``"package.module:function"``, a function ``(Outcome) -> [(heading, html), ...]`` imported only
         when a report is written (so analysis never loads matplotlib).
-    check : ``(problem, table) -> [(path, message), ...]``: the validations of the table that need more than its
-        schema (run by ``check`` and by ``run`` alike).
+    check : ``(problem, table, source) -> [(path, message), ...]``: the validations of the table that need more
+        than its schema (run by ``check`` and by ``run`` alike); ``source`` is the problem file's path (None for
+        TOML text), against whose folder relative file names resolve.
     after : tables whose outcome this stage reads (they run first).
     """
 
@@ -97,7 +98,7 @@ class Capability:
     kinds: tuple[str, ...] = ("mechanism",)
     labels: Mapping[str, Label] = field(default_factory=dict)
     report: str | None = None
-    check: Callable[[Any, Any], list[tuple[str, str]]] | None = None
+    check: Callable[[Any, Any, str | None], list[tuple[str, str]]] | None = None
     after: tuple[str, ...] = ()
 
 

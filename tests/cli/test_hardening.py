@@ -194,3 +194,21 @@ def test_inertial_shaking_force_is_told_apart_from_the_frame_load():
     ix, iy = mass_centre(result.analysis.kinematics).inertia_force
     assert inertial.value == pytest.approx(float(np.max(np.hypot(ix, iy))), rel=1e-12)
     assert abs(frame.value - inertial.value) > 1e-3 * frame.value
+
+
+def test_check_reads_a_record_named_relative_to_the_problem_file(runner, tmp_path):
+    """check and run agree on a [signals] record given by a relative path: both read it, both refuse it if
+    it is missing, naming the field."""
+    import shutil
+
+    text = (ROOT / "examples" / "vibration_record.toml").read_text(encoding="utf-8")
+    records = re.findall(r'"machdyn:(examples/signals/[^"]+)"', text)
+    assert records, "the example names shipped records"
+    for name in records:
+        shutil.copy(ROOT / name, tmp_path / Path(name).name)
+        text = text.replace(f'"machdyn:{name}"', f'"{Path(name).name}"')
+    good = _file(tmp_path, text, "relative.toml")
+    assert runner.invoke(app, ["check", str(good)]).exit_code == EXIT_OK
+    (tmp_path / Path(records[0]).name).unlink()
+    for result in _both(runner, good, tmp_path):
+        assert result.exit_code == EXIT_BAD_INPUT and "signals." in result.stderr, result.output

@@ -223,7 +223,7 @@ def _states(problem: Any, table: BalanceSpec):
     return states
 
 
-def check(problem: Any, table: BalanceSpec) -> list[tuple[str, str]]:
+def check(problem: Any, table: BalanceSpec, source: str | None = None) -> list[tuple[str, str]]:
     """Validations that need the model, so that ``check`` and ``run`` agree: the method fits the linkage, the
     bodies, points and masses named exist, closed-form counterweights on pivoted bodies have a radius, a spring
     never has zero length, and every operating state builds and assembles over the whole turn."""

@@ -20,7 +20,7 @@ LABELS = dict(one_quantity.LABELS) | {
 }
 
 
-def check(problem: Any, table: Any) -> list[tuple[str, str]]:
+def check(problem: Any, table: Any, source: str | None = None) -> list[tuple[str, str]]:
     """Every mistake of the table that its schema cannot see: paths, units and signs of the values, designs
     that cannot be built, the objective."""
     if not table.is_exploration:

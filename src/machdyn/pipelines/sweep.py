@@ -54,7 +54,7 @@ def variants(problem: Any) -> tuple[Any, list[Any]]:
     return plan, mechs
 
 
-def check(problem: Any, _table: Any) -> list[tuple[str, str]]:
+def check(problem: Any, _table: Any, source: str | None = None) -> list[tuple[str, str]]:
     try:
         variants(problem)
     except ProblemFileError as exc:

@@ -211,7 +211,7 @@ def validate(data: dict[str, Any], kind_name: str, source: str | None = None) ->
         for cap in capabilities_for(kind_name):
             table = getattr(spec, cap.table, None)
             if table is not None and cap.check is not None and model is not None:
-                problems += cap.check(spec, table)
+                problems += cap.check(spec, table, source)
     if problems:
         raise ProblemFileError(problems, source)
     return spec, model

@@ -7,7 +7,6 @@ with the outcome. Registered in :mod:`machdyn.kinds` by one line each.
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 
@@ -164,7 +163,7 @@ def run_signals(ctx: StageContext) -> Outcome:
     return signal_outcome(study)
 
 
-def check_frame(problem, table) -> list[tuple[str, str]]:
+def check_frame(problem, table, source: str | None = None) -> list[tuple[str, str]]:
     """What ``machdyn check`` can tell without analysing: the mounts support the frame, and the variant's
     counterweights and springs sit on bodies and points of the mechanism."""
     from ..errors import InputError, ProblemFileError
@@ -194,21 +193,21 @@ def check_frame(problem, table) -> list[tuple[str, str]]:
     return problems
 
 
-def check_signals(_problem, table) -> list[tuple[str, str]]:
-    """Records named by ``machdyn:`` or by an absolute path are read and checked against the band here; a
-    relative path is resolved against the problem file's folder, which a check does not know, so it is read when
-    the file is run."""
+def check_signals(_problem, table, source: str | None = None) -> list[tuple[str, str]]:
+    """Every record is read and checked against the band: ``machdyn:`` names a shipped record, an absolute path
+    is read as it is, a relative one against the problem file's folder (``source``; for TOML text given directly,
+    against the working folder)."""
     from ..errors import InputError
     from .signals import check_band, read_record
-    from .study import PACKAGE_PREFIX, resolve_record
+    from .study import resolve_record
 
     problems: list[tuple[str, str]] = []
     for field in ("record", "after"):
         name = getattr(table, field)
-        if name is None or not (name.startswith(PACKAGE_PREFIX) or Path(name).is_absolute()):
+        if name is None:
             continue
         try:
-            record = read_record(resolve_record(name))
+            record = read_record(resolve_record(name, source))
             check_band(record.sampling_rate, record.time.size, table.band, what=f"the record {name}")
         except InputError as exc:
             problems.append((f"signals.{field}", str(exc)))
