@@ -9,18 +9,25 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from ..errors import InputError
 
 
 @dataclass(frozen=True)
 class Check:
-    """One verification: ``value`` must not exceed ``limit`` (both in ``unit``)."""
+    """One verification: ``value`` must not exceed ``limit`` (both in the SI ``unit``).
+
+    ``display`` is the unit the check is shown in (the SI unit if empty); :meth:`message` is the one wording
+    of a failed check, used by every output.
+    """
 
     name: str
     value: float
     limit: float
     unit: str
     source: str = ""
+    display: str = ""
 
     @property
     def utilisation(self) -> float:
@@ -28,7 +35,23 @@ class Check:
 
     @property
     def passed(self) -> bool:
-        return self.value <= self.limit * (1.0 + 1e-12)
+        return bool(self.value <= self.limit * (1.0 + 1e-12))
+
+    def shown(self) -> tuple[float, float, str]:
+        """(value, limit, unit) in the display unit."""
+        unit = self.display or self.unit
+        if unit == self.unit:
+            return self.value, self.limit, unit
+        from ..results.labels import display_factor
+
+        f = display_factor(self.unit, unit)
+        return self.value * f, self.limit * f, unit
+
+    def message(self) -> str:
+        """``"Screw speed n <= k/sqrt(D): 150 rpm > limit 100.6 rpm"``: the wording of a failed check."""
+        value, limit, unit = self.shown()
+        u = f" {unit}" if unit else ""
+        return f"{self.name}: {value:.4g}{u} > limit {limit:.4g}{u}"
 
 
 # --------------------------------------------------------------------------------------------- torque
@@ -39,8 +62,8 @@ def torque_from_power(power: float, speed_rpm: float) -> float:
 
     power P [W], speed_rpm n [rpm] (> 0).
     """
-    if speed_rpm <= 0:
-        raise InputError(f"The screw speed must be > 0 rpm; got {speed_rpm:g} rpm.")
+    if np.any(np.asarray(speed_rpm) <= 0):
+        raise InputError(f"The screw speed must be > 0 rpm; got {np.min(speed_rpm):g} rpm.")
     return power / (speed_rpm * 2.0 * math.pi / 60.0)
 
 
@@ -53,7 +76,7 @@ def helix_angle(pitch: float, radius: float) -> float:
     pitch S [m], radius R [m]. The paper substitutes the drive power (1.123) for the pitch and gets
     α = 0°8′46″; with the real pitch 160 mm and R = 70 mm, α = 19.99°.
     """
-    return math.atan(pitch / (2.0 * math.pi * radius))
+    return np.arctan(pitch / (2.0 * math.pi * radius))
 
 
 def axial_force(torque: float, radius: float, helix: float, friction_coefficient: float) -> float:
@@ -62,13 +85,13 @@ def axial_force(torque: float, radius: float, helix: float, friction_coefficient
     torque T [N·m], radius R [m] where the material's friction force acts (0.3…0.4·D, eq 2.87),
     helix α [rad] at R, friction_coefficient f [-] of material on flight. Valid for α + γ < 90°.
     """
-    gamma = math.atan(friction_coefficient)
-    if helix + gamma >= math.pi / 2:
+    gamma = np.arctan(friction_coefficient)
+    if np.any(np.asarray(helix + gamma) >= math.pi / 2):
         raise InputError(
             f"The helix angle plus the friction angle must be < 90 deg; got "
-            f"{math.degrees(helix):.4g} + {math.degrees(gamma):.4g} deg."
+            f"{np.degrees(np.max(helix)):.4g} + {np.degrees(np.max(gamma)):.4g} deg."
         )
-    return torque / (radius * math.tan(helix + gamma))
+    return torque / (radius * np.tan(helix + gamma))
 
 
 def lateral_load(torque: float, span: float, radius_factor: float, diameter: float, length: float) -> float:
@@ -95,10 +118,10 @@ def distributed_loads(axial: float, lateral: float, torque: float, span: float, 
 
 def polar_moment_tube(outer_diameter: float, inner_diameter: float = 0.0) -> float:
     """Polar second moment of a tube J_p = π(d_o⁴ − d_i⁴)/32 [m⁴]."""
-    if not outer_diameter > inner_diameter >= 0:
+    if not (np.all(np.asarray(outer_diameter) > inner_diameter) and np.all(np.asarray(inner_diameter) >= 0)):
         raise InputError(
-            f"The pipe needs outer diameter > inner diameter >= 0; got {outer_diameter:g} m and "
-            f"{inner_diameter:g} m."
+            f"The pipe needs outer diameter > inner diameter >= 0; got {np.min(outer_diameter):g} m and "
+            f"{np.max(inner_diameter):g} m."
         )
     return math.pi * (outer_diameter**4 - inner_diameter**4) / 32.0
 
@@ -186,7 +209,7 @@ def screw_mass_per_length(diameter: float, pipe_outer: float, pipe_inner: float,
     """
     pipe = density * math.pi / 4.0 * (pipe_outer**2 - pipe_inner**2)
     r_mean = (diameter + pipe_outer) / 4.0
-    stretch = 1.0 / math.cos(helix_angle(pitch, r_mean))
+    stretch = 1.0 / np.cos(helix_angle(pitch, r_mean))
     flight = density * flight_thickness * math.pi / 4.0 * (diameter**2 - pipe_outer**2) * stretch / pitch
     return pipe + flight
 
@@ -256,3 +279,117 @@ def bolt_minor_diameter_required(force: float, allowable_tensile: float, frictio
     """
     preload = safety * force / (interfaces * friction)
     return math.sqrt(1.3 * 4.0 * preload / (math.pi * allowable_tensile))
+
+
+# ------------------------------------------------------------------------- pipe and flight checks
+
+
+def twist_rate(torque, shear_modulus, polar_moment):
+    """Rate of twist of the pipe at the drive, θ' = T/(G·J_p) [rad/m].
+
+    Parameters
+    ----------
+    torque : float or array
+        Screw torque T [N·m].
+    shear_modulus : float
+        Shear modulus G [Pa].
+    polar_moment : float or array
+        Polar second moment J_p of the pipe [m⁴] (:func:`polar_moment_tube`).
+
+    Returns
+    -------
+    float or array
+        θ' [rad/m]. Source: elementary torsion of a circular tube (seed 004 integrates the same law along the
+        screw, eq after 2.94). Valid for linear elastic tubes, G > 0.
+
+    Examples
+    --------
+    >>> round(twist_rate(100.0, 80e9, 1e-6), 9)
+    0.00125
+    """
+    return torque / (shear_modulus * polar_moment)
+
+
+def pipe_equivalent_stress(load_per_length, span, axial, torque, outer_diameter, inner_diameter):
+    """Tresca equivalent stress in the pipe between two hangers σ_eq = √((σ_b + σ_a)² + 4τ²) [Pa].
+
+    σ_b = (q·l²/8)·(d_o/2)/I (the simply supported span, I = J_p/2), σ_a = F_a/A, τ = T·(d_o/2)/J_p.
+
+    Parameters
+    ----------
+    load_per_length : float or array
+        Lateral load q on the span [N/m] (weight of pipe and flight combined with p_n).
+    span : float
+        Hanger spacing l [m].
+    axial : float or array
+        Axial force F_a [N].
+    torque : float or array
+        Torque T [N·m].
+    outer_diameter, inner_diameter : float or array
+        Pipe diameters d_o > d_i >= 0 [m].
+
+    Returns
+    -------
+    float or array
+        σ_eq [Pa]. Source: seed 004, eqs 2.48-2.49 (σ_td = √(σ² + 4τ²)), applied to the pipe section.
+
+    Examples
+    --------
+    >>> round(float(pipe_equivalent_stress(0.0, 3.0, 0.0, 100.0, 0.1, 0.0)) / 1e6, 6)  # pure torsion: 2·τ
+    1.018592
+    """
+    jp = polar_moment_tube(outer_diameter, inner_diameter)
+    area = math.pi / 4.0 * (outer_diameter**2 - inner_diameter**2)
+    sigma_b = span_bending_moment(load_per_length, span) * (outer_diameter / 2.0) / (jp / 2.0)
+    sigma_a = axial / area
+    tau = shear_stress_tube(torque, outer_diameter, inner_diameter)
+    return np.sqrt((sigma_b + sigma_a) ** 2 + 4.0 * tau**2)
+
+
+def flight_pressure(axial, diameter, pipe_outer_diameter):
+    """Mean pressure on one flight turn carrying the whole axial force, p = F_a/(π(R1² − R2²)) [Pa].
+
+    Parameters
+    ----------
+    axial : float or array
+        Axial force F_a [N].
+    diameter : float or array
+        Screw (flight) diameter D = 2·R1 [m].
+    pipe_outer_diameter : float or array
+        Pipe diameter d_o = 2·R2 [m] (< D).
+
+    Returns
+    -------
+    float or array
+        p [Pa]. Source: seed 004, eq 2.56 corrected (N = p·π(R1² − R2²)); conservative, since the axial force is
+        in fact shared by the turns in contact with the material.
+
+    Examples
+    --------
+    >>> round(flight_pressure(1000.0, 0.2, 0.1), 3)
+    42441.318
+    """
+    return axial / (math.pi * ((diameter / 2.0) ** 2 - (pipe_outer_diameter / 2.0) ** 2))
+
+
+def lift_height(length, inclination):
+    """Lift of an inclined screw H = L·sin β [m] (seed 004, worked example: 21·sin 10° = 3.65 m).
+
+    Parameters
+    ----------
+    length : float
+        Conveyor (screw) length L [m].
+    inclination : float
+        Inclination β [rad], 0 <= β < π/2.
+
+    Returns
+    -------
+    float
+        H [m].
+
+    Examples
+    --------
+    >>> round(lift_height(21.0, math.radians(10.0)), 5)
+    3.64661
+    """
+    return length * math.sin(inclination)

@@ -1,0 +1,56 @@
+"""The screw conveyor as a problem kind: ``validate``, ``check`` and ``run`` for the registry of kinds.
+
+``validate(data, source)`` -> :class:`~machdyn.conveyor.model.ConveyorProblem` (raises
+:class:`~machdyn.errors.ProblemFileError` listing every mistake); ``check(problem)`` -> warnings, after every
+validation ``run`` relies on; ``run(problem, step)`` -> :class:`~machdyn.pipeline.Outcome` with SI scalars,
+labels, summary keys, warnings and failed checks.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ..errors import InputError, ProblemFileError
+from .labels import SUMMARY, label_of
+from .model import ConveyorProblem
+from .schema import validate
+
+__all__ = ["check", "run", "validate"]
+
+
+def _analyse(problem: ConveyorProblem) -> Any:
+    from .evaluate import evaluate
+
+    try:
+        return evaluate(problem)
+    except InputError as exc:
+        raise ProblemFileError([("screw_conveyor", str(exc))], problem.source) from None
+
+
+def check(problem: ConveyorProblem) -> list[str]:
+    """Every validation a run relies on (the same analysis as :func:`run`); returns the warnings.
+
+    Raises :class:`~machdyn.errors.ProblemFileError` naming the input when the problem cannot be analysed.
+    """
+    return list(_analyse(problem).warnings)
+
+
+def run(problem: ConveyorProblem, step: Any = None) -> Any:
+    """Analyse the conveyor and return the stage's :class:`~machdyn.pipeline.Outcome` (SI scalars)."""
+    from ..pipeline import Outcome
+
+    if step is not None:
+        step("design")
+    result = _analyse(problem)
+    scalars = dict(result.scalars)
+    labels = {k: label_of(k) for k in scalars}
+    series = {}
+    if result.bending is not None:
+        b = result.bending
+        series["conveyor_span"] = {"x": (b.x, "m"), "moment": (b.moment, "N*m"), "deflection": (b.deflection, "m"),
+                                   "equivalent_stress": (b.equivalent_stress, "Pa")}
+    if result.ranking is not None:
+        series["conveyor_candidates"] = result.ranking.series()
+    return Outcome(results=result, scalars=scalars, labels=labels, series=series,
+                   summary=tuple(k for k in SUMMARY if k in scalars), warnings=result.warnings,
+                   failed_checks=result.failed_checks)
