@@ -226,11 +226,12 @@ def moment_one_term(x: Any, amp_lateral: float, amp_moment: float, pitch: float)
 
 
 def one_term_error(length: float, pitch: float, axial: float, flexural_rigidity: float) -> float:
-    """Estimated relative error of 2.45 against the beam-column: the end term plus the axial amplification.
+    """Upper estimate of the relative error of 2.45 against the beam-column: end term plus axial amplification.
 
     The exact moment without axial force is 2.45 minus C·(1 − cos al)·x/l, so its relative error is at most
-    (1 − cos al)/2 (zero for a span of whole pitches); a compression N adds about N/(N_cr − N),
-    N_cr = π²EJ/l² (the amplification of a beam-column).
+    (1 − cos al)/2 (zero for a span of whole pitches); a compression N adds at most about N/(N_cr − N),
+    N_cr = π²EJ/l² (the amplification of the first buckling mode of a beam-column). 2.45 is therefore good to
+    1 % where the span is a whole number of pitches and N <= 0.01·N_cr.
 
     Parameters
     ----------
