@@ -8,6 +8,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from ..errors import InputError, check_positive
 from . import tables
 
@@ -34,7 +36,7 @@ def speed_limit(diameter: float, speed_coefficient: float) -> float:
     diameter D [m], speed_coefficient k [rpm·m^0.5] (60 light non-abrasive, 45 heavy non-abrasive,
     30 heavy abrasive; ``data/speed_coefficient.csv``).
     """
-    return speed_coefficient / math.sqrt(diameter)
+    return speed_coefficient / np.sqrt(diameter)
 
 
 def diameter_for_duty(volume_flow: float, pitch_ratio: float, speed_coefficient: float, filling: float,

@@ -108,7 +108,8 @@ def evaluate(problem: ConveyorProblem, *, bending: bool = True) -> ConveyorResul
         ranking = best_design(p)
         chosen = ranking.best
         p = p.replace(diameter=chosen["diameter"], speed=chosen["speed"], pitch_ratio=chosen["pitch_ratio"],
-                      filling=chosen["filling"], search=None)
+                      filling=chosen["filling"], search=None, pipe_outer_diameter=None, pipe_wall=None,
+                      flight_thickness=None)  # the search scales pipe and flight with each candidate
         result = evaluate(p, bending=bending)
         return _with(result, ranking=ranking, problem=problem)
     warnings: list[str] = []

@@ -125,4 +125,7 @@ def flight_max_stress(p: float, r1: float, r2: float, thickness: float, mu: floa
     if np.any(np.asarray(thickness) <= 0):
         raise InputError(f"The flight thickness must be > 0 m; got {np.min(thickness):g} m.")
     m = flight_edge_moments(p, r1, r2, mu)
-    return np.maximum.reduce([np.abs(v) for v in m.values()]) * 6.0 / thickness**2
+    largest = np.abs(m["mr_inner"])
+    for key in ("mt_inner", "mr_outer", "mt_outer"):
+        largest = np.maximum(largest, np.abs(m[key]))
+    return largest * 6.0 / thickness**2
