@@ -113,6 +113,9 @@ def evaluate(problem: ConveyorProblem, *, bending: bool = True) -> ConveyorResul
         result = evaluate(p, bending=bending)
         return _with(result, ranking=ranking, problem=problem)
     warnings: list[str] = []
+    if not 0.3 <= p.force_radius_ratio <= 0.4:
+        warnings.append(f"screw.force_radius_ratio {p.force_radius_ratio:g} is outside 0.3…0.4, the range of the "
+                        f"radius R = (0.3…0.4)·D where the material's friction force acts (seed 004, eq 2.87).")
     design = _choose_screw(p)
     if p.pipe_outer_diameter is not None and p.pipe_outer_diameter >= design.diameter:
         raise InputError(f"The pipe ({p.pipe_outer_diameter * 1000:g} mm) must fit inside the screw "
