@@ -60,7 +60,22 @@ class Check:
 def torque_from_power(power: float, speed_rpm: float) -> float:
     """Shaft torque T = P/ω [N·m] (seed 004, eq 2.85: T = 9.55·10⁶·P/n with T in N·mm, P in kW).
 
-    power P [W], speed_rpm n [rpm] (> 0).
+    Parameters
+    ----------
+    power : float or array
+        Shaft power P [W], >= 0.
+    speed_rpm : float or array
+        Screw speed n [rpm], > 0.
+
+    Returns
+    -------
+    float or array
+        T [N·m].
+
+    Examples
+    --------
+    >>> round(torque_from_power(1123.0, 101.0) * 1000, 2)  # seed 004, eq 2.90: 106 184.65 with 9.55e6 for 30e6/π
+    106176.83
     """
     if np.any(np.asarray(speed_rpm) <= 0):
         raise InputError(f"The screw speed must be > 0 rpm; got {np.min(speed_rpm):g} rpm.")
@@ -71,10 +86,25 @@ def torque_from_power(power: float, speed_rpm: float) -> float:
 
 
 def helix_angle(pitch: float, radius: float) -> float:
-    """Helix (lead) angle α [rad] at radius R: tan α = S/(2πR) (seed 004, eq 2.88, corrected).
+    """Helix (lead) angle α at radius R: tan α = S/(2πR) [rad] (seed 004, eq 2.88, corrected).
 
-    pitch S [m], radius R [m]. The paper substitutes the drive power (1.123) for the pitch and gets
-    α = 0°8′46″; with the real pitch 160 mm and R = 70 mm, α = 19.99°.
+    Parameters
+    ----------
+    pitch : float or array
+        Pitch S [m], > 0.
+    radius : float or array
+        Radius R [m], > 0 (0.3…0.4·D where the material's friction force acts, eq 2.87).
+
+    Returns
+    -------
+    float or array
+        α [rad], 0 < α < π/2. The paper substitutes the drive power (1.123) for the pitch and gets
+        α = 0°8′46″; with the real pitch 160 mm and R = 70 mm, α = 19.99°.
+
+    Examples
+    --------
+    >>> round(math.degrees(helix_angle(0.160, 0.070)), 4)
+    19.9905
     """
     return np.arctan(pitch / (2.0 * math.pi * radius))
 
@@ -82,8 +112,26 @@ def helix_angle(pitch: float, radius: float) -> float:
 def axial_force(torque: float, radius: float, helix: float, friction_coefficient: float) -> float:
     """Axial force on the screw F_a = T/(R·tan(α + γ)), tan γ = f [N] (seed 004, eq 2.86).
 
-    torque T [N·m], radius R [m] where the material's friction force acts (0.3…0.4·D, eq 2.87),
-    helix α [rad] at R, friction_coefficient f [-] of material on flight. Valid for α + γ < 90°.
+    Parameters
+    ----------
+    torque : float or array
+        Screw torque T [N·m].
+    radius : float or array
+        Radius R [m] where the material's friction force acts, R = (0.3…0.4)·D (seed 004, eq 2.87).
+    helix : float or array
+        Helix angle α at R [rad] (:func:`helix_angle`).
+    friction_coefficient : float
+        Friction coefficient f of the material on the flight [-].
+
+    Returns
+    -------
+    float or array
+        F_a [N]. Valid for α + γ < 90° (otherwise the screw is self-locking: :class:`InputError`).
+
+    Examples
+    --------
+    >>> round(float(axial_force(106.18465, 0.070, math.atan(0.160 / (2 * math.pi * 0.070)), 1.0)), 2)  # 707.66 N
+    707.66
     """
     gamma = np.arctan(friction_coefficient)
     if np.any(np.asarray(helix + gamma) >= math.pi / 2):
@@ -97,8 +145,28 @@ def axial_force(torque: float, radius: float, helix: float, friction_coefficient
 def lateral_load(torque: float, span: float, radius_factor: float, diameter: float, length: float) -> float:
     """Horizontal (lateral) load on one span of the screw P_n = 2·T·l/(k·D·L) [N] (seed 004, eq 2.91).
 
-    torque T [N·m], span l [m] between hangers, radius_factor k [-] (0.7…0.8), diameter D [m],
-    length L [m].
+    Parameters
+    ----------
+    torque : float or array
+        Torque T [N·m].
+    span : float
+        Span l between hangers [m].
+    radius_factor : float
+        k [-], 0.7…0.8 (seed 004).
+    diameter : float or array
+        Screw diameter D [m].
+    length : float
+        Conveyor length L [m].
+
+    Returns
+    -------
+    float or array
+        P_n [N].
+
+    Examples
+    --------
+    >>> round(lateral_load(103.86429, 3.0, 0.7, 0.2, 21.0), 4)  # seed 004, eq 2.91: 211.96 N
+    211.9679
     """
     return 2.0 * torque * span / (radius_factor * diameter * length)
 
@@ -106,9 +174,31 @@ def lateral_load(torque: float, span: float, radius_factor: float, diameter: flo
 def distributed_loads(axial: float, lateral: float, torque: float, span: float, length: float) -> dict:
     """Loads spread along the screw (seed 004, eqs 2.92-2.94).
 
-    p_d = F_a/L [N/m] (the paper calls it "vertical"; it is the axial force per length),
-    p_n = P_n/l [N/m] (printed "P_n/1"), m_0 = T/L [N·m/m]. axial F_a [N], lateral P_n [N], torque T [N·m],
-    span l [m], length L [m].
+    p_d = F_a/L [N/m] (the paper calls it "vertical"; it is the axial force per length), p_n = P_n/l [N/m]
+    (printed "P_n/1"), m_0 = T/L [N·m/m].
+
+    Parameters
+    ----------
+    axial : float or array
+        Axial force F_a [N].
+    lateral : float or array
+        Lateral load per span P_n [N].
+    torque : float or array
+        Torque T [N·m].
+    span : float
+        Span l [m].
+    length : float
+        Conveyor length L [m].
+
+    Returns
+    -------
+    dict
+        ``p_d``, ``p_n``, ``m_0``.
+
+    Examples
+    --------
+    >>> {k: round(v, 4) for k, v in distributed_loads(1509.646, 211.96, 103.86429, 3.0, 21.0).items()}
+    {'p_d': 71.8879, 'p_n': 70.6533, 'm_0': 4.9459}
     """
     return {"p_d": axial / length, "p_n": lateral / span, "m_0": torque / length}
 
@@ -117,7 +207,25 @@ def distributed_loads(axial: float, lateral: float, torque: float, span: float, 
 
 
 def polar_moment_tube(outer_diameter: float, inner_diameter: float = 0.0) -> float:
-    """Polar second moment of a tube J_p = π(d_o⁴ − d_i⁴)/32 [m⁴]."""
+    """Polar second moment of a tube J_p = π(d_o⁴ − d_i⁴)/32 [m⁴].
+
+    Parameters
+    ----------
+    outer_diameter : float or array
+        d_o [m], > d_i.
+    inner_diameter : float or array
+        d_i [m], >= 0 (0 for a solid shaft).
+
+    Returns
+    -------
+    float or array
+        J_p [m⁴]. Source: elementary torsion of circular sections (any strength-of-materials text).
+
+    Examples
+    --------
+    >>> round(polar_moment_tube(0.2, 0.1) * 1e4, 6)  # seed 004 uses 0.1·D⁴(1 − η⁴) = 1.5e-4
+    1.472622
+    """
     if not (np.all(np.asarray(outer_diameter) > inner_diameter) and np.all(np.asarray(inner_diameter) >= 0)):
         raise InputError(
             f"The pipe needs outer diameter > inner diameter >= 0; got {np.min(outer_diameter):g} m and "
@@ -137,17 +245,55 @@ def polar_moment_seed(diameter: float, eta: float) -> float:
 
 def torsion_angle_distributed(torque_per_length: float, length: float, shear_modulus: float,
                               polar_moment: float) -> float:
-    """Twist [rad] of a shaft of length L loaded by a uniform torque m_0: φ = m_0·L²/(2·G·J_p).
+    """Twist of a shaft of length L loaded by a uniform torque m_0: φ = m_0·L²/(2·G·J_p) [rad].
 
-    Seed 004's own integral (φ = ∫M_z dz/(GJ_p), M_z = m_0·z). The printed number 7.3·10⁻⁶ rad uses D²
-    for D⁴ and drops the ½; correctly, with the paper's J_p = 0.1·0.2⁴·(1 − 0.5⁴), φ = 9.10·10⁻⁵ rad.
-    torque_per_length m_0 [N·m/m], length L [m], shear_modulus G [Pa], polar_moment J_p [m⁴].
+    Seed 004's own integral (φ = ∫M_z dz/(GJ_p), M_z = m_0·z). The printed number 7.3·10⁻⁶ rad uses D² for
+    D⁴ and drops the ½; correctly, with the paper's J_p = 0.1·0.2⁴·(1 − 0.5⁴), φ = 9.10·10⁻⁵ rad.
+
+    Parameters
+    ----------
+    torque_per_length : float or array
+        m_0 [N·m/m].
+    length : float
+        L [m].
+    shear_modulus : float
+        G [Pa].
+    polar_moment : float or array
+        J_p [m⁴].
+
+    Returns
+    -------
+    float or array
+        φ [rad].
+
+    Examples
+    --------
+    >>> round(torsion_angle_distributed(4.9457, 21.0, 8e10, 0.1 * 0.2**4 * (1 - 0.5**4)) * 1e5, 4)
+    9.0877
     """
     return torque_per_length * length**2 / (2.0 * shear_modulus * polar_moment)
 
 
 def shear_stress_tube(torque: float, outer_diameter: float, inner_diameter: float = 0.0) -> float:
-    """Torsional shear stress τ = T·(d_o/2)/J_p [Pa] of a tube or solid shaft."""
+    """Torsional shear stress τ = T·(d_o/2)/J_p [Pa] of a tube or solid shaft.
+
+    Parameters
+    ----------
+    torque : float or array
+        T [N·m].
+    outer_diameter, inner_diameter : float or array
+        d_o > d_i >= 0 [m].
+
+    Returns
+    -------
+    float or array
+        τ at the outer surface [Pa]. Source: elementary torsion of circular sections.
+
+    Examples
+    --------
+    >>> round(shear_stress_tube(100.0, 0.1) / 1e6, 6)
+    0.509296
+    """
     return torque * outer_diameter / 2.0 / polar_moment_tube(outer_diameter, inner_diameter)
 
 
@@ -217,13 +363,50 @@ def screw_mass_per_length(diameter: float, pipe_outer: float, pipe_inner: float,
 def span_bending_moment(load_per_length: float, span: float) -> float:
     """Largest bending moment of a simply supported span under a uniform load M = q·l²/8 [N·m].
 
-    Conservative for a continuous screw over several hangers (the continuous-beam value is q·l²/10…q·l²/12).
+    Parameters
+    ----------
+    load_per_length : float or array
+        q [N/m].
+    span : float
+        l [m].
+
+    Returns
+    -------
+    float or array
+        M [N·m]. Conservative for a continuous screw over several hangers (q·l²/10…q·l²/12 there).
+
+    Examples
+    --------
+    >>> span_bending_moment(100.0, 3.0)
+    112.5
     """
     return load_per_length * span**2 / 8.0
 
 
 def span_deflection(load_per_length: float, span: float, elastic_modulus: float, second_moment: float) -> float:
-    """Mid-span deflection of a simply supported span δ = 5·q·l⁴/(384·E·I) [m]."""
+    """Mid-span deflection of a simply supported span δ = 5·q·l⁴/(384·E·I) [m].
+
+    Parameters
+    ----------
+    load_per_length : float or array
+        q [N/m].
+    span : float
+        l [m].
+    elastic_modulus : float
+        E [Pa].
+    second_moment : float or array
+        I [m⁴].
+
+    Returns
+    -------
+    float or array
+        δ [m]. Source: Timoshenko & Gere, *Mechanics of Materials*, simply supported beam, uniform load.
+
+    Examples
+    --------
+    >>> round(span_deflection(100.0, 3.0, 2.1e11, 1e-6) * 1000, 4)
+    0.5022
+    """
     return 5.0 * load_per_length * span**4 / (384.0 * elastic_modulus * second_moment)
 
 
