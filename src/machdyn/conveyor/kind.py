@@ -54,3 +54,23 @@ def run(problem: ConveyorProblem, step: Any = None) -> Any:
     return Outcome(results=result, scalars=scalars, labels=labels, series=series,
                    summary=tuple(k for k in SUMMARY if k in scalars), warnings=result.warnings,
                    failed_checks=result.failed_checks)
+
+
+def _title(problem: ConveyorProblem) -> str:
+    return problem.name
+
+
+def _kind() -> Any:
+    from ..pipeline import ProblemKind
+    from .labels import LABELS
+
+    return ProblemKind(
+        name="screw_conveyor", schema=None, build=lambda problem: (None, []),
+        check=lambda problem, _model: check(problem), analyse=lambda problem, _model, step: run(problem, step),
+        title=_title, steps=("design",), labels=LABELS, report="machdyn.report.conveyor:sections",
+        validate=validate, dump=repr, problem_type=lambda: ConveyorProblem,
+    )
+
+
+#: The entry of the registry of problem kinds: ``"screw_conveyor": "machdyn.conveyor.kind:KIND"``.
+KIND = _kind()
