@@ -37,7 +37,7 @@ def plate_coefficient(alpha: float, mu: float) -> float:
     A = [1 + 3μ − α⁻⁴(1 − μ) − 4μα⁻² − 4(1 + μ) ln α] / [1 + μ + α⁻²(1 − μ)]
 
     alpha = R1/R2 [-] (> 1), mu Poisson's ratio [-].
-    
+
     Examples
     --------
     >>> round(float(plate_coefficient(2.0, 0.3)), 6)  # seed-reproduction test vector
@@ -64,7 +64,7 @@ def flight_moments(r: float, p: float, r1: float, r2: float, mu: float = 0.3) ->
 
     r [m] with R2 ≤ r ≤ R1, p pressure [Pa], r1 = R1 flight radius [m], r2 = R2 pipe radius [m], mu [-].
     Sign: with p > 0 the clamped-edge M_r is negative (the seed's convention).
-    
+
     Examples
     --------
     >>> m_r, m_t = flight_moments(0.05, 1e6, 0.1, 0.05, 0.3)  # at the pipe: M_τ = μ·M_r
@@ -116,7 +116,7 @@ def flight_edge_moments(p: float, r1: float, r2: float, mu: float = 0.3) -> dict
                           − 4(1 + μ) ln α]   (print has ln λ for ln α)
 
     p [Pa], r1 = R1 [m], r2 = R2 [m], mu [-]. Keys: ``mr_inner``, ``mt_inner``, ``mr_outer``, ``mt_outer``.
-    
+
     Examples
     --------
     >>> round(float(flight_edge_moments(1e6, 0.1, 0.05, 0.3)["mt_outer"]), 4)
@@ -137,7 +137,7 @@ def flight_max_stress(p: float, r1: float, r2: float, thickness: float, mu: floa
 
     The clamped edge (radial moment at the pipe) governs for all practical α = R1/R2.
     thickness h [m].
-    
+
     Examples
     --------
     >>> round(float(flight_max_stress(1e6, 0.1, 0.05, 0.004, 0.3)) / 1e6, 2)  # 6·|M_r(R2)|/h²
