@@ -118,10 +118,14 @@ def test_steep_screw_needs_explicit_factor_and_skips_iso(base_problem):
         "ISO 7119 skipped: it applies to inclinations up to 20 deg; got 25 deg."]
 
 
-def test_selected_method_out_of_range_is_refused_by_check_and_run(base_problem):
+def test_selected_method_out_of_range_is_refused_by_validate_check_and_run(base_problem):
     base_problem["screw_conveyor"]["inclination"] = "25 deg"
     base_problem["screw_conveyor"]["screw"]["inclination_factor"] = 0.5
-    problem = validate(base_problem)
+    problems = _problems(base_problem)
+    assert problems["screw_conveyor.power_method"].startswith("'iso7119' applies to inclinations up to 20 deg")
+    # a problem built in Python past the file's validation: check and run refuse it alike
+    base_problem["screw_conveyor"]["power_method"] = "textbook_367"
+    problem = validate(base_problem).replace(power_method="iso7119")
     with pytest.raises(ProblemFileError, match="The power method 'iso7119' that sizes the drive is not applicable"):
         check(problem)
     with pytest.raises(InputError, match="The power method 'iso7119' that sizes the drive is not applicable"):

@@ -63,6 +63,17 @@ class ConveyorRun:
             rows.append((lab.text, f"{value * display_factor(lab.unit, unit):.4g}", unit))
         return rows
 
+    @property
+    def checks(self) -> tuple[Any, ...]:
+        """The checks in their display units (kW, MPa, mm, rpm), as the first releases showed them."""
+        import dataclasses
+
+        out = []
+        for c in self.result.checks:
+            value, limit, unit = c.shown()
+            out.append(dataclasses.replace(c, value=value, limit=limit, unit=unit, display=unit))
+        return tuple(out)
+
     def to_html_section(self) -> str:
         from ..report.conveyor import conveyor_html_section
 

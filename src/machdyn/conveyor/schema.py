@@ -18,7 +18,7 @@ from ..problem.errors import did_you_mean, problems_from
 from ..problem.fields import FieldError, Unit, to_si
 from . import tables
 from .model import BaseBolts, ConveyorProblem, Coupling, DesignSearch
-from .power import METHODS
+from .power import ISO7119_MAX_INCLINATION, METHODS
 
 
 def _bounded(meta: Unit, upper: float, why: str) -> Any:
@@ -277,6 +277,13 @@ def _after(c: ConveyorIn) -> tuple[list[tuple[str, str]], dict[str, Any]]:
         else:
             beta = math.asin(c.lift / c.length)
     got["inclination"] = beta
+    m = c.material
+    if c.power_method == "cema" and m.cema_material_factor is None and m.cema_material is None:
+        out.append((f"{p}.power_method", "'cema' sizes the drive but the CEMA material factor is missing: give "
+                                         "material.cema_material_factor (Fm) or material.cema_material"))
+    if c.power_method == "iso7119" and beta > ISO7119_MAX_INCLINATION + 1e-12:
+        out.append((f"{p}.power_method", f"'iso7119' applies to inclinations up to 20 deg; got "
+                                         f"{math.degrees(beta):.4g} deg: choose another power_method"))
     if c.screw.inclination_factor is not None:
         got["inclination_factor"] = c.screw.inclination_factor
     else:
