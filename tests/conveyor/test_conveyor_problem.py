@@ -162,3 +162,15 @@ def test_power_methods_ranked_sensibly(base_problem):
     # ISO 7119 = /367 form + no-load D L/20 when lambda = C0
     assert p["iso7119"] - p["textbook_367"] == pytest.approx(1000 * 0.2 * 21 / 20)
     assert math.isfinite(p["cema"]) and p["cema"] > 0
+
+
+def test_duty_beyond_the_largest_screw_is_refused_at_validation(base_problem):
+    base_problem["screw_conveyor"]["throughput"] = "5000 t/h"
+    problems = _problems(base_problem)
+    assert "exceeds the capacity of the largest standard screw" in problems["screw_conveyor.throughput"]
+
+
+def test_pipe_larger_than_the_chosen_screw_is_refused_at_validation(base_problem):
+    base_problem["screw_conveyor"]["screw"]["pipe_outer_diameter"] = "250 mm"
+    problems = _problems(base_problem)
+    assert problems["screw_conveyor.screw.pipe_outer_diameter"] == "must be < the screw diameter 0.2 m; got 0.25 m"

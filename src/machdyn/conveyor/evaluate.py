@@ -81,7 +81,7 @@ class ConveyorResult:
         return self.scalars["motor_power_required"]
 
 
-def _choose_screw(p: ConveyorProblem) -> ScrewDesign:
+def choose_screw(p: ConveyorProblem) -> ScrewDesign:
     """The screw for the duty, or the given screw with its capacity as the duty (check mode)."""
     mass_flow = p.mass_flow
     if mass_flow is None:
@@ -116,7 +116,7 @@ def evaluate(problem: ConveyorProblem, *, bending: bool = True) -> ConveyorResul
     if not 0.3 <= p.force_radius_ratio <= 0.4:
         warnings.append(f"screw.force_radius_ratio {p.force_radius_ratio:g} is outside 0.3…0.4, the range of the "
                         f"radius R = (0.3…0.4)·D where the material's friction force acts (seed 004, eq 2.87).")
-    design = _choose_screw(p)
+    design = choose_screw(p)
     if p.pipe_outer_diameter is not None and p.pipe_outer_diameter >= design.diameter:
         raise InputError(f"The pipe ({p.pipe_outer_diameter * 1000:g} mm) must fit inside the screw "
                          f"({design.diameter * 1000:g} mm): screw.pipe_outer_diameter must be smaller.")

@@ -338,7 +338,7 @@ def validate(data: dict[str, Any], source: str | None = None) -> ConveyorProblem
             objective=o.objective, diameters=tuple(o.diameters or tables.standard_diameters()),
             pitch_ratios=tuple(o.pitch_ratios), speed_fractions=tuple(o.speed_fractions),
             fillings=tuple(o.fillings), motor_mass_per_kw=o.motor_mass_per_kw)
-    return ConveyorProblem(
+    problem = ConveyorProblem(
         name=f.meta.name, description=f.meta.description, mass_flow=mass_flow, length=c.length,
         inclination=got["inclination"], lift=c.lift, torque=c.torque, power_method=c.power_method,
         methods=tuple(dict.fromkeys([*c.methods, c.power_method])), material_name=m.name, bulk_density=rho,
@@ -354,6 +354,31 @@ def validate(data: dict[str, Any], source: str | None = None) -> ConveyorProblem
         allowable_stress=st.allowable_stress, allowable_twist=st.allowable_twist,
         max_deflection=st.max_deflection, coupling=coupling, base_bolts=bolts, search=search, source=source,
     )
+    problems = _feasible(problem)
+    if problems:
+        raise ProblemFileError(problems, source)
+    return problem
+
+
+def _feasible(problem: ConveyorProblem) -> list[tuple[str, str]]:
+    """The screw the run will choose exists, its pipe fits, and the selected power method applies to it."""
+    if problem.search is not None:
+        return []  # each candidate is judged by the search itself
+    from .evaluate import choose_screw
+
+    p = "screw_conveyor"
+    try:
+        design = choose_screw(problem)
+    except InputError as exc:
+        return [(f"{p}.throughput", str(exc))]
+    out = []
+    if problem.pipe_outer_diameter is not None and problem.pipe_outer_diameter >= design.diameter:
+        out.append((f"{p}.screw.pipe_outer_diameter", f"must be < the screw diameter {design.diameter:g} m; got "
+                                                      f"{problem.pipe_outer_diameter:g} m"))
+    if problem.power_method == "cema" and not math.isfinite(float(tables.cema_diameter_factors(design.diameter))):
+        out.append((f"{p}.power_method", f"'cema' has no diameter factor Fd for a {design.diameter * 1000:g} mm screw "
+                                         f"(tabulated 4 to 24 in): choose another power_method"))
+    return out
 
 
 def _unique(problems: list[tuple[str, str]]) -> list[tuple[str, str]]:
