@@ -12,6 +12,20 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from .core import (  # noqa: F401 - re-exported: the seed's screw-core formulas
+    screw_axial_from_pressure,
+    screw_axial_from_torque,
+    screw_equivalent_stress,
+    screw_equivalent_stress_from_pressure,
+    screw_torque_from_pressure,
+)
+from .fastening import (  # noqa: F401 - re-exported: the checks of the drive's fastenings
+    base_bolt_max_force,
+    bolt_minor_diameter_required,
+    bushing_bearing_stress,
+    coupling_design_torque,
+    pin_bending_stress,
+)
 
 
 @dataclass(frozen=True)
@@ -297,52 +311,6 @@ def shear_stress_tube(torque: float, outer_diameter: float, inner_diameter: floa
     return torque * outer_diameter / 2.0 / polar_moment_tube(outer_diameter, inner_diameter)
 
 
-# ----------------------------------------------------------------- screw stress from pressure (2.46-2.54)
-
-
-def screw_torque_from_pressure(p_max: float, span: float, r1: float, r2: float, tan_beta: float,
-                               pitch: float) -> float:
-    """Torque at the dangerous section M_x = (p_max·l/2)·tan β·(R1³ − R2³)/3·(2π/t) [N·m].
-
-    Seed 004, eq 2.46 corrected to agree with 2.35 (m_x = p·tan β·(R1³ − R2³)/3·2π/t): the printed
-    (p_max·l/2)·(R1³ − R2³)/2·a lacks tan β and has /2 for /3 (printed/correct = 3/(2 tan β)).
-    p_max [Pa], span l [m], r1 = R1, r2 = R2 [m], tan_beta [-], pitch t [m].
-    """
-    return p_max * span / 2.0 * tan_beta * (r1**3 - r2**3) / 3.0 * 2.0 * math.pi / pitch
-
-
-def screw_axial_from_pressure(p_max: float, span: float, r1: float, r2: float, pitch: float) -> float:
-    """Axial force S = (p_max·l/2)·(R1² − R2²)/2·(2π/t) [N] (seed 004, eq 2.47)."""
-    return p_max * span / 2.0 * (r1**2 - r2**2) / 2.0 * 2.0 * math.pi / pitch
-
-
-def screw_axial_from_torque(torque: float, r1: float, r2: float, tan_beta: float) -> float:
-    """Axial force S = 3·M_x·(R1 + R2)/(2·tan β·(R1² + R1·R2 + R2²)) [N] (seed 004, eq 2.52 corrected).
-
-    The print has R1² + R1² + R2² for R1² + R1R2 + R2² (2.51 inverted).
-    """
-    return 3.0 * torque * (r1 + r2) / (2.0 * tan_beta * (r1**2 + r1 * r2 + r2**2))
-
-
-def screw_equivalent_stress(torque: float, r1: float, r2: float, tan_beta: float) -> float:
-    """Tresca equivalent stress of the screw core σ_td = √(σ² + 4τ²) [Pa] (seed 004, eqs 2.48-2.53).
-
-    σ = S/F, F = πR2², τ = M_x/W_c, W_c = πR2³/2 (solid core of radius R2), S from eq 2.52 (corrected):
-    σ_td = M_x·√([3(R1 + R2)/(2 tan β (R1² + R1R2 + R2²)·πR2²)]² + 16/(πR2³)²).
-    torque M_x [N·m], r1 = R1, r2 = R2 [m], tan_beta [-].
-    """
-    sigma = screw_axial_from_torque(torque, r1, r2, tan_beta) / (math.pi * r2**2)
-    tau = torque / (math.pi * r2**3 / 2.0)
-    return math.sqrt(sigma**2 + 4.0 * tau**2)
-
-
-def screw_equivalent_stress_from_pressure(p_max: float, span: float, r1: float, r2: float,
-                                          tan_beta: float, pitch: float) -> float:
-    """σ_td from the flight pressure (seed 004, eq 2.54): eq 2.53 with M_x from the corrected eq 2.46."""
-    m_x = screw_torque_from_pressure(p_max, span, r1, r2, tan_beta, pitch)
-    return screw_equivalent_stress(m_x, r1, r2, tan_beta)
-
-
 # ------------------------------------------------------------------------- bending between hangers
 
 
@@ -408,60 +376,6 @@ def span_deflection(load_per_length: float, span: float, elastic_modulus: float,
     0.5022
     """
     return 5.0 * load_per_length * span**4 / (384.0 * elastic_modulus * second_moment)
-
-
-# ------------------------------------------------------------------------- elastic-pin coupling
-
-
-def coupling_design_torque(torque: float, service_factor: float) -> float:
-    """Coupling design torque T_t = k·T [N·m] (seed 004, eq 2.97; k = 1.8 for a screw conveyor)."""
-    return service_factor * torque
-
-
-def bushing_bearing_stress(torque: float, service_factor: float, pins: int, pin_circle: float,
-                           pin_diameter: float, bushing_length: float) -> float:
-    """Bearing stress of the rubber bushes σ_d = 2·k·T/(Z·D0·d_c·l3) [Pa] (seed 004, eq 2.98)."""
-    return 2.0 * service_factor * torque / (pins * pin_circle * pin_diameter * bushing_length)
-
-
-def pin_bending_stress(torque: float, service_factor: float, pins: int, pin_circle: float,
-                       pin_diameter: float, pin_lever: float) -> float:
-    """Bending stress of the coupling pins σ_u = k·T·l0/(0.1·d_c³·D0·Z) [Pa] (seed 004, eq 2.98).
-
-    pin_lever l0 = l1 + l2/2 [m] (the paper derives 41.5 mm but substitutes 62 mm).
-    """
-    return service_factor * torque * pin_lever / (0.1 * pin_diameter**3 * pin_circle * pins)
-
-
-# ----------------------------------------------------------------------------------- base bolts
-
-
-def base_bolt_max_force(belt_force: float, belt_preload: float, lever: float, a: float, b: float) -> float:
-    """Largest shear force on one of four base bolts under the belt pull [N] (seed 004, eqs 2.72-2.77).
-
-    F′ = F_r + F_0 (2.72), M = (L + a/2)·F′ (2.73), F_Z = F′/4 (2.74), r = ½√(a² + (2b)²) (2.76),
-    F_M = M·r/Σr_i² = M/(4r) (2.75), F_max² = F_Z² + F_M² + 2·F_Z·F_M·cos θ, cos θ = a/(2r) (2.77).
-    belt_force F_r [N], belt_preload F_0 [N], lever L [m] from the belt line to the bolt group,
-    a, b [m] bolt spacings as in the seed's figure 3.2.
-    """
-    f = belt_force + belt_preload
-    moment = (lever + a / 2.0) * f
-    r = 0.5 * math.sqrt(a**2 + (2.0 * b) ** 2)
-    f_z = f / 4.0
-    f_m = moment * r / (4.0 * r**2)
-    cos_t = a / (2.0 * r)
-    return math.sqrt(f_z**2 + f_m**2 + 2.0 * f_z * f_m * cos_t)
-
-
-def bolt_minor_diameter_required(force: float, allowable_tensile: float, friction: float = 0.2,
-                                 safety: float = 2.0, interfaces: int = 1) -> float:
-    """Minor diameter of a preloaded bolt carrying ``force`` in shear by friction [m] (seed 004, 2.78-2.80).
-
-    V = k·F/(i·f) (2.79), d3 ≥ √(1.3·4·V/(π·[σ_k])) (2.78; 1.3 for the torsion while tightening).
-    force F [N], allowable_tensile [σ_k] [Pa], friction f [-], safety k [-], interfaces i [-].
-    """
-    preload = safety * force / (interfaces * friction)
-    return math.sqrt(1.3 * 4.0 * preload / (math.pi * allowable_tensile))
 
 
 # ------------------------------------------------------------------------- pipe and flight checks
