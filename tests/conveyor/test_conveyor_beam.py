@@ -96,3 +96,20 @@ def test_equivalent_stress_along_reduces_to_torsion_and_bending():
     jp = math.pi * (d_o**4 - d_i**4) / 32
     assert float(equivalent_stress_along(0.0, 0.0, 100.0, d_o, d_i)) == pytest.approx(2 * 100 * 0.05 / jp)
     assert float(equivalent_stress_along(-200.0, 0.0, 0.0, d_o, d_i)) == pytest.approx(200 * 0.05 / (jp / 2))
+
+
+def test_stress_along_the_screw_grows_to_the_drive_and_stays_below_the_span_bound(base_problem):
+    """Torque and axial force grow from the feed end to the drive: the stress along the screw is largest in the
+    last span, and never above the span analysed with the whole F_a and T (the conservative bound)."""
+    from machdyn.conveyor import evaluate, validate
+
+    result = evaluate(validate(base_problem))
+    b = result.bending
+    assert b.screw_x[0] == 0 and b.screw_x[-1] == pytest.approx(21.0)
+    last = b.screw_x >= 21.0 - 3.0
+    assert np.argmax(b.screw_stress) in np.flatnonzero(last)
+    assert result.scalars["screw_stress_max"] <= result.scalars["span_stress_max"] * (1 + 1e-12)
+    # at the drive, x = L: the moment vanishes at the support, so only torsion and the axial force remain
+    d_o, d_i = 0.1, 0.088
+    assert b.screw_stress[-1] == pytest.approx(
+        float(equivalent_stress_along(0.0, result.scalars["axial_force"], result.torque, d_o, d_i)), rel=1e-6)

@@ -293,6 +293,49 @@ def equivalent_stress_along(moment: Any, axial: Any, torque: Any, outer_diameter
     return np.sqrt((np.abs(moment) * c / (jp / 2.0) + axial / area) ** 2 + 4.0 * (torque * c / jp) ** 2)
 
 
+def stress_along_screw(length: float, span: float, span_x: Any, span_moment: Any, axial: float, torque: float,
+                       outer_diameter: float, inner_diameter: float, points: int = 801) -> tuple[Any, Any]:
+    """Equivalent stress along the whole screw, x from the feed end (0) to the drive (L) [m, Pa].
+
+    The torque and the axial force grow linearly from the feed end to the drive, T(x) = T·x/L and
+    N(x) = F_a·x/L (the uniform m_0 and p_d of seed 004, eqs 2.92-2.94, as in the torque and axial-force
+    diagrams behind 2.46-2.47); every hanger span bends like the span solved by :func:`beam_column`. The stress
+    is :func:`equivalent_stress_along` section by section (eqs 2.48-2.53 corrected, on the pipe).
+
+    Parameters
+    ----------
+    length : float
+        Screw length L [m].
+    span : float
+        Hanger spacing l [m].
+    span_x, span_moment : array
+        The span's positions [m] and bending moments [N·m].
+    axial : float
+        Axial force at the drive F_a [N].
+    torque : float
+        Torque at the drive T [N·m].
+    outer_diameter, inner_diameter : float
+        Pipe diameters [m].
+    points : int
+        Number of positions.
+
+    Returns
+    -------
+    tuple of arrays
+        x [m] and σ_eq(x) [Pa].
+
+    Examples
+    --------
+    >>> x, s = stress_along_screw(6.0, 3.0, np.array([0.0, 3.0]), np.zeros(2), 0.0, 100.0, 0.1, 0.0, points=3)
+    >>> [round(float(v) / 1e6, 6) for v in s]  # pure torsion, growing to 2·τ at the drive
+    [0.0, 0.509296, 1.018592]
+    """
+    x = np.linspace(0.0, length, points)
+    moment = np.interp(np.mod(x, span), span_x, span_moment)
+    sigma = equivalent_stress_along(moment, axial * x / length, torque * x / length, outer_diameter, inner_diameter)
+    return x, sigma
+
+
 @dataclass(frozen=True)
 class SpanBending:
     """Bending of one span between hangers of a run: x [m], M [N·m], v [m], σ_eq [Pa] along the span."""
@@ -303,12 +346,15 @@ class SpanBending:
     equivalent_stress: np.ndarray
     axial: float
     euler_load: float
+    screw_x: np.ndarray  # positions along the whole screw [m]
+    screw_stress: np.ndarray  # equivalent stress along the whole screw [Pa]
 
     def scalars(self) -> dict[str, float]:
         return {"span_moment_max": float(np.max(np.abs(self.moment))),
                 "span_deflection_max": float(np.max(np.abs(self.deflection))),
                 "span_stress_max": float(np.max(self.equivalent_stress)),
-                "span_axial_ratio": self.axial / self.euler_load}
+                "span_axial_ratio": self.axial / self.euler_load,
+                "screw_stress_max": float(np.max(self.screw_stress))}
 
 
 def span_bending(problem: Any, states: dict[str, Any]) -> SpanBending:
@@ -320,5 +366,7 @@ def span_bending(problem: Any, states: dict[str, Any]) -> SpanBending:
     axial = float(states["axial_force"])
     span = problem.hanger_spacing
     sol = beam_column(span, ej, lambda x: q + 0.0 * np.asarray(x), axial_start=axial, axial_end=axial)
-    sigma = equivalent_stress_along(sol.moment, axial, float(states["torque"]), d_o, d_i)
-    return SpanBending(sol.x, sol.moment, sol.deflection, sigma, axial, math.pi**2 * ej / span**2)
+    torque = float(states["torque"])
+    sigma = equivalent_stress_along(sol.moment, axial, torque, d_o, d_i)
+    x, along = stress_along_screw(problem.length, span, sol.x, sol.moment, axial, torque, d_o, d_i)
+    return SpanBending(sol.x, sol.moment, sol.deflection, sigma, axial, math.pi**2 * ej / span**2, x, along)

@@ -49,6 +49,7 @@ def run(problem: ConveyorProblem, step: Any = None) -> Any:
         b = result.bending
         series["conveyor_span"] = {"x": (b.x, "m"), "moment": (b.moment, "N*m"), "deflection": (b.deflection, "m"),
                                    "equivalent_stress": (b.equivalent_stress, "Pa")}
+        series["conveyor_screw_stress"] = {"x": (b.screw_x, "m"), "equivalent_stress": (b.screw_stress, "Pa")}
     if result.ranking is not None:
         series["conveyor_candidates"] = result.ranking.series()
     return Outcome(results=result, scalars=scalars, labels=labels, series=series,

@@ -42,6 +42,7 @@ LABELS: dict[str, Label] = {
     "span_deflection_max": Label("Span deflection, max (beam-column)", "m", "mm"),
     "span_stress_max": Label("Span equivalent stress, max", "Pa", "MPa"),
     "span_axial_ratio": Label("Axial force / Euler load of a span", ""),
+    "screw_stress_max": Label("Equivalent stress along the screw, max", "Pa", "MPa"),
     "bolt_force": Label("Largest base-bolt shear force", "N", "N"),
     "bolt_d3_required": Label("Bolt minor diameter required", "m", "mm"),
     **{f"power_{m}": Label(f"Shaft power, {pw.LABELS[m]}", "W", "kW") for m in pw.METHODS},

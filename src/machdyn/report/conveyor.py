@@ -66,6 +66,19 @@ def plot_span_bending(result: Any, ax: Any = None) -> Any:
     return ax
 
 
+def plot_stress_along_screw(result: Any, ax: Any = None) -> Any:
+    """Equivalent stress [MPa] along the whole screw, from the feed end to the drive."""
+    b = result.bending
+    if ax is None:
+        from matplotlib.figure import Figure
+
+        ax = Figure().add_subplot()
+    ax.plot(b.screw_x, b.screw_stress / 1e6, color="#1f4e79")
+    ax.set_xlabel("x from the feed end [m]")
+    ax.set_ylabel("σ_eq [MPa]")
+    return ax
+
+
 def plot_ranking(result: Any, ax: Any = None, top: int = 10) -> Any:
     """The best feasible candidates of a design search by objective (lower is better)."""
     r = result.ranking
@@ -90,6 +103,10 @@ def _figures(result: Any) -> str:
             "conveyor-span", "Bending along one span",
             "The span between two hangers as a beam-column (lateral load and the whole axial force).",
             (5.0, 4.2), lambda fig: plot_span_bending(result, fig.subplots(3, 1, sharex=True)), hspace=0.35))
+        figs.append(render_figure(
+            "conveyor-screw-stress", "Equivalent stress along the screw",
+            "Torque and axial force grow from the feed end to the drive; every span bends like the one above.",
+            (5.0, 2.4), lambda fig: plot_stress_along_screw(result, fig.add_subplot())))
     if result.ranking is not None:
         figs.append(render_figure("conveyor-ranking", "Ranking of candidate designs",
                                   "The feasible candidates of least objective.", (5.0, 3.0),
