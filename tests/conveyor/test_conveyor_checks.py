@@ -64,3 +64,18 @@ def test_check_object():
     c = ck.Check("x", 5.0, 10.0, "MPa")
     assert c.passed and c.utilisation == 0.5
     assert not ck.Check("x", 11.0, 10.0, "MPa").passed
+
+
+def test_check_functions_named_in_the_docs_are_exported():
+    """Every function docs/conveyor.md names as exported from machdyn.conveyor is there and callable."""
+    from pathlib import Path
+
+    import machdyn.conveyor as conveyor
+
+    doc = (Path(__file__).resolve().parents[2] / "docs" / "conveyor.md").read_text(encoding="utf-8")
+    start = doc.index("The check functions are exported from `machdyn.conveyor`")
+    names = re.findall(r"`([a-z_]+)`", doc[start:doc.index("\n\n", start)])
+    assert {"axial_force", "helix_angle", "lateral_load", "torque_from_power"} <= set(names)
+    for name in names:
+        assert callable(getattr(conveyor, name)), name
+        assert name in conveyor.__all__

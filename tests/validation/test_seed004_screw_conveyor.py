@@ -219,15 +219,16 @@ def test_example_problem_file_reproduces_the_seed_design(tmp_path):
     import tomllib
     from pathlib import Path
 
-    from machdyn.conveyor import load_conveyor_problem, run_conveyor
+    from machdyn.conveyor import evaluate, validate
 
     path = Path(__file__).parents[2] / "examples" / "iodized_salt_conveyor.toml"
-    result = run_conveyor(load_conveyor_problem(tomllib.loads(path.read_text()), source=str(path)))
-    assert result.quantity("diameter_required").value == pytest.approx(164.96, abs=0.005)
-    assert result.quantity("diameter").value == pytest.approx(200.0)
-    assert result.quantity("pitch").value == pytest.approx(160.0)
+    result = evaluate(validate(tomllib.loads(path.read_text()), source=str(path)))
+    s = result.scalars  # SI
+    assert s["diameter_required"] == pytest.approx(0.16496, abs=0.005e-3)
+    assert s["diameter"] == pytest.approx(0.200)
+    assert s["pitch"] == pytest.approx(0.160)
     assert result.powers["textbook_360"].shaft_power / 1000 == pytest.approx(1.122932, rel=1e-6)
     # torque at the limit speed 100.623 rpm (the paper rounds to 101 rpm)
     assert result.torque == pytest.approx(1122.932 / (100.6231 * 2 * math.pi / 60), rel=1e-6)
-    assert result.quantity("helix_angle").value == pytest.approx(19.99, abs=0.005)
+    assert math.degrees(s["helix_angle"]) == pytest.approx(19.99, abs=0.005)
     assert result.passed, [c for c in result.checks if not c.passed]

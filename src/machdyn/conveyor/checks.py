@@ -9,18 +9,39 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from ..errors import InputError
+from .core import (  # noqa: F401 - re-exported: the seed's screw-core formulas
+    screw_axial_from_pressure,
+    screw_axial_from_torque,
+    screw_equivalent_stress,
+    screw_equivalent_stress_from_pressure,
+    screw_torque_from_pressure,
+)
+from .fastening import (  # noqa: F401 - re-exported: the checks of the drive's fastenings
+    base_bolt_max_force,
+    bolt_minor_diameter_required,
+    bushing_bearing_stress,
+    coupling_design_torque,
+    pin_bending_stress,
+)
 
 
 @dataclass(frozen=True)
 class Check:
-    """One verification: ``value`` must not exceed ``limit`` (both in ``unit``)."""
+    """One verification: ``value`` must not exceed ``limit`` (both in the SI ``unit``).
+
+    ``display`` is the unit the check is shown in (the SI unit if empty); :meth:`message` is the one wording
+    of a failed check, used by every output.
+    """
 
     name: str
     value: float
     limit: float
     unit: str
     source: str = ""
+    display: str = ""
 
     @property
     def utilisation(self) -> float:
@@ -28,7 +49,23 @@ class Check:
 
     @property
     def passed(self) -> bool:
-        return self.value <= self.limit * (1.0 + 1e-12)
+        return bool(self.value <= self.limit * (1.0 + 1e-12))
+
+    def shown(self) -> tuple[float, float, str]:
+        """(value, limit, unit) in the display unit."""
+        unit = self.display or self.unit
+        if unit == self.unit:
+            return self.value, self.limit, unit
+        from ..results.labels import display_factor
+
+        f = display_factor(self.unit, unit)
+        return self.value * f, self.limit * f, unit
+
+    def message(self) -> str:
+        """``"Screw speed n <= k/sqrt(D): 150 rpm > limit 100.6 rpm"``: the wording of a failed check."""
+        value, limit, unit = self.shown()
+        u = f" {unit}" if unit else ""
+        return f"{self.name}: {value:.4g}{u} > limit {limit:.4g}{u}"
 
 
 # --------------------------------------------------------------------------------------------- torque
@@ -37,10 +74,25 @@ class Check:
 def torque_from_power(power: float, speed_rpm: float) -> float:
     """Shaft torque T = P/ω [N·m] (seed 004, eq 2.85: T = 9.55·10⁶·P/n with T in N·mm, P in kW).
 
-    power P [W], speed_rpm n [rpm] (> 0).
+    Parameters
+    ----------
+    power : float or array
+        Shaft power P [W], >= 0.
+    speed_rpm : float or array
+        Screw speed n [rpm], > 0.
+
+    Returns
+    -------
+    float or array
+        T [N·m].
+
+    Examples
+    --------
+    >>> round(torque_from_power(1123.0, 101.0) * 1000, 2)  # seed 004, eq 2.90: 106 184.65 with 9.55e6 for 30e6/π
+    106176.83
     """
-    if speed_rpm <= 0:
-        raise InputError(f"The screw speed must be > 0 rpm; got {speed_rpm:g} rpm.")
+    if np.any(np.asarray(speed_rpm) <= 0):
+        raise InputError(f"The screw speed must be > 0 rpm; got {np.min(speed_rpm):g} rpm.")
     return power / (speed_rpm * 2.0 * math.pi / 60.0)
 
 
@@ -48,34 +100,87 @@ def torque_from_power(power: float, speed_rpm: float) -> float:
 
 
 def helix_angle(pitch: float, radius: float) -> float:
-    """Helix (lead) angle α [rad] at radius R: tan α = S/(2πR) (seed 004, eq 2.88, corrected).
+    """Helix (lead) angle α at radius R: tan α = S/(2πR) [rad] (seed 004, eq 2.88, corrected).
 
-    pitch S [m], radius R [m]. The paper substitutes the drive power (1.123) for the pitch and gets
-    α = 0°8′46″; with the real pitch 160 mm and R = 70 mm, α = 19.99°.
+    Parameters
+    ----------
+    pitch : float or array
+        Pitch S [m], > 0.
+    radius : float or array
+        Radius R [m], > 0 (0.3…0.4·D where the material's friction force acts, eq 2.87).
+
+    Returns
+    -------
+    float or array
+        α [rad], 0 < α < π/2. The paper substitutes the drive power (1.123) for the pitch and gets
+        α = 0°8′46″; with the real pitch 160 mm and R = 70 mm, α = 19.99°.
+
+    Examples
+    --------
+    >>> round(math.degrees(helix_angle(0.160, 0.070)), 4)
+    19.9905
     """
-    return math.atan(pitch / (2.0 * math.pi * radius))
+    return np.arctan(pitch / (2.0 * math.pi * radius))
 
 
 def axial_force(torque: float, radius: float, helix: float, friction_coefficient: float) -> float:
     """Axial force on the screw F_a = T/(R·tan(α + γ)), tan γ = f [N] (seed 004, eq 2.86).
 
-    torque T [N·m], radius R [m] where the material's friction force acts (0.3…0.4·D, eq 2.87),
-    helix α [rad] at R, friction_coefficient f [-] of material on flight. Valid for α + γ < 90°.
+    Parameters
+    ----------
+    torque : float or array
+        Screw torque T [N·m].
+    radius : float or array
+        Radius R [m] where the material's friction force acts, R = (0.3…0.4)·D (seed 004, eq 2.87).
+    helix : float or array
+        Helix angle α at R [rad] (:func:`helix_angle`).
+    friction_coefficient : float
+        Friction coefficient f of the material on the flight [-].
+
+    Returns
+    -------
+    float or array
+        F_a [N]. Valid for α + γ < 90° (otherwise the screw is self-locking: :class:`InputError`).
+
+    Examples
+    --------
+    >>> round(float(axial_force(106.18465, 0.070, math.atan(0.160 / (2 * math.pi * 0.070)), 1.0)), 2)  # 707.66 N
+    707.66
     """
-    gamma = math.atan(friction_coefficient)
-    if helix + gamma >= math.pi / 2:
+    gamma = np.arctan(friction_coefficient)
+    if np.any(np.asarray(helix + gamma) >= math.pi / 2):
         raise InputError(
             f"The helix angle plus the friction angle must be < 90 deg; got "
-            f"{math.degrees(helix):.4g} + {math.degrees(gamma):.4g} deg."
+            f"{np.degrees(np.max(helix)):.4g} + {np.degrees(np.max(gamma)):.4g} deg."
         )
-    return torque / (radius * math.tan(helix + gamma))
+    return torque / (radius * np.tan(helix + gamma))
 
 
 def lateral_load(torque: float, span: float, radius_factor: float, diameter: float, length: float) -> float:
     """Horizontal (lateral) load on one span of the screw P_n = 2·T·l/(k·D·L) [N] (seed 004, eq 2.91).
 
-    torque T [N·m], span l [m] between hangers, radius_factor k [-] (0.7…0.8), diameter D [m],
-    length L [m].
+    Parameters
+    ----------
+    torque : float or array
+        Torque T [N·m].
+    span : float
+        Span l between hangers [m].
+    radius_factor : float
+        k [-], 0.7…0.8 (seed 004).
+    diameter : float or array
+        Screw diameter D [m].
+    length : float
+        Conveyor length L [m].
+
+    Returns
+    -------
+    float or array
+        P_n [N].
+
+    Examples
+    --------
+    >>> round(lateral_load(103.86429, 3.0, 0.7, 0.2, 21.0), 4)  # seed 004, eq 2.91: 211.96 N
+    211.9679
     """
     return 2.0 * torque * span / (radius_factor * diameter * length)
 
@@ -83,9 +188,31 @@ def lateral_load(torque: float, span: float, radius_factor: float, diameter: flo
 def distributed_loads(axial: float, lateral: float, torque: float, span: float, length: float) -> dict:
     """Loads spread along the screw (seed 004, eqs 2.92-2.94).
 
-    p_d = F_a/L [N/m] (the paper calls it "vertical"; it is the axial force per length),
-    p_n = P_n/l [N/m] (printed "P_n/1"), m_0 = T/L [N·m/m]. axial F_a [N], lateral P_n [N], torque T [N·m],
-    span l [m], length L [m].
+    p_d = F_a/L [N/m] (the paper calls it "vertical"; it is the axial force per length), p_n = P_n/l [N/m]
+    (printed "P_n/1"), m_0 = T/L [N·m/m].
+
+    Parameters
+    ----------
+    axial : float or array
+        Axial force F_a [N].
+    lateral : float or array
+        Lateral load per span P_n [N].
+    torque : float or array
+        Torque T [N·m].
+    span : float
+        Span l [m].
+    length : float
+        Conveyor length L [m].
+
+    Returns
+    -------
+    dict
+        ``p_d``, ``p_n``, ``m_0``.
+
+    Examples
+    --------
+    >>> {k: round(v, 4) for k, v in distributed_loads(1509.646, 211.96, 103.86429, 3.0, 21.0).items()}
+    {'p_d': 71.8879, 'p_n': 70.6533, 'm_0': 4.9459}
     """
     return {"p_d": axial / length, "p_n": lateral / span, "m_0": torque / length}
 
@@ -94,11 +221,29 @@ def distributed_loads(axial: float, lateral: float, torque: float, span: float, 
 
 
 def polar_moment_tube(outer_diameter: float, inner_diameter: float = 0.0) -> float:
-    """Polar second moment of a tube J_p = π(d_o⁴ − d_i⁴)/32 [m⁴]."""
-    if not outer_diameter > inner_diameter >= 0:
+    """Polar second moment of a tube J_p = π(d_o⁴ − d_i⁴)/32 [m⁴].
+
+    Parameters
+    ----------
+    outer_diameter : float or array
+        d_o [m], > d_i.
+    inner_diameter : float or array
+        d_i [m], >= 0 (0 for a solid shaft).
+
+    Returns
+    -------
+    float or array
+        J_p [m⁴]. Source: elementary torsion of circular sections (any strength-of-materials text).
+
+    Examples
+    --------
+    >>> round(polar_moment_tube(0.2, 0.1) * 1e4, 6)  # seed 004 uses 0.1·D⁴(1 − η⁴) = 1.5e-4
+    1.472622
+    """
+    if not (np.all(np.asarray(outer_diameter) > inner_diameter) and np.all(np.asarray(inner_diameter) >= 0)):
         raise InputError(
-            f"The pipe needs outer diameter > inner diameter >= 0; got {outer_diameter:g} m and "
-            f"{inner_diameter:g} m."
+            f"The pipe needs outer diameter > inner diameter >= 0; got {np.min(outer_diameter):g} m and "
+            f"{np.max(inner_diameter):g} m."
         )
     return math.pi * (outer_diameter**4 - inner_diameter**4) / 32.0
 
@@ -114,64 +259,56 @@ def polar_moment_seed(diameter: float, eta: float) -> float:
 
 def torsion_angle_distributed(torque_per_length: float, length: float, shear_modulus: float,
                               polar_moment: float) -> float:
-    """Twist [rad] of a shaft of length L loaded by a uniform torque m_0: φ = m_0·L²/(2·G·J_p).
+    """Twist of a shaft of length L loaded by a uniform torque m_0: φ = m_0·L²/(2·G·J_p) [rad].
 
-    Seed 004's own integral (φ = ∫M_z dz/(GJ_p), M_z = m_0·z). The printed number 7.3·10⁻⁶ rad uses D²
-    for D⁴ and drops the ½; correctly, with the paper's J_p = 0.1·0.2⁴·(1 − 0.5⁴), φ = 9.10·10⁻⁵ rad.
-    torque_per_length m_0 [N·m/m], length L [m], shear_modulus G [Pa], polar_moment J_p [m⁴].
+    Seed 004's own integral (φ = ∫M_z dz/(GJ_p), M_z = m_0·z). The printed number 7.3·10⁻⁶ rad uses D² for
+    D⁴ and drops the ½; correctly, with the paper's J_p = 0.1·0.2⁴·(1 − 0.5⁴), φ = 9.10·10⁻⁵ rad.
+
+    Parameters
+    ----------
+    torque_per_length : float or array
+        m_0 [N·m/m].
+    length : float
+        L [m].
+    shear_modulus : float
+        G [Pa].
+    polar_moment : float or array
+        J_p [m⁴].
+
+    Returns
+    -------
+    float or array
+        φ [rad].
+
+    Examples
+    --------
+    >>> round(torsion_angle_distributed(4.9457, 21.0, 8e10, 0.1 * 0.2**4 * (1 - 0.5**4)) * 1e5, 4)
+    9.0877
     """
     return torque_per_length * length**2 / (2.0 * shear_modulus * polar_moment)
 
 
 def shear_stress_tube(torque: float, outer_diameter: float, inner_diameter: float = 0.0) -> float:
-    """Torsional shear stress τ = T·(d_o/2)/J_p [Pa] of a tube or solid shaft."""
+    """Torsional shear stress τ = T·(d_o/2)/J_p [Pa] of a tube or solid shaft.
+
+    Parameters
+    ----------
+    torque : float or array
+        T [N·m].
+    outer_diameter, inner_diameter : float or array
+        d_o > d_i >= 0 [m].
+
+    Returns
+    -------
+    float or array
+        τ at the outer surface [Pa]. Source: elementary torsion of circular sections.
+
+    Examples
+    --------
+    >>> round(shear_stress_tube(100.0, 0.1) / 1e6, 6)
+    0.509296
+    """
     return torque * outer_diameter / 2.0 / polar_moment_tube(outer_diameter, inner_diameter)
-
-
-# ----------------------------------------------------------------- screw stress from pressure (2.46-2.54)
-
-
-def screw_torque_from_pressure(p_max: float, span: float, r1: float, r2: float, tan_beta: float,
-                               pitch: float) -> float:
-    """Torque at the dangerous section M_x = (p_max·l/2)·tan β·(R1³ − R2³)/3·(2π/t) [N·m].
-
-    Seed 004, eq 2.46 corrected to agree with 2.35 (m_x = p·tan β·(R1³ − R2³)/3·2π/t): the printed
-    (p_max·l/2)·(R1³ − R2³)/2·a lacks tan β and has /2 for /3 (printed/correct = 3/(2 tan β)).
-    p_max [Pa], span l [m], r1 = R1, r2 = R2 [m], tan_beta [-], pitch t [m].
-    """
-    return p_max * span / 2.0 * tan_beta * (r1**3 - r2**3) / 3.0 * 2.0 * math.pi / pitch
-
-
-def screw_axial_from_pressure(p_max: float, span: float, r1: float, r2: float, pitch: float) -> float:
-    """Axial force S = (p_max·l/2)·(R1² − R2²)/2·(2π/t) [N] (seed 004, eq 2.47)."""
-    return p_max * span / 2.0 * (r1**2 - r2**2) / 2.0 * 2.0 * math.pi / pitch
-
-
-def screw_axial_from_torque(torque: float, r1: float, r2: float, tan_beta: float) -> float:
-    """Axial force S = 3·M_x·(R1 + R2)/(2·tan β·(R1² + R1·R2 + R2²)) [N] (seed 004, eq 2.52 corrected).
-
-    The print has R1² + R1² + R2² for R1² + R1R2 + R2² (2.51 inverted).
-    """
-    return 3.0 * torque * (r1 + r2) / (2.0 * tan_beta * (r1**2 + r1 * r2 + r2**2))
-
-
-def screw_equivalent_stress(torque: float, r1: float, r2: float, tan_beta: float) -> float:
-    """Tresca equivalent stress of the screw core σ_td = √(σ² + 4τ²) [Pa] (seed 004, eqs 2.48-2.53).
-
-    σ = S/F, F = πR2², τ = M_x/W_c, W_c = πR2³/2 (solid core of radius R2), S from eq 2.52 (corrected):
-    σ_td = M_x·√([3(R1 + R2)/(2 tan β (R1² + R1R2 + R2²)·πR2²)]² + 16/(πR2³)²).
-    torque M_x [N·m], r1 = R1, r2 = R2 [m], tan_beta [-].
-    """
-    sigma = screw_axial_from_torque(torque, r1, r2, tan_beta) / (math.pi * r2**2)
-    tau = torque / (math.pi * r2**3 / 2.0)
-    return math.sqrt(sigma**2 + 4.0 * tau**2)
-
-
-def screw_equivalent_stress_from_pressure(p_max: float, span: float, r1: float, r2: float,
-                                          tan_beta: float, pitch: float) -> float:
-    """σ_td from the flight pressure (seed 004, eq 2.54): eq 2.53 with M_x from the corrected eq 2.46."""
-    m_x = screw_torque_from_pressure(p_max, span, r1, r2, tan_beta, pitch)
-    return screw_equivalent_stress(m_x, r1, r2, tan_beta)
 
 
 # ------------------------------------------------------------------------- bending between hangers
@@ -186,7 +323,7 @@ def screw_mass_per_length(diameter: float, pipe_outer: float, pipe_inner: float,
     """
     pipe = density * math.pi / 4.0 * (pipe_outer**2 - pipe_inner**2)
     r_mean = (diameter + pipe_outer) / 4.0
-    stretch = 1.0 / math.cos(helix_angle(pitch, r_mean))
+    stretch = 1.0 / np.cos(helix_angle(pitch, r_mean))
     flight = density * flight_thickness * math.pi / 4.0 * (diameter**2 - pipe_outer**2) * stretch / pitch
     return pipe + flight
 
@@ -194,65 +331,162 @@ def screw_mass_per_length(diameter: float, pipe_outer: float, pipe_inner: float,
 def span_bending_moment(load_per_length: float, span: float) -> float:
     """Largest bending moment of a simply supported span under a uniform load M = q·l²/8 [N·m].
 
-    Conservative for a continuous screw over several hangers (the continuous-beam value is q·l²/10…q·l²/12).
+    Parameters
+    ----------
+    load_per_length : float or array
+        q [N/m].
+    span : float
+        l [m].
+
+    Returns
+    -------
+    float or array
+        M [N·m]. Conservative for a continuous screw over several hangers (q·l²/10…q·l²/12 there).
+
+    Examples
+    --------
+    >>> span_bending_moment(100.0, 3.0)
+    112.5
     """
     return load_per_length * span**2 / 8.0
 
 
 def span_deflection(load_per_length: float, span: float, elastic_modulus: float, second_moment: float) -> float:
-    """Mid-span deflection of a simply supported span δ = 5·q·l⁴/(384·E·I) [m]."""
+    """Mid-span deflection of a simply supported span δ = 5·q·l⁴/(384·E·I) [m].
+
+    Parameters
+    ----------
+    load_per_length : float or array
+        q [N/m].
+    span : float
+        l [m].
+    elastic_modulus : float
+        E [Pa].
+    second_moment : float or array
+        I [m⁴].
+
+    Returns
+    -------
+    float or array
+        δ [m]. Source: Timoshenko & Gere, *Mechanics of Materials*, simply supported beam, uniform load.
+
+    Examples
+    --------
+    >>> round(span_deflection(100.0, 3.0, 2.1e11, 1e-6) * 1000, 4)
+    0.5022
+    """
     return 5.0 * load_per_length * span**4 / (384.0 * elastic_modulus * second_moment)
 
 
-# ------------------------------------------------------------------------- elastic-pin coupling
+# ------------------------------------------------------------------------- pipe and flight checks
 
 
-def coupling_design_torque(torque: float, service_factor: float) -> float:
-    """Coupling design torque T_t = k·T [N·m] (seed 004, eq 2.97; k = 1.8 for a screw conveyor)."""
-    return service_factor * torque
+def twist_rate(torque, shear_modulus, polar_moment):
+    """Rate of twist of the pipe at the drive, θ' = T/(G·J_p) [rad/m].
 
+    Parameters
+    ----------
+    torque : float or array
+        Screw torque T [N·m].
+    shear_modulus : float
+        Shear modulus G [Pa].
+    polar_moment : float or array
+        Polar second moment J_p of the pipe [m⁴] (:func:`polar_moment_tube`).
 
-def bushing_bearing_stress(torque: float, service_factor: float, pins: int, pin_circle: float,
-                           pin_diameter: float, bushing_length: float) -> float:
-    """Bearing stress of the rubber bushes σ_d = 2·k·T/(Z·D0·d_c·l3) [Pa] (seed 004, eq 2.98)."""
-    return 2.0 * service_factor * torque / (pins * pin_circle * pin_diameter * bushing_length)
+    Returns
+    -------
+    float or array
+        θ' [rad/m]. Source: elementary torsion of a circular tube (seed 004 integrates the same law along the
+        screw, eq after 2.94). Valid for linear elastic tubes, G > 0.
 
-
-def pin_bending_stress(torque: float, service_factor: float, pins: int, pin_circle: float,
-                       pin_diameter: float, pin_lever: float) -> float:
-    """Bending stress of the coupling pins σ_u = k·T·l0/(0.1·d_c³·D0·Z) [Pa] (seed 004, eq 2.98).
-
-    pin_lever l0 = l1 + l2/2 [m] (the paper derives 41.5 mm but substitutes 62 mm).
+    Examples
+    --------
+    >>> round(twist_rate(100.0, 80e9, 1e-6), 9)
+    0.00125
     """
-    return service_factor * torque * pin_lever / (0.1 * pin_diameter**3 * pin_circle * pins)
+    return torque / (shear_modulus * polar_moment)
 
 
-# ----------------------------------------------------------------------------------- base bolts
+def pipe_equivalent_stress(load_per_length, span, axial, torque, outer_diameter, inner_diameter):
+    """Tresca equivalent stress in the pipe between two hangers σ_eq = √((σ_b + σ_a)² + 4τ²) [Pa].
 
+    σ_b = (q·l²/8)·(d_o/2)/I (the simply supported span, I = J_p/2), σ_a = F_a/A, τ = T·(d_o/2)/J_p.
 
-def base_bolt_max_force(belt_force: float, belt_preload: float, lever: float, a: float, b: float) -> float:
-    """Largest shear force on one of four base bolts under the belt pull [N] (seed 004, eqs 2.72-2.77).
+    Parameters
+    ----------
+    load_per_length : float or array
+        Lateral load q on the span [N/m] (weight of pipe and flight combined with p_n).
+    span : float
+        Hanger spacing l [m].
+    axial : float or array
+        Axial force F_a [N].
+    torque : float or array
+        Torque T [N·m].
+    outer_diameter, inner_diameter : float or array
+        Pipe diameters d_o > d_i >= 0 [m].
 
-    F′ = F_r + F_0 (2.72), M = (L + a/2)·F′ (2.73), F_Z = F′/4 (2.74), r = ½√(a² + (2b)²) (2.76),
-    F_M = M·r/Σr_i² = M/(4r) (2.75), F_max² = F_Z² + F_M² + 2·F_Z·F_M·cos θ, cos θ = a/(2r) (2.77).
-    belt_force F_r [N], belt_preload F_0 [N], lever L [m] from the belt line to the bolt group,
-    a, b [m] bolt spacings as in the seed's figure 3.2.
+    Returns
+    -------
+    float or array
+        σ_eq [Pa]. Source: seed 004, eqs 2.48-2.49 (σ_td = √(σ² + 4τ²)), applied to the pipe section.
+
+    Examples
+    --------
+    >>> round(float(pipe_equivalent_stress(0.0, 3.0, 0.0, 100.0, 0.1, 0.0)) / 1e6, 6)  # pure torsion: 2·τ
+    1.018592
     """
-    f = belt_force + belt_preload
-    moment = (lever + a / 2.0) * f
-    r = 0.5 * math.sqrt(a**2 + (2.0 * b) ** 2)
-    f_z = f / 4.0
-    f_m = moment * r / (4.0 * r**2)
-    cos_t = a / (2.0 * r)
-    return math.sqrt(f_z**2 + f_m**2 + 2.0 * f_z * f_m * cos_t)
+    jp = polar_moment_tube(outer_diameter, inner_diameter)
+    area = math.pi / 4.0 * (outer_diameter**2 - inner_diameter**2)
+    sigma_b = span_bending_moment(load_per_length, span) * (outer_diameter / 2.0) / (jp / 2.0)
+    sigma_a = axial / area
+    tau = shear_stress_tube(torque, outer_diameter, inner_diameter)
+    return np.sqrt((sigma_b + sigma_a) ** 2 + 4.0 * tau**2)
 
 
-def bolt_minor_diameter_required(force: float, allowable_tensile: float, friction: float = 0.2,
-                                 safety: float = 2.0, interfaces: int = 1) -> float:
-    """Minor diameter of a preloaded bolt carrying ``force`` in shear by friction [m] (seed 004, 2.78-2.80).
+def flight_pressure(axial, diameter, pipe_outer_diameter):
+    """Mean pressure on one flight turn carrying the whole axial force, p = F_a/(π(R1² − R2²)) [Pa].
 
-    V = k·F/(i·f) (2.79), d3 ≥ √(1.3·4·V/(π·[σ_k])) (2.78; 1.3 for the torsion while tightening).
-    force F [N], allowable_tensile [σ_k] [Pa], friction f [-], safety k [-], interfaces i [-].
+    Parameters
+    ----------
+    axial : float or array
+        Axial force F_a [N].
+    diameter : float or array
+        Screw (flight) diameter D = 2·R1 [m].
+    pipe_outer_diameter : float or array
+        Pipe diameter d_o = 2·R2 [m] (< D).
+
+    Returns
+    -------
+    float or array
+        p [Pa]. Source: seed 004, eq 2.56 corrected (N = p·π(R1² − R2²)); conservative, since the axial force is
+        in fact shared by the turns in contact with the material.
+
+    Examples
+    --------
+    >>> round(flight_pressure(1000.0, 0.2, 0.1), 3)
+    42441.318
     """
-    preload = safety * force / (interfaces * friction)
-    return math.sqrt(1.3 * 4.0 * preload / (math.pi * allowable_tensile))
+    return axial / (math.pi * ((diameter / 2.0) ** 2 - (pipe_outer_diameter / 2.0) ** 2))
+
+
+def lift_height(length, inclination):
+    """Lift of an inclined screw H = L·sin β [m] (seed 004, worked example: 21·sin 10° = 3.65 m).
+
+    Parameters
+    ----------
+    length : float
+        Conveyor (screw) length L [m].
+    inclination : float
+        Inclination β [rad], 0 <= β < π/2.
+
+    Returns
+    -------
+    float
+        H [m].
+
+    Examples
+    --------
+    >>> round(lift_height(21.0, math.radians(10.0)), 5)
+    3.64661
+    """
+    return length * math.sin(inclination)

@@ -8,6 +8,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from ..errors import InputError, check_positive
 from . import tables
 
@@ -17,36 +19,91 @@ _MIN = 60.0
 
 def volume_capacity(diameter: float, pitch: float, speed_rpm: float, filling: float,
                     inclination_factor: float = 1.0) -> float:
-    """Volumetric capacity of a screw conveyor [m³/s].
+    """Volumetric capacity of a screw conveyor Q_v = (π/4)·D²·S·n·φ·C/60 [m³/s].
 
-    Q_v = (π/4)·D²·S·n·φ·C / 60 (seed 004, eq 2.83 divided by ρ; Q in m³/h there is 60·π/4·D²·S·n·φ·C).
+    Seed 004, eq 2.83 divided by ρ (Q in t/h there is 60·(π/4)·D²·S·n·φ·C·ρ); the whole flight cross-section
+    (no pipe deduction), as in the seed and in Alexandrov, *Materials Handling Equipment*.
 
-    diameter D [m], pitch S [m], speed_rpm n [rpm], filling φ [-] (0 < φ ≤ 1), inclination_factor C [-].
-    Valid for control-fed screws with 0 ≤ β ≤ 20°; the whole flight cross-section (no pipe deduction),
-    as in the seed and in Alexandrov.
+    Parameters
+    ----------
+    diameter : float or array
+        Screw diameter D [m].
+    pitch : float or array
+        Pitch S [m].
+    speed_rpm : float or array
+        Speed n [rpm].
+    filling : float or array
+        Filling coefficient φ [-], 0 < φ <= 1.
+    inclination_factor : float
+        C [-] (1.0 horizontal … 0.65 at 20°).
+
+    Returns
+    -------
+    float or array
+        Q_v [m³/s]. Valid for control-fed screws with 0 <= β <= 20°.
+
+    Examples
+    --------
+    >>> round(volume_capacity(0.2, 0.16, 100.62306, 0.4, 0.8) * 3600, 4)  # seed 004: 9.71 m³/h
+    9.7111
     """
     return math.pi / 4.0 * diameter**2 * pitch * speed_rpm / _MIN * filling * inclination_factor
 
 
 def speed_limit(diameter: float, speed_coefficient: float) -> float:
-    """Highest recommended screw speed [rpm]: n = k/√D (seed 004, after eq 2.83).
+    """Highest recommended screw speed n = k/√D [rpm] (seed 004, after eq 2.83).
 
-    diameter D [m], speed_coefficient k [rpm·m^0.5] (60 light non-abrasive, 45 heavy non-abrasive,
-    30 heavy abrasive; ``data/speed_coefficient.csv``).
+    Parameters
+    ----------
+    diameter : float or array
+        D [m].
+    speed_coefficient : float
+        k [rpm·m^0.5]: 60 light non-abrasive, 45 heavy non-abrasive, 30 heavy abrasive
+        (``data/speed_coefficient.csv``; Alexandrov).
+
+    Returns
+    -------
+    float or array
+        n [rpm].
+
+    Examples
+    --------
+    >>> round(float(speed_limit(0.2, 45.0)), 3)  # seed 004: 101 rpm
+    100.623
     """
-    return speed_coefficient / math.sqrt(diameter)
+    return speed_coefficient / np.sqrt(diameter)
 
 
 def diameter_for_duty(volume_flow: float, pitch_ratio: float, speed_coefficient: float, filling: float,
                       inclination_factor: float = 1.0) -> float:
-    """Smallest screw diameter [m] that carries ``volume_flow`` at the speed limit n = k/√D.
+    """Smallest screw diameter that carries ``volume_flow`` at the speed limit n = k/√D [m].
 
     With S = s·D and n = k/√D, eq 2.83 gives Q = 15π·s·k·φ·C·D^{5/2} [m³/h], so
-    D = (Q/(15π·s·k·φ·C))^{2/5} (seed 004, eq 2.84; 37.7 = 15π·0.8 there).
+    D = (Q/(15π·s·k·φ·C))^{2/5} (seed 004, eq 2.84; 37.7 = 15π·0.8 there). Seed 004 prints the mass flow divided
+    by ρ twice over (ρ cancels) and labels k = 45 as the filling; the result 164.96 mm is the same.
 
-    volume_flow Q [m³/s], pitch_ratio s = S/D [-], speed_coefficient k [rpm·m^0.5], filling φ [-],
-    inclination_factor C [-]. Seed 004 prints the mass flow divided by ρ twice over ("ρ" cancels) and
-    labels k = 45 as the filling; the result 164.96 mm is the same.
+    Parameters
+    ----------
+    volume_flow : float
+        Q [m³/s].
+    pitch_ratio : float
+        s = S/D [-].
+    speed_coefficient : float
+        k [rpm·m^0.5].
+    filling : float
+        φ [-].
+    inclination_factor : float
+        C [-].
+
+    Returns
+    -------
+    float
+        D [m].
+
+    Examples
+    --------
+    >>> round(diameter_for_duty(6.0 / 3600, 0.8, 45.0, 0.4, 0.8) * 1000, 2)  # seed 004, eq 2.84
+    164.96
     """
     q_h = volume_flow * 3600.0
     return (q_h / (15.0 * math.pi * pitch_ratio * speed_coefficient * filling * inclination_factor)) ** 0.4

@@ -17,17 +17,17 @@ Corrections to the printed seed (each checked against the exact solution):
 
 from __future__ import annotations
 
-import math
+import numpy as np
 
 from ..errors import InputError
 
 
 def _check(p: float, r1: float, r2: float, mu: float) -> None:
-    if not (r1 > r2 > 0):
+    if not (np.all(np.asarray(r1) > r2) and np.all(np.asarray(r2) > 0)):
         raise InputError(f"The flight needs outer radius > pipe radius > 0; got R1 = {r1:g} m, R2 = {r2:g} m.")
     if not 0.0 <= mu < 0.5:
         raise InputError(f"The Poisson ratio must be in [0, 0.5); got {mu:g}.")
-    if not math.isfinite(p):
+    if not np.all(np.isfinite(p)):
         raise InputError(f"The flight pressure must be a finite number; got {p}.")
 
 
@@ -37,14 +37,19 @@ def plate_coefficient(alpha: float, mu: float) -> float:
     A = [1 + 3μ − α⁻⁴(1 − μ) − 4μα⁻² − 4(1 + μ) ln α] / [1 + μ + α⁻²(1 − μ)]
 
     alpha = R1/R2 [-] (> 1), mu Poisson's ratio [-].
+
+    Examples
+    --------
+    >>> round(float(plate_coefficient(2.0, 0.3)), 6)  # seed-reproduction test vector
+    -1.388553
     """
-    num = 1 + 3 * mu - alpha**-4 * (1 - mu) - 4 * mu * alpha**-2 - 4 * (1 + mu) * math.log(alpha)
+    num = 1 + 3 * mu - alpha**-4 * (1 - mu) - 4 * mu * alpha**-2 - 4 * (1 + mu) * np.log(alpha)
     return num / (1 + mu + alpha**-2 * (1 - mu))
 
 
 def _particular(r: float, p: float, r1: float, r2: float) -> tuple[float, float]:
     """F(r) and F'(r) of the particular slope θ_p = −(p/2D)·F(r)/r (double integral of 2.58)."""
-    lnr = math.log(r / r2)
+    lnr = np.log(r / r2)
     f = r**4 / 8 - r2**2 * r**2 / 4 + r2**4 / 8 - r1**2 * r**2 / 2 * lnr + r1**2 * r**2 / 4 - r1**2 * r2**2 / 4
     fp = r**3 / 2 - r2**2 * r / 2 - r1**2 * r * lnr
     return f, fp
@@ -59,6 +64,12 @@ def flight_moments(r: float, p: float, r1: float, r2: float, mu: float = 0.3) ->
 
     r [m] with R2 ≤ r ≤ R1, p pressure [Pa], r1 = R1 flight radius [m], r2 = R2 pipe radius [m], mu [-].
     Sign: with p > 0 the clamped-edge M_r is negative (the seed's convention).
+
+    Examples
+    --------
+    >>> m_r, m_t = flight_moments(0.05, 1e6, 0.1, 0.05, 0.3)  # at the pipe: M_τ = μ·M_r
+    >>> round(float(m_r), 3), round(float(m_t), 3)
+    (-1735.691, -520.707)
     """
     _check(p, r1, r2, mu)
     f1, fp1 = _particular(r1, p, r1, r2)
@@ -84,7 +95,7 @@ def flight_moments_seed(r: float, p: float, r1: float, r2: float, mu: float = 0.
     a = r1 / r2
     lam = r / r2
     big_a = plate_coefficient(a, mu)
-    ln = math.log(lam)
+    ln = np.log(lam)
     m_r = (p * r1**2 / 16) * big_a * (1 + lam**-2 + mu - mu * lam**-2) - (p * r**2 / 16) * (
         3 + mu - lam**-4 * (1 - mu) * (1 - 2 * a**2) - 2 * lam**-2 * (1 + mu + a**2 - mu * a**2)
         - 4 * (1 + mu) * a**2 * lam**-2 * ln
@@ -105,13 +116,18 @@ def flight_edge_moments(p: float, r1: float, r2: float, mu: float = 0.3) -> dict
                           − 4(1 + μ) ln α]   (print has ln λ for ln α)
 
     p [Pa], r1 = R1 [m], r2 = R2 [m], mu [-]. Keys: ``mr_inner``, ``mt_inner``, ``mr_outer``, ``mt_outer``.
+
+    Examples
+    --------
+    >>> round(float(flight_edge_moments(1e6, 0.1, 0.05, 0.3)["mt_outer"]), 4)
+    -188.4416
     """
     _check(p, r1, r2, mu)
     a = r1 / r2
     big_a = plate_coefficient(a, mu)
     mr_in = p * r1**2 / 8 * big_a
     mt_out = (p * r1**2 / 16) * big_a * (1 + mu - a**-2 * (1 - mu)) - (p * r1**2 / 16) * (
-        3 + mu + a**-4 * (1 - mu) - 4 * a**-2 - 4 * (1 + mu) * math.log(a)
+        3 + mu + a**-4 * (1 - mu) - 4 * a**-2 - 4 * (1 + mu) * np.log(a)
     )
     return {"mr_inner": mr_in, "mt_inner": mu * mr_in, "mr_outer": 0.0, "mt_outer": mt_out}
 
@@ -121,8 +137,16 @@ def flight_max_stress(p: float, r1: float, r2: float, thickness: float, mu: floa
 
     The clamped edge (radial moment at the pipe) governs for all practical α = R1/R2.
     thickness h [m].
+
+    Examples
+    --------
+    >>> round(float(flight_max_stress(1e6, 0.1, 0.05, 0.004, 0.3)) / 1e6, 2)  # 6·|M_r(R2)|/h²
+    650.88
     """
-    if thickness <= 0:
-        raise InputError(f"The flight thickness must be > 0 m; got {thickness:g} m.")
+    if np.any(np.asarray(thickness) <= 0):
+        raise InputError(f"The flight thickness must be > 0 m; got {np.min(thickness):g} m.")
     m = flight_edge_moments(p, r1, r2, mu)
-    return max(abs(v) for v in m.values()) * 6.0 / thickness**2
+    largest = np.abs(m["mr_inner"])
+    for key in ("mt_inner", "mr_outer", "mt_outer"):
+        largest = np.maximum(largest, np.abs(m[key]))
+    return largest * 6.0 / thickness**2

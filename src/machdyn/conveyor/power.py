@@ -22,23 +22,62 @@ ISO7119_MAX_INCLINATION = math.radians(20.0)
 
 
 def power_textbook_360(mass_flow: float, length: float, lift: float, resistance: float) -> float:
-    """Shaft power [W] by the textbook rule as printed in seed 004, eq 2.81-2.82.
+    """Shaft power by the textbook rule as printed in seed 004, eqs 2.81-2.82 [W].
 
-    P = Q·H/360 + C0·Q·L/360 [kW] with Q in t/h, L and H in m, i.e. g taken as 10 m/s².
+    P = Q·H/360 + C0·Q·L/360 [kW] with Q in t/h, L and H in m, i.e. g taken as 10 m/s². The paper defines L as
+    the *horizontal* length but substitutes the inclined length (21 m); pass whichever is intended.
 
-    mass_flow [kg/s], length L [m], lift H [m] (H = L·sin β), resistance C0 [-] (2.5 for salt).
-    The paper defines L as the *horizontal* length but substitutes the inclined length (21 m);
-    pass whichever the user intends. With L = 21 m it reproduces the paper's 1.123 kW.
+    Parameters
+    ----------
+    mass_flow : float or array
+        Throughput [kg/s].
+    length : float
+        L [m].
+    lift : float
+        H [m] (H = L·sin β).
+    resistance : float
+        C0 [-] (2.5 for salt).
+
+    Returns
+    -------
+    float or array
+        P [W].
+
+    Examples
+    --------
+    >>> round(power_textbook_360(2.0, 21.0, 3.65, 2.5), 1)  # seed 004: 1.123 kW
+    1123.0
     """
     q_th = mass_flow * 3.6
     return 1000.0 * (q_th * lift / 360.0 + resistance * q_th * length / 360.0)
 
 
 def power_textbook_367(mass_flow: float, length: float, lift: float, resistance: float) -> float:
-    """Shaft power [W] by the usual textbook form P = Q·(C0·L + H)/367 [kW] (Q in t/h; 367 = 3600/g).
+    """Shaft power by the usual textbook form P = Q·(C0·L + H)/367 [kW] (Q in t/h; 367 = 3600/g), in W.
 
-    Source: Alexandrov, *Materials Handling Equipment*, screw conveyors (N = Q·(C0·L + H)/367).
-    mass_flow [kg/s], length L [m], lift H [m], resistance C0 [-]. Equal to m·g·(C0·L + H) in SI.
+    Source: Alexandrov, *Materials Handling Equipment* (Mir), screw conveyors (N = Q·(C0·L + H)/367). Equal to
+    m·g·(C0·L + H) in SI.
+
+    Parameters
+    ----------
+    mass_flow : float or array
+        Throughput m [kg/s].
+    length : float
+        L [m].
+    lift : float
+        H [m].
+    resistance : float
+        C0 [-].
+
+    Returns
+    -------
+    float or array
+        P [W].
+
+    Examples
+    --------
+    >>> round(power_textbook_367(25.447 / 3.6, 5.0, 0.3, 4.0) / 1000, 4)  # Alexandrov: 1.408 kW with the rounded 367
+    1.4072
     """
     return mass_flow * G * (resistance * length + lift)
 
@@ -60,13 +99,33 @@ def power_iso7119(mass_flow: float, length: float, inclination: float, diameter:
                   progress_resistance: float) -> Iso7119Power:
     """Drive power at the screw shaft by ISO 7119:1981, P = P_H + P_N + P_st.
 
-    P_H = I_m·L·λ·g/3600 [kW] (I_m in t/h)  → m·L·λ·g  [W]   progress of the material
-    P_N = D·L/20 [kW]                        → 50·D·L   [W]   screw running empty (D, L in m)
-    P_st = I_m·H·g/3600 [kW], H = L·sin β    → m·g·H    [W]   lift (negative for a descending screw)
+    P_H = I_m·L·λ·g/3600 [kW] (I_m in t/h) → m·L·λ·g [W], the progress of the material;
+    P_N = D·L/20 [kW] → 50·D·L [W], the screw running empty (D, L in m);
+    P_st = I_m·H·g/3600 [kW], H = L·sin β → m·g·H [W], the lift (negative for a descending screw).
 
-    mass_flow m [kg/s], length L [m] (conveyor length), inclination β [rad] (≤ 20°; the standard excludes
-    steeper and vertical screws), diameter D [m] (nominal), progress_resistance λ [-] (about 1.2…4;
-    ``data/resistance_coefficient.csv``).
+    Parameters
+    ----------
+    mass_flow : float or array
+        m [kg/s].
+    length : float
+        Conveyor length L [m].
+    inclination : float
+        β [rad], |β| <= 20° (the standard excludes steeper and vertical screws).
+    diameter : float or array
+        Nominal diameter D [m].
+    progress_resistance : float
+        λ [-], about 1.2…4 (``data/resistance_coefficient.csv``).
+
+    Returns
+    -------
+    Iso7119Power
+        The three parts [W] and their total.
+
+    Examples
+    --------
+    >>> r = power_iso7119(2.0, 21.0, 0.0, 0.2, 2.5)
+    >>> round(r.progress, 3), round(r.no_load, 3), round(r.total, 3)
+    (1029.698, 210.0, 1239.698)
     """
     if abs(inclination) > ISO7119_MAX_INCLINATION + 1e-12:
         raise InputError(
@@ -127,13 +186,43 @@ def power_cema(*, volume_flow: float, bulk_density: float, length: float, speed_
                diameter_factor: float, hanger_bearing_factor: float, material_factor: float,
                flight_factor: float = 1.0, paddle_factor: float = 1.0, efficiency: float = 1.0,
                lift: float = 0.0) -> CemaPower:
-    """CEMA 350 total horsepower: (HPf + HPm + HP_lift)·Fo/e.
+    """CEMA 350 total horsepower (HPf + HPm + HP_lift)·Fo/e.
 
-    HPf and HPm as in :func:`cema_friction_hp` and :func:`cema_material_hp`; Fo from the CEMA overload
-    chart for HPf + HPm + HP_lift < 5.2 hp (:func:`tables.cema_overload_factor`); e the drive efficiency.
-    CEMA's equations are for horizontal conveyors; for an inclined screw the lift power m·g·H is added
-    before the overload factor (machdyn's choice, stated in the report). volume_flow [m³/s],
-    bulk_density [kg/m³], length [m], speed_rpm [rpm], lift H [m].
+    HPf and HPm as in :func:`cema_friction_hp` and :func:`cema_material_hp`; Fo from the CEMA overload chart
+    for HPf + HPm + HP_lift < 5.2 hp (:func:`tables.cema_overload_factor`); e the drive efficiency. CEMA's
+    equations are for horizontal conveyors; for an inclined screw the lift power m·g·H is added before the
+    overload factor (machdyn's choice, stated in the report).
+
+    Parameters
+    ----------
+    volume_flow : float or array
+        [m³/s].
+    bulk_density : float
+        [kg/m³].
+    length : float
+        L [m].
+    speed_rpm : float or array
+        N [rpm].
+    diameter_factor, hanger_bearing_factor, material_factor : float or array
+        Fd, Fb, Fm [-] (CEMA 350 tables).
+    flight_factor, paddle_factor : float or array
+        Ff, Fp [-].
+    efficiency : float
+        e [-], 0 < e <= 1.
+    lift : float
+        H [m].
+
+    Returns
+    -------
+    CemaPower
+        Parts and total [hp]; ``total_watts`` [W].
+
+    Examples
+    --------
+    >>> r = power_cema(volume_flow=0.01, bulk_density=800.0, length=10.0, speed_rpm=50.0, diameter_factor=55.0,
+    ...                hanger_bearing_factor=1.7, material_factor=0.5)
+    >>> round(float(r.total_hp), 4)
+    2.2736
     """
     if not 0.0 < efficiency <= 1.0:
         raise InputError(f"The drive efficiency must be in (0, 1]; got {efficiency:g}.")

@@ -137,19 +137,58 @@ def cema_paddle_factor(paddles: int) -> float:
                   what="number of paddles per pitch")
 
 
-def cema_overload_factor(horsepower: float) -> float:
-    """CEMA 350 overload factor Fo for (HPf + HPm) [hp].
+def cema_overload_factor(horsepower):
+    """CEMA 350 overload factor Fo for (HPf + HPm) [hp] (a float or an array).
 
     The CEMA chart is a straight line on a log scale of horsepower from Fo = 3.0 at 0.2 hp to Fo = 1.0 at
     5.2 hp; Fo = 3.0 below 0.2 hp and 1.0 from 5.2 hp on. The end points are in ``cema_overload_factor.csv``.
     """
+    import numpy as np
+
     rows = read_table("cema_overload_factor")
     (h0, f0), (h1, f1) = ((float(r["horsepower"]), float(r["Fo"])) for r in rows)
-    if horsepower <= h0:
-        return f0
-    if horsepower >= h1:
-        return f1
-    return f0 + (f1 - f0) * math.log(horsepower / h0) / math.log(h1 / h0)
+    hp = np.clip(np.asarray(horsepower, dtype=float), h0, h1)
+    fo = f0 + (f1 - f0) * np.log(hp / h0) / math.log(h1 / h0)
+    return float(fo) if fo.ndim == 0 else fo
+
+
+def cema_diameter_factors(diameter):
+    """:func:`cema_diameter_factor` of an array of diameters [m] (NaN outside the tabulated 4…24 in)."""
+    import numpy as np
+
+    rows = read_table("cema_diameter_factor")
+    xs = np.array([float(r["diameter_in"]) for r in rows])
+    ys = np.array([float(r["Fd"]) for r in rows])
+    inches = np.asarray(diameter, dtype=float) / 0.0254
+    inside = (inches >= xs[0] * 0.99) & (inches <= xs[-1] * 1.01)
+    return np.where(inside, np.interp(inches, xs, ys), np.nan)
+
+
+def cema_flight_factors(flight_type: str, loading):
+    """:func:`cema_flight_factor` of an array of loadings (NaN where the table has no value)."""
+    import numpy as np
+
+    row = next((r for r in read_table("cema_flight_factor") if r["flight_type"] == flight_type), None)
+    if row is None:
+        cema_flight_factor(flight_type, 0.1)  # raises with the list of types
+    assert row is not None
+    cols = [(0.15, "loading_15"), (0.30, "loading_30"), (0.45, "loading_45"), (0.95, "loading_95")]
+    values = [float(row[c]) if row[c] else np.nan for _, c in cols]
+    load = np.asarray(loading, dtype=float)
+    out = np.full(load.shape, np.nan)
+    for (limit, _), value in reversed(list(zip(cols, values, strict=True))):
+        out = np.where(load <= limit + 1e-9, value, out)
+    return out
+
+
+def motor_ratings_for(required_power):
+    """The smallest IEC 60072-1 rating [W] >= each required power [W] (NaN beyond the largest rating)."""
+    import numpy as np
+
+    ratings = np.array(motor_ratings())
+    req = np.asarray(required_power, dtype=float) * (1.0 - 1e-12)
+    idx = np.searchsorted(ratings, req, side="left")
+    return np.where(idx < ratings.size, ratings[np.minimum(idx, ratings.size - 1)], np.nan)
 
 
 def cema_material_factor(material: str) -> float:

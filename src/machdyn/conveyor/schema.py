@@ -1,0 +1,389 @@
+"""The ``[screw_conveyor]`` problem file: its tables as pydantic models, validated all at once.
+
+Quantities use the shared field types of :mod:`machdyn.problem.fields` (text with a unit in, SI float out) and
+the shared error collector of :mod:`machdyn.problem.errors` (every mistake with its path, the rule and the value,
+"did you mean" for misspelled keys and names). :func:`validate` returns a frozen
+:class:`~machdyn.conveyor.model.ConveyorProblem`.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Annotated, Any
+
+from pydantic import AfterValidator, BaseModel, BeforeValidator, ConfigDict, Field, ValidationError
+
+from ..errors import InputError, ProblemFileError
+from ..problem.errors import did_you_mean, problems_from
+from ..problem.fields import FieldError, Unit, to_si
+from . import tables
+from .model import BaseBolts, ConveyorProblem, Coupling, DesignSearch
+from .power import ISO7119_MAX_INCLINATION, METHODS
+
+
+def _bounded(meta: Unit, upper: float, why: str) -> Any:
+    """The validator of a quantity in SI ``meta.unit`` with a sign rule and a plausibility bound ``upper`` (so
+    that no absurd value such as 1e300 m reaches the formulas and overflows)."""
+
+    def check(value: Any) -> float:
+        si = to_si(value, meta)
+        if abs(si) > upper:
+            raise FieldError(f"must be <= {upper:g} {meta.unit} ({why}); got {value!r}")
+        return si
+
+    return BeforeValidator(check)
+
+
+def _number(lo: float, hi: float, *, lo_open: bool = True, hi_open: bool = False) -> Any:
+    def check(value: Any) -> float:
+        if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+            raise FieldError(f"must be a finite number; got {value!r}")
+        low_ok = value > lo if lo_open else value >= lo
+        high_ok = value < hi if hi_open else value <= hi
+        if not (low_ok and high_ok):
+            left = "(" if lo_open else "["
+            right = ")" if hi_open else "]"
+            raise FieldError(f"must be in {left}{lo:g}, {hi:g}{right}; got {value!r}")
+        return float(value)
+
+    return BeforeValidator(check)
+
+
+def _name_in(lookup: Any) -> Any:
+    def check(value: str) -> str:
+        lookup(value)  # raises InputError (a ValueError) naming the table, the value and the nearest name
+        return value
+
+    return AfterValidator(check)
+
+
+def _method(value: str) -> str:
+    if value not in METHODS:
+        raise ValueError(f"must be one of {', '.join(METHODS)}; got {value!r}{did_you_mean(value, METHODS)}")
+    return value
+
+
+Method = Annotated[str, AfterValidator(_method)]
+_SCREWLENGTH = Unit("m", "length", ">0")
+ScrewLength = Annotated[float, _bounded(_SCREWLENGTH, 1e4, "longer than any screw conveyor"), _SCREWLENGTH]
+_SCREWSIZE = Unit("m", "length", ">0")
+ScrewSize = Annotated[float, _bounded(_SCREWSIZE, 10.0, "larger than any screw"), _SCREWSIZE]
+_LIFT = Unit("m", "length", ">=0")
+Lift = Annotated[float, _bounded(_LIFT, 1e4, "higher than any screw conveyor"), _LIFT]
+_SLOPE = Unit("rad", "angle", ">=0")
+Slope = Annotated[float, _bounded(_SLOPE, math.pi / 2 * (1 - 1e-12), "a screw steeper than vertical"), _SLOPE]
+_DENSITY = Unit("kg/m^3", "density", ">0")
+Density = Annotated[float, _bounded(_DENSITY, 3e4, "denser than any bulk material or metal"), _DENSITY]
+_RPM = Unit("rpm", "angular_velocity", ">0")
+Rpm = Annotated[float, _bounded(_RPM, 1e4, "faster than any screw"), _RPM]
+_STRESS = Unit("Pa", "stress", ">0")
+Stress = Annotated[float, _bounded(_STRESS, 1e12, "beyond any steel"), _STRESS]
+_MODULUS = Unit("Pa", "stress", ">0")
+Modulus = Annotated[float, _bounded(_MODULUS, 1e13, "beyond any steel"), _MODULUS]
+_TWISTRATE = Unit("rad/m", "twist_rate", ">0")
+TwistRate = Annotated[float, _bounded(_TWISTRATE, 10.0, "a twist of more than 10 rad per metre"), _TWISTRATE]
+_FORCEN = Unit("N", "force", ">=0")
+ForceN = Annotated[float, _bounded(_FORCEN, 1e9, "beyond any conveyor drive"), _FORCEN]
+_TORQUENM = Unit("N*m", "torque", ">0")
+TorqueNm = Annotated[float, _bounded(_TORQUENM, 1e9, "beyond any conveyor drive"), _TORQUENM]
+Fraction = Annotated[float, _number(0.0, 1.0)]
+Positive = Annotated[float, _number(0.0, 1e6)]
+
+
+def _throughput(value: Any) -> tuple[str, float]:
+    """("mass", kg/s) or ("volume", m³/s) from a mass flow or a volume flow."""
+    for unit, what, upper in (("kg/s", "mass", 1e5), ("m^3/s", "volume", 1e2)):
+        try:
+            si = to_si(value, Unit(unit, "flow"))
+        except FieldError:
+            continue
+        if not si > 0:
+            raise FieldError(f"must be > 0; got {value!r}")
+        if si > upper:
+            raise FieldError(f"must be <= {upper:g} {unit} (beyond any screw conveyor); got {value!r}")
+        return what, si
+    raise FieldError(f'must be a mass flow (like "7.2 t/h") or a volume flow (like "6 m^3/h"); got {value!r}')
+
+
+Throughput = Annotated[tuple[str, float], BeforeValidator(_throughput)]
+
+
+class _Table(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class MaterialIn(_Table):
+    name: str = "bulk material"
+    bulk_density: Density
+    filling: Fraction
+    speed_coefficient: Positive | None = None
+    speed_class: Annotated[str, _name_in(tables.speed_coefficient)] | None = None
+    resistance: Positive | None = None
+    resistance_group: Annotated[str, _name_in(tables.resistance_coefficient)] | None = None
+    cema_material_factor: Positive | None = None
+    cema_material: Annotated[str, _name_in(tables.cema_material_factor)] | None = None
+    friction_coefficient: Positive = 1.0
+
+
+class ScrewIn(_Table):
+    diameter: ScrewSize | None = None
+    speed: Rpm | None = None
+    pitch_ratio: Positive = 1.0
+    inclination_factor: Fraction | None = None
+    pipe_outer_diameter: ScrewSize | None = None
+    pipe_wall: ScrewSize | None = None
+    flight_thickness: ScrewSize | None = None
+    hanger_spacing: ScrewLength = 3.0
+    force_radius_ratio: Annotated[float, Field(gt=0, le=0.5)] = 0.35
+    lateral_load_factor: Positive = 0.7
+    hanger_bearing: Annotated[str, _name_in(tables.cema_hanger_bearing_factor)] = "bronze"
+    flight_type: Annotated[str, _name_in(lambda t: tables.cema_flight_factor(t, 0.95))] = "standard"
+    paddles: Annotated[int, Field(ge=0, le=4)] = 0
+
+
+class DriveIn(_Table):
+    type: Annotated[str, _name_in(tables.drive_efficiency)] | None = None
+    efficiency: Fraction | None = None
+    coupling_service_factor: Positive = 1.8
+
+
+class StrengthIn(_Table):
+    shear_modulus: Modulus = 80e9
+    elastic_modulus: Modulus = 210e9
+    poisson_ratio: Annotated[float, _number(0.0, 0.5, lo_open=False, hi_open=True)] = 0.3
+    steel_density: Density = 7850.0
+    allowable_shear_stress: Stress = 40e6
+    allowable_stress: Stress = 100e6
+    allowable_twist: TwistRate = math.radians(0.25)
+    max_deflection: ScrewSize = 6.35e-3
+
+
+class CouplingIn(_Table):
+    rated_torque: TorqueNm
+    pins: Annotated[int, Field(gt=0, le=100)]
+    pin_circle_diameter: ScrewSize
+    pin_diameter: ScrewSize
+    bushing_length: ScrewSize
+    pin_lever: ScrewSize
+    allowable_bushing_stress: Stress = 2e6
+    allowable_pin_stress: Stress = 60e6
+
+
+def _bolt(value: str) -> str:
+    names = [n for n, _ in tables.metric_bolts()]
+    if value not in names:
+        raise ValueError(f"must be one of {', '.join(names)}; got {value!r}{did_you_mean(value, names)}")
+    return value
+
+
+class BaseBoltsIn(_Table):
+    belt_force: ForceN
+    belt_preload: ForceN = 0.0
+    lever: Lift
+    spacing_a: ScrewSize
+    spacing_b: ScrewSize
+    allowable_tensile_stress: Stress = 120e6
+    friction: Positive = 0.2
+    safety: Positive = 2.0
+    bolt: Annotated[str, AfterValidator(_bolt)] | None = None
+
+
+def _objective(value: str) -> str:
+    if value not in ("power", "cost"):
+        raise ValueError(f"must be 'power' or 'cost'; got {value!r}{did_you_mean(value, ('power', 'cost'))}")
+    return value
+
+
+class OptimiseIn(_Table):
+    objective: Annotated[str, AfterValidator(_objective)] = "power"
+    diameters: list[ScrewSize] | None = None
+    pitch_ratios: list[Positive] = [1.0, 0.75, 0.5]
+    speed_fractions: list[Fraction] = [0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0]
+    fillings: list[Fraction] = [0.15, 0.25, 0.3, 0.4, 0.45]
+    motor_mass_per_kw: Positive = 10.0
+
+
+class ConveyorIn(_Table):
+    throughput: Throughput | None = None
+    length: ScrewLength
+    inclination: Slope | None = None
+    lift: Lift | None = None
+    torque: TorqueNm | None = None
+    power_method: Method = "iso7119"
+    methods: list[Method] = list(METHODS)
+    material: MaterialIn
+    screw: ScrewIn = ScrewIn()
+    drive: DriveIn = DriveIn()
+    strength: StrengthIn = StrengthIn()
+    coupling: CouplingIn | None = None
+    base_bolts: BaseBoltsIn | None = None
+    optimise: OptimiseIn | None = None
+
+
+class MetaIn(_Table):
+    name: str = "screw conveyor"
+    description: str = ""
+
+
+class FileIn(_Table):
+    meta: MetaIn = MetaIn()
+    screw_conveyor: ConveyorIn
+
+
+def _get(data: Any, *path: str) -> Any:
+    for key in path:
+        if not isinstance(data, dict):
+            return None
+        data = data.get(key)
+    return data
+
+
+def _presence(data: dict[str, Any]) -> list[tuple[str, str]]:
+    """Rules across fields that hold whatever else is wrong in the file (checked on the raw tables)."""
+    out: list[tuple[str, str]] = []
+    p = "screw_conveyor"
+    m = _get(data, p, "material") or {}
+    s = _get(data, p, "screw") or {}
+    if not isinstance(m, dict) or not isinstance(s, dict):
+        return out
+    if m.get("speed_coefficient") is None and m.get("speed_class") is None:
+        out.append((f"{p}.material.speed_coefficient",
+                    "required: the speed coefficient k of n = k/sqrt(D) (speed_coefficient, rpm*m^0.5) or a "
+                    "speed_class"))
+    if m.get("resistance") is None and m.get("resistance_group") is None:
+        out.append((f"{p}.material.resistance",
+                    "required: the resistance coefficient C0 = lambda (resistance) or a resistance_group"))
+    sc = _get(data, p) or {}
+    if isinstance(sc, dict) and sc.get("throughput") is None and sc.get("optimise") is None and (
+            s.get("diameter") is None or s.get("speed") is None):
+        out.append((f"{p}.throughput", "required unless the screw is given (screw.diameter and screw.speed: "
+                                       "its capacity is then the duty)"))
+    if isinstance(sc, dict) and sc.get("optimise") is not None and sc.get("throughput") is None:
+        out.append((f"{p}.throughput", "required to choose a design (the duty every candidate must meet)"))
+    if isinstance(sc, dict) and sc.get("inclination") is not None and sc.get("lift") is not None:
+        out.append((f"{p}.lift", "give either the lift or the inclination, not both"))
+    return out
+
+
+def _after(c: ConveyorIn) -> tuple[list[tuple[str, str]], dict[str, Any]]:
+    """Rules that need several validated fields; returns the problems and the derived values."""
+    p = "screw_conveyor"
+    out: list[tuple[str, str]] = []
+    got: dict[str, Any] = {}
+    beta = c.inclination or 0.0
+    if c.lift is not None:
+        if c.lift > c.length:
+            out.append((f"{p}.lift", f"must be <= the length {c.length:g} m; got {c.lift:g} m"))
+        else:
+            beta = math.asin(c.lift / c.length)
+    got["inclination"] = beta
+    m = c.material
+    if c.power_method == "cema" and m.cema_material_factor is None and m.cema_material is None:
+        out.append((f"{p}.power_method", "'cema' sizes the drive but the CEMA material factor is missing: give "
+                                         "material.cema_material_factor (Fm) or material.cema_material"))
+    if c.power_method == "iso7119" and beta > ISO7119_MAX_INCLINATION + 1e-12:
+        out.append((f"{p}.power_method", f"'iso7119' applies to inclinations up to 20 deg; got "
+                                         f"{math.degrees(beta):.4g} deg: choose another power_method"))
+    if c.screw.inclination_factor is not None:
+        got["inclination_factor"] = c.screw.inclination_factor
+    else:
+        try:
+            got["inclination_factor"] = tables.inclination_factor(beta)
+        except InputError as exc:
+            out.append((f"{p}.inclination", str(exc)))
+    s = c.screw
+    if s.pipe_outer_diameter is not None and s.diameter is not None and s.pipe_outer_diameter >= s.diameter:
+        out.append((f"{p}.screw.pipe_outer_diameter",
+                    f"must be < the screw diameter {s.diameter:g} m; got {s.pipe_outer_diameter:g} m"))
+    if s.pipe_wall is not None and s.pipe_outer_diameter is not None and 2 * s.pipe_wall >= s.pipe_outer_diameter:
+        out.append((f"{p}.screw.pipe_wall",
+                    f"must be < half the pipe's outer diameter {s.pipe_outer_diameter:g} m; got {s.pipe_wall:g} m"))
+    return out, got
+
+
+def validate(data: dict[str, Any], source: str | None = None) -> ConveyorProblem:
+    """Validate the parsed TOML ``data`` of a whole ``[screw_conveyor]`` problem file.
+
+    Raises :class:`~machdyn.errors.ProblemFileError` listing every mistake as (path, message).
+    """
+    problems = _presence(data) if isinstance(data, dict) else []
+    try:
+        f = FileIn.model_validate(data)
+    except ValidationError as exc:
+        problems = problems_from(exc, FileIn) + problems
+        raise ProblemFileError(_unique(problems), source) from None
+    c = f.screw_conveyor
+    more, got = _after(c)
+    problems += more
+    if problems:
+        raise ProblemFileError(_unique(problems), source)
+    m, s, st, d = c.material, c.screw, c.strength, c.drive
+    rho = m.bulk_density
+    mass_flow = None
+    if c.throughput is not None:
+        what, value = c.throughput
+        mass_flow = value if what == "mass" else value * rho
+    k_v = m.speed_coefficient if m.speed_coefficient is not None else tables.speed_coefficient(str(m.speed_class))
+    resistance = m.resistance if m.resistance is not None else tables.resistance_coefficient(str(m.resistance_group))
+    fm = m.cema_material_factor
+    if fm is None and m.cema_material is not None:
+        fm = tables.cema_material_factor(m.cema_material)
+    eta = d.efficiency if d.efficiency is not None else tables.drive_efficiency(d.type or "shaft_mount_v_belt")
+    coupling = Coupling(**c.coupling.model_dump()) if c.coupling is not None else None
+    bolts = BaseBolts(**c.base_bolts.model_dump()) if c.base_bolts is not None else None
+    search = None
+    if c.optimise is not None:
+        o = c.optimise
+        search = DesignSearch(
+            objective=o.objective, diameters=tuple(o.diameters or tables.standard_diameters()),
+            pitch_ratios=tuple(o.pitch_ratios), speed_fractions=tuple(o.speed_fractions),
+            fillings=tuple(o.fillings), motor_mass_per_kw=o.motor_mass_per_kw)
+    problem = ConveyorProblem(
+        name=f.meta.name, description=f.meta.description, mass_flow=mass_flow, length=c.length,
+        inclination=got["inclination"], lift=c.lift, torque=c.torque, power_method=c.power_method,
+        methods=tuple(dict.fromkeys([*c.methods, c.power_method])), material_name=m.name, bulk_density=rho,
+        filling=m.filling, speed_coefficient=k_v, resistance=resistance, cema_material_factor=fm,
+        friction_coefficient=m.friction_coefficient, diameter=s.diameter, speed=s.speed,
+        pitch_ratio=s.pitch_ratio, inclination_factor=got["inclination_factor"],
+        pipe_outer_diameter=s.pipe_outer_diameter, pipe_wall=s.pipe_wall, flight_thickness=s.flight_thickness,
+        hanger_spacing=s.hanger_spacing, force_radius_ratio=s.force_radius_ratio,
+        lateral_load_factor=s.lateral_load_factor, hanger_bearing=s.hanger_bearing, flight_type=s.flight_type,
+        paddles=s.paddles, drive_efficiency=eta, coupling_service_factor=d.coupling_service_factor,
+        shear_modulus=st.shear_modulus, elastic_modulus=st.elastic_modulus, poisson_ratio=st.poisson_ratio,
+        steel_density=st.steel_density, allowable_shear_stress=st.allowable_shear_stress,
+        allowable_stress=st.allowable_stress, allowable_twist=st.allowable_twist,
+        max_deflection=st.max_deflection, coupling=coupling, base_bolts=bolts, search=search, source=source,
+    )
+    problems = _feasible(problem)
+    if problems:
+        raise ProblemFileError(problems, source)
+    return problem
+
+
+def _feasible(problem: ConveyorProblem) -> list[tuple[str, str]]:
+    """The screw the run will choose exists, its pipe fits, and the selected power method applies to it."""
+    if problem.search is not None:
+        return []  # each candidate is judged by the search itself
+    from .evaluate import choose_screw
+
+    p = "screw_conveyor"
+    try:
+        design = choose_screw(problem)
+    except InputError as exc:
+        return [(f"{p}.throughput", str(exc))]
+    out = []
+    if problem.pipe_outer_diameter is not None and problem.pipe_outer_diameter >= design.diameter:
+        out.append((f"{p}.screw.pipe_outer_diameter", f"must be < the screw diameter {design.diameter:g} m; got "
+                                                      f"{problem.pipe_outer_diameter:g} m"))
+    if problem.power_method == "cema" and not math.isfinite(float(tables.cema_diameter_factors(design.diameter))):
+        out.append((f"{p}.power_method", f"'cema' has no diameter factor Fd for a {design.diameter * 1000:g} mm screw "
+                                         f"(tabulated 4 to 24 in): choose another power_method"))
+    return out
+
+
+def _unique(problems: list[tuple[str, str]]) -> list[tuple[str, str]]:
+    """One message per path (a rule on the raw tables and the schema may both see the same gap)."""
+    seen: dict[str, str] = {}
+    for path, message in problems:
+        seen.setdefault(path, message)
+    return list(seen.items())
