@@ -17,7 +17,7 @@ from .pipeline import Capability, ProblemKind, import_object
 KINDS: dict[str, str] = {
     "mechanism": "machdyn.pipelines.mechanism:KIND",
     "rotary_screen": "machdyn.pipelines.rotary_screen:KIND",
-    "screw_conveyor": "machdyn.pipelines.screw_conveyor:KIND",
+    "screw_conveyor": "machdyn.conveyor.kind:KIND",
 }
 
 #: optional table -> the :class:`~machdyn.pipeline.Capability`

@@ -166,8 +166,7 @@ def translating_mass(screen: RotaryScreen) -> float:
     >>> round(translating_mass(PAPER_SCREEN), 4)
     637.3333
     """
-    s = _s(screen)
-    return s.l_BS2 / s.L * s.m2 + s.m3
+    return _s(screen).m_C
 
 
 def t1(screen: RotaryScreen, alpha, *, with_lambda: bool = True):

@@ -53,6 +53,12 @@ class RotaryScreen:
         """lambda = R / L [-]."""
         return self.R / self.L
 
+    @property
+    def m_C(self) -> float:
+        """Mass substituted at the slider C [kg], seed 002 eq 5: m_C = (l_BS2/L) m2 + m3
+        (:func:`~machdyn.machines.rotary_screen.translating_mass`)."""
+        return self.l_BS2 / self.L * self.m2 + self.m3
+
     # ------------------------------------------------------------------------------------- engine model
     def mechanism(self, spring: bool = False, stiffness: float | None = None):
         """The screen as an engine :class:`~machdyn.linkage.model.Mechanism` (``machdyn.linkage.slider_crank``).
@@ -88,9 +94,7 @@ class RotaryScreen:
         counterweight = PointMass("counterweight", "crank", self.m_e, (-self.r_e, 0.0))
         changes: dict = {"point_masses": (*mech.point_masses, counterweight), "gravity": (0.0, 0.0)}
         if spring:
-            from .formulas import spring_stiffness
-
-            k = spring_stiffness(self) if stiffness is None else stiffness
+            k = self.m_C * self.omega**2 if stiffness is None else stiffness  # eq 17 (spring_stiffness)
             ground = dict(mech.ground)
             ground["spring_anchor"] = (0.0, 0.0)
             changes["ground"] = ground
