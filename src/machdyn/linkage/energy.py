@@ -16,10 +16,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from .kinematics import Kinematics, _col
+from .kinematics import Kinematics
 from .kinetostatics import Forces, kinetostatics
 from .loads import applied_forces, applied_torques, mass_elements, spring_states
 from .model import Mechanism
+from .refs import column
 
 
 @dataclass(frozen=True)
@@ -152,7 +153,7 @@ def energy(
     forces = forces or kinetostatics(mech, crank_angle, speed, acceleration)
     kin = forces.kinematics
     shape = kin.shape
-    gx, gy = (_col(v) for v in kin.mechanism.gravity)
+    gx, gy = (column(v) for v in kin.mechanism.gravity)
     kinetic = {}
     v_grav = np.zeros(shape)
     rate = np.zeros(shape)

@@ -11,25 +11,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import AssemblyError, InputError, SingularPositionError, check_finite
-from . import dyads as dy
-from .model import GROUND, PRP, RPR, RRP, RRR, Mechanism, split_ref
+from .grashof import grashof_type
+from .model import Mechanism
+from .refs import GROUND, column, local_point, split_ref
 from .state import BodyState, PointState, body_from_point, ground_state
-
-
-def _col(value):
-    """A design parameter as a column (N, 1) so that it broadcasts against crank angles (M,)."""
-    arr = np.asarray(value, dtype=float)
-    if arr.ndim == 0:
-        return float(arr)
-    return arr[:, None] if arr.ndim == 1 else arr
-
-
-def _local(mech: Mechanism, body: str, point: str):
-    if body == GROUND:
-        x, y = mech.ground[point]
-    else:
-        x, y = mech.body(body).points[point]
-    return _col(x), _col(y)
 
 
 @dataclass(frozen=True)
@@ -104,17 +89,17 @@ class Kinematics:
                     raise InputError(
                         f"Body '{body}' has no point '{point}'; its points: {', '.join(b.points)}."
                     )
-                self._points[ref] = self._broadcast(self.body(body).point(*map(_col, b.points[point])))
+                self._points[ref] = self._broadcast(self.body(body).point(*map(column, b.points[point])))
         return self._points[ref]
 
     def com(self, body: str) -> PointState:
         """Motion of the centre of mass of ``body``."""
         b = self.mechanism.body(body)
-        return self._broadcast(self.body(body).point(*map(_col, b.com)))
+        return self._broadcast(self.body(body).point(*map(column, b.com)))
 
     def local_point(self, body: str, xy) -> PointState:
         """Motion of an arbitrary body-frame point ``xy`` [m] of ``body``."""
-        return self._broadcast(self.body(body).point(*map(_col, xy)))
+        return self._broadcast(self.body(body).point(*map(column, xy)))
 
     def slide(self, body: str) -> SlideMotion:
         """Travel of the slider/block ``body`` along its guide."""
@@ -170,16 +155,16 @@ def kinematics(
     eps = np.asarray(acceleration, dtype=float)
     if mech.design_count is not None:
         # A 1-D speed or acceleration that does not match the crank angles is one value per design.
-        omega = _col(omega) if omega.ndim == 1 and omega.shape != phi.shape else omega
-        eps = _col(eps) if eps.ndim == 1 and eps.shape != phi.shape else eps
+        omega = column(omega) if omega.ndim == 1 and omega.shape != phi.shape else omega
+        eps = column(eps) if eps.ndim == 1 and eps.shape != phi.shape else eps
     states: dict[str, BodyState] = {GROUND: ground_state()}
     slides: dict[str, SlideMotion] = {}
     reports = []
     # Crank: its frame turns with phi about the pivot.
     crank = mech.body(mech.crank.body)
     _, pivot_name = split_ref(mech.crank.pivot)
-    ox, oy = _local(mech, GROUND, pivot_name)
-    cu, cv = _local(mech, crank.name, pivot_name)
+    ox, oy = local_point(mech, GROUND, pivot_name)
+    cu, cv = local_point(mech, crank.name, pivot_name)
     designs = (mech.design_count, 1) if mech.design_count is not None else ()
     shape = np.broadcast_shapes(designs, np.shape(phi), np.shape(omega), np.shape(eps))
     with np.errstate(all="ignore"):
@@ -189,13 +174,13 @@ def kinematics(
         assembled = True
         failing = []
         for d in mech.dyads:
-            motion = _solve_dyad(mech, d, states)
+            motion = d.solve_motion(mech, states)
             states[d.a], states[d.b] = motion.a, motion.b
             assembled = assembled & motion.assembled
             failing.append((d, motion.assembled))
             for key, (sv, dsv, ddsv) in motion.slides.items():
                 slides[d.a if key == "a" else d.b] = SlideMotion(*(np.broadcast_to(v, shape) for v in (sv, dsv, ddsv)))
-            reports.append(DyadReport(type(d).__name__, (d.a, d.b), motion.det, motion.transmission))
+            reports.append(DyadReport(d.kind, (d.a, d.b), motion.det, motion.transmission))
     assembled = np.broadcast_to(assembled, shape)
     if on_fail == "raise" and not np.all(assembled):
         raise AssemblyError(_assembly_message(mech, phi, assembled, failing))
@@ -211,62 +196,6 @@ def kinematics(
 def _broadcast_state(st: BodyState, shape) -> BodyState:
     return BodyState(*(np.broadcast_to(v, shape) for v in (
         st.x, st.y, st.vx, st.vy, st.ax, st.ay, st.angle, st.omega, st.alpha, st.cos, st.sin)))
-
-
-def _point(mech: Mechanism, states, ref: str) -> PointState:
-    body, point = split_ref(ref)
-    return states[body].point(*_local(mech, body, point))
-
-
-def _solve_dyad(mech: Mechanism, d, states) -> dy.DyadMotion:
-    if isinstance(d, RRR):
-        pa = split_ref(d.pin_a)[1]
-        pb = split_ref(d.pin_b)[1]
-        return dy.rrr_motion(
-            _point(mech, states, d.pin_a),
-            _point(mech, states, d.pin_b),
-            _local(mech, d.a, pa),
-            _local(mech, d.a, d.inner),
-            _local(mech, d.b, pb),
-            _local(mech, d.b, d.inner),
-            d.branch,
-        )
-    if isinstance(d, RRP):
-        gb, gp = split_ref(d.guide.point)
-        return dy.rrp_motion(
-            _point(mech, states, d.pin_a),
-            states[gb],
-            _local(mech, gb, gp),
-            _col(d.guide.angle),
-            _local(mech, d.a, split_ref(d.pin_a)[1]),
-            _local(mech, d.a, d.inner),
-            _local(mech, d.b, d.inner),
-            d.branch,
-        )
-    if isinstance(d, RPR):
-        return dy.rpr_motion(
-            _point(mech, states, d.pin_a),
-            _point(mech, states, d.pin_b),
-            _local(mech, d.a, split_ref(d.pin_a)[1]),
-            _local(mech, d.b, split_ref(d.pin_b)[1]),
-            _local(mech, d.b, d.slide[0]),
-            _col(d.slide[1]),
-            d.branch,
-        )
-    if isinstance(d, PRP):
-        b1, p1 = split_ref(d.guide_a.point)
-        b2, p2 = split_ref(d.guide_b.point)
-        return dy.prp_motion(
-            states[b1],
-            _local(mech, b1, p1),
-            _col(d.guide_a.angle),
-            states[b2],
-            _local(mech, b2, p2),
-            _col(d.guide_b.angle),
-            _local(mech, d.a, d.inner),
-            _local(mech, d.b, d.inner),
-        )
-    raise InputError(f"Unknown dyad type {type(d).__name__!r}; expected RRR, RRP, RPR or PRP.")
 
 
 def angle_ranges(phi: np.ndarray, mask: np.ndarray) -> list[tuple[float, float]]:
@@ -332,8 +261,6 @@ def _check_not_dead(mech: Mechanism, phi, reports, shape) -> None:
 
 
 def _assembly_message(mech: Mechanism, phi, assembled, per_dyad=()) -> str:
-    from .diagnostics import grashof_type
-
     fails = ~assembled
     design_note = ""
     if assembled.ndim == 2:
@@ -345,7 +272,7 @@ def _assembly_message(mech: Mechanism, phi, assembled, per_dyad=()) -> str:
     text = format_ranges(ranges)
     kind = grashof_type(mech)
     kind_note = f" Grashof type: {kind}." if isinstance(kind, str) else ""
-    culprits = [f"{type(d).__name__} {d.a}-{d.b}" for d, ok in per_dyad if not np.all(ok)]
+    culprits = [f"{d.kind} {d.a}-{d.b}" for d, ok in per_dyad if not np.all(ok)]
     if len(mech.dyads) > 1 and culprits:
         kind_note += f" The dyad(s) that cannot close: {', '.join(culprits)}."
     if np.all(fails):
