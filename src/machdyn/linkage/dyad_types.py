@@ -181,7 +181,7 @@ class RRR(DyadType):
         ctx.transmit(_body(self.pin_b), Q.x, Q.y, *fq)
 
     def emit_fused(self, gen):
-        from .fused_source import rrr_code
+        from .fused_dyads import rrr_code
 
         rrr_code(gen, self)
 
@@ -257,7 +257,7 @@ class RRP(DyadType):
         ctx.couple_back(gb, couple)
 
     def emit_fused(self, gen):
-        from .fused_source import rrp_code
+        from .fused_dyads import rrp_code
 
         rrp_code(gen, self)
 
@@ -325,7 +325,7 @@ class RPR(DyadType):
         ctx.transmit(_body(self.pin_b), Q.x, Q.y, *fq)
 
     def emit_fused(self, gen):
-        from .fused_source import rpr_code
+        from .fused_dyads import rpr_code
 
         rpr_code(gen, self)
 
@@ -396,7 +396,7 @@ class PRP(DyadType):
         ctx.couple_back(g2, cb)
 
     def emit_fused(self, gen):
-        from .fused_source import prp_code
+        from .fused_dyads import prp_code
 
         prp_code(gen, self)
 

@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import AssemblyError, InputError, SingularPositionError, check_finite
+from .engines import check_engine, use_fused
 from .grashof import grashof_type
 from .model import Mechanism
 from .refs import GROUND, column, local_point, split_ref
@@ -130,6 +131,7 @@ def kinematics(
     acceleration=0.0,
     *,
     on_fail: str = "raise",
+    engine: str = "numpy",
 ) -> Kinematics:
     """Positions, velocities and accelerations of every body of ``mech`` at each crank angle.
 
@@ -142,6 +144,9 @@ def kinematics(
     acceleration : crank angular acceleration [rad/s^2], shaped like ``speed``.
     on_fail : "raise" raises :class:`AssemblyError` listing the crank-angle ranges where the linkage cannot
         close; "mask" returns NaN there, flagged ``assembled = False``.
+    engine : "numpy" (the reference), "fused" (one compiled pass per position, :mod:`machdyn.linkage.fused`;
+        1-D crank angles) or "auto" (fused when numba is present and the request is large enough to pay for
+        a compilation).
 
     Closed form per dyad (see :mod:`machdyn.linkage.dyads`), valid at every assembled, non-dead position.
     """
@@ -153,10 +158,17 @@ def kinematics(
     check_finite("crank acceleration", acceleration, "rad/s^2")
     omega = np.asarray(speed, dtype=float)
     eps = np.asarray(acceleration, dtype=float)
+    check_engine(engine)
     if mech.design_count is not None:
         # A 1-D speed or acceleration that does not match the crank angles is one value per design.
         omega = column(omega) if omega.ndim == 1 and omega.shape != phi.shape else omega
         eps = column(eps) if eps.ndim == 1 and eps.shape != phi.shape else eps
+    designs = (mech.design_count, 1) if mech.design_count is not None else ()
+    shape = np.broadcast_shapes(designs, np.shape(phi), np.shape(omega), np.shape(eps))
+    if use_fused(engine, mech, phi, int(np.prod(shape))):
+        from .fused import fused_kinematics
+
+        return fused_kinematics(mech, phi, omega, eps, shape, on_fail)
     states: dict[str, BodyState] = {GROUND: ground_state()}
     slides: dict[str, SlideMotion] = {}
     reports = []
@@ -165,8 +177,6 @@ def kinematics(
     _, pivot_name = split_ref(mech.crank.pivot)
     ox, oy = local_point(mech, GROUND, pivot_name)
     cu, cv = local_point(mech, crank.name, pivot_name)
-    designs = (mech.design_count, 1) if mech.design_count is not None else ()
-    shape = np.broadcast_shapes(designs, np.shape(phi), np.shape(omega), np.shape(eps))
     with np.errstate(all="ignore"):
         # Scalars stay scalars through the solution (cheaper); results are broadcast to full shape at the end.
         pivot = PointState(ox, oy, 0.0, 0.0, 0.0, 0.0)
@@ -181,12 +191,17 @@ def kinematics(
             for key, (sv, dsv, ddsv) in motion.slides.items():
                 slides[d.a if key == "a" else d.b] = SlideMotion(*(np.broadcast_to(v, shape) for v in (sv, dsv, ddsv)))
             reports.append(DyadReport(d.kind, (d.a, d.b), motion.det, motion.transmission))
+    states.pop(GROUND)
+    return kinematics_result(mech, phi, omega, eps, shape, on_fail, states, slides, reports, failing, assembled)
+
+
+def kinematics_result(mech, phi, omega, eps, shape, on_fail, states, slides, reports, failing, assembled):
+    """The :class:`Kinematics` of solved body states, after the assembly and dead-position checks."""
     assembled = np.broadcast_to(assembled, shape)
     if on_fail == "raise" and not np.all(assembled):
         raise AssemblyError(_assembly_message(mech, phi, assembled, failing))
     if on_fail == "raise":
         _check_not_dead(mech, phi, reports, shape)
-    states.pop(GROUND)
     return Kinematics(
         mech, phi, np.broadcast_to(omega, shape), np.broadcast_to(eps, shape), assembled,
         states, slides, tuple(reports),
@@ -194,7 +209,7 @@ def kinematics(
 
 
 def _broadcast_state(st: BodyState, shape) -> BodyState:
-    return BodyState(*(np.broadcast_to(v, shape) for v in (
+    return BodyState(*(v if np.shape(v) == shape else np.broadcast_to(v, shape) for v in (
         st.x, st.y, st.vx, st.vy, st.ax, st.ay, st.angle, st.omega, st.alpha, st.cos, st.sin)))
 
 

@@ -156,6 +156,7 @@ def kinetostatics(
     acceleration=0.0,
     *,
     kinematics_result: Kinematics | None = None,
+    engine: str = "numpy",
 ) -> Forces:
     """Joint reactions, driving torque and frame loads of ``mech`` at each crank angle.
 
@@ -164,8 +165,17 @@ def kinetostatics(
     mech : the linkage; crank_angle [rad]; speed [rad/s]; acceleration [rad/s^2] (as for
         :func:`~machdyn.linkage.kinematics.kinematics`), or an already computed ``kinematics_result``.
 
+    engine : "numpy", "fused" or "auto", as for :func:`~machdyn.linkage.kinematics.kinematics` (without a
+        ``kinematics_result``, the fused engine computes motion and forces in one pass).
+
     Valid away from dead positions, where the reactions grow without bound (the dyad determinant vanishes).
     """
+    if kinematics_result is None and engine != "numpy":
+        from .fused import fused_kinetostatics
+
+        forces = fused_kinetostatics(mech, crank_angle, speed, acceleration, engine)
+        if forces is not None:
+            return forces
     kin = kinematics_result or kinematics(mech, crank_angle, speed, acceleration)
     loads, frame = body_loads(kin)
     joint_list = tuple(Joint(*j) for j in joints(mech))

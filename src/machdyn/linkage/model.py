@@ -125,6 +125,8 @@ class Mechanism:
     gravity: Vec = (0.0, -9.80665)
     _index: dict = field(default=None, init=False, repr=False, compare=False)
     _designs: int | None = field(default=None, init=False, repr=False, compare=False)
+    #: Derived data kept with the (immutable) model, such as the fused engine's code and parameter table.
+    _derived: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "bodies", tuple(self.bodies))
