@@ -13,7 +13,7 @@ import numpy as np
 
 from ..errors import InputError
 from .grashof import grashof_type
-from .kinematics import angle_ranges, crank_angles, format_ranges, kinematics, singular
+from .kinematics import Kinematics, angle_ranges, crank_angles, format_ranges, kinematics, singular
 from .model import Mechanism
 
 #: Below this transmission angle [deg] force transmission is poor (Norton, §4.10: keep mu >= 40 deg).
@@ -46,36 +46,68 @@ class Diagnostics:
 
 
 def _zero_crossings(phi, values, valid):
-    """Crank angles [rad] where ``values`` changes sign between neighbouring valid samples (linear
-    interpolation), including the wrap from the last sample to the first over a full cycle."""
-    out = []
+    """(index, crank angle [rad]) where ``values`` changes sign between neighbouring valid samples (linear
+    interpolation) or is zero, including the wrap from the last sample to the first over a full cycle."""
     n = len(phi)
-    for i in range(n):
-        j = (i + 1) % n
-        if j == 0 and not np.isclose((phi[0] - phi[-1]) % (2 * np.pi), 2 * np.pi / n):
-            continue
-        if not (valid[i] and valid[j]):
-            continue
-        a, b = values[i], values[j]
-        if a == 0.0:
-            out.append((i, float(phi[i])))
-        elif a * b < 0.0:
-            step = (phi[j] - phi[i]) % (2 * np.pi)
-            out.append((i, float((phi[i] + step * a / (a - b)) % (2 * np.pi))))
-    return out
+    i = np.arange(n)
+    j = (i + 1) % n
+    pair = valid & valid[j]
+    if n and not np.isclose((phi[0] - phi[-1]) % (2 * np.pi), 2 * np.pi / n):
+        pair[-1] = False  # not a full cycle: no wrap
+    a, b = values, values[j]
+    with np.errstate(invalid="ignore"):
+        zero = pair & (a == 0.0)
+        cross = pair & ~zero & (a * b < 0.0)
+    idx = np.flatnonzero(zero | cross)
+    step = (phi[j[idx]] - phi[idx]) % (2 * np.pi)
+    ai, bi = a[idx], b[idx]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        interpolated = (phi[idx] + step * ai / (ai - bi)) % (2 * np.pi)
+    angles = np.where(zero[idx], phi[idx], interpolated)
+    return [(int(k), float(x)) for k, x in zip(idx, angles, strict=True)]
 
 
-def diagnose(mech: Mechanism, samples: int = 3600) -> Diagnostics:
+def diagnose(mech: Mechanism, samples: int = 3600, *, kinematics_result: Kinematics | None = None) -> Diagnostics:
     """Assembly ranges, Grashof type, dead and limit positions, strokes, time ratio and transmission-angle
     extremes of one design over a full crank revolution sampled at ``samples`` evenly spaced angles
-    (accuracy of located angles about 360/samples deg before interpolation)."""
+    (accuracy of located angles about 360/samples deg before interpolation).
+
+    With ``kinematics_result`` (one design over a full revolution sampled evenly, as
+    :func:`~machdyn.linkage.kinematics.crank_angles` makes it, at a crank speed that does not vanish) the
+    diagnostics are sized to that request: no kinematics is computed again. The result is kept with the
+    (immutable) mechanism, so asking again costs nothing.
+    """
     if mech.design_count is not None:
         raise InputError(
             f"diagnose works on one design at a time; mechanism '{mech.name}' has {mech.design_count} "
             "variants (use mech.take_designs(i))."
         )
-    phi = crank_angles(samples)
-    kin = kinematics(mech, phi, 1.0, 0.0, on_fail="mask")
+    if kinematics_result is not None:
+        return _diagnose(mech, _revolution(kinematics_result))
+    key = ("diagnostics", int(samples))
+    if key not in mech._derived:
+        phi = crank_angles(samples)
+        mech._derived[key] = _diagnose(mech, kinematics(mech, phi, 1.0, 0.0, on_fail="mask"))
+    return mech._derived[key]
+
+
+def _revolution(kin: Kinematics) -> Kinematics:
+    phi = np.asarray(kin.crank_angle, dtype=float)
+    n = phi.size
+    if (kin.mechanism.design_count is not None or phi.ndim != 1 or n < 4 or np.ndim(kin.assembled) != 1
+            or not np.allclose(np.diff(phi), 2 * np.pi / n, rtol=1e-9, atol=1e-12)):
+        raise InputError(
+            "Diagnostics from a kinematics result need one design over a full revolution sampled evenly "
+            f"(crank_angles(n)); got crank angles of shape {phi.shape} and results of shape {kin.shape}."
+        )
+    if not np.all(np.asarray(kin.speed) != 0.0):
+        raise InputError("Diagnostics from a kinematics result need a crank speed that does not vanish.")
+    return kin
+
+
+def _diagnose(mech: Mechanism, kin: Kinematics) -> Diagnostics:
+    phi = np.asarray(kin.crank_angle, dtype=float)
+    samples = phi.size
     assembled = np.asarray(kin.assembled)
     ok = assembled & ~singular(kin.dyad_reports, kin.shape)
     warnings = []

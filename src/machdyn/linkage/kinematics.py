@@ -14,7 +14,7 @@ from ..errors import AssemblyError, InputError, SingularPositionError, check_fin
 from .engines import check_engine, use_fused
 from .grashof import grashof_type
 from .model import Mechanism
-from .refs import GROUND, column, local_point, split_ref
+from .refs import GROUND, column, full, local_point, split_ref
 from .state import BodyState, PointState, body_from_point, ground_state
 
 
@@ -95,8 +95,11 @@ class Kinematics:
 
     def com(self, body: str) -> PointState:
         """Motion of the centre of mass of ``body``."""
-        b = self.mechanism.body(body)
-        return self._broadcast(self.body(body).point(*map(column, b.com)))
+        key = ("com", body)
+        if key not in self._points:  # used by kinetostatics and energy alike: computed once
+            b = self.mechanism.body(body)
+            self._points[key] = self._broadcast(self.body(body).point(*map(column, b.com)))
+        return self._points[key]
 
     def local_point(self, body: str, xy) -> PointState:
         """Motion of an arbitrary body-frame point ``xy`` [m] of ``body``."""
@@ -113,7 +116,7 @@ class Kinematics:
 
     def _broadcast(self, p: PointState) -> PointState:
         shape = self.shape
-        return PointState(*(np.broadcast_to(v, shape) for v in (p.x, p.y, p.vx, p.vy, p.ax, p.ay)))
+        return PointState(*(full(v, shape) for v in (p.x, p.y, p.vx, p.vy, p.ax, p.ay)))
 
 
 def crank_angles(count: int = 360, start: float = 0.0) -> np.ndarray:
@@ -189,7 +192,7 @@ def kinematics(
             assembled = assembled & motion.assembled
             failing.append((d, motion.assembled))
             for key, (sv, dsv, ddsv) in motion.slides.items():
-                slides[d.a if key == "a" else d.b] = SlideMotion(*(np.broadcast_to(v, shape) for v in (sv, dsv, ddsv)))
+                slides[d.a if key == "a" else d.b] = SlideMotion(*(full(v, shape) for v in (sv, dsv, ddsv)))
             reports.append(DyadReport(d.kind, (d.a, d.b), motion.det, motion.transmission))
     states.pop(GROUND)
     return kinematics_result(mech, phi, omega, eps, shape, on_fail, states, slides, reports, failing, assembled)
@@ -203,13 +206,13 @@ def kinematics_result(mech, phi, omega, eps, shape, on_fail, states, slides, rep
     if on_fail == "raise":
         _check_not_dead(mech, phi, reports, shape)
     return Kinematics(
-        mech, phi, np.broadcast_to(omega, shape), np.broadcast_to(eps, shape), assembled,
+        mech, phi, full(omega, shape), full(eps, shape), assembled,
         states, slides, tuple(reports),
     )
 
 
 def _broadcast_state(st: BodyState, shape) -> BodyState:
-    return BodyState(*(v if np.shape(v) == shape else np.broadcast_to(v, shape) for v in (
+    return BodyState(*(full(v, shape) for v in (
         st.x, st.y, st.vx, st.vy, st.ax, st.ay, st.angle, st.omega, st.alpha, st.cos, st.sin)))
 
 
@@ -220,14 +223,10 @@ def angle_ranges(phi: np.ndarray, mask: np.ndarray) -> list[tuple[float, float]]
     mask = np.asarray(mask, dtype=bool).ravel()
     order = np.argsort(phi)
     phi, mask = phi[order], mask[order]
-    runs, start = [], None
-    for i, flag in enumerate(mask):
-        if flag and start is None:
-            start = i
-        if start is not None and (not flag or i == len(mask) - 1):
-            end = i if flag else i - 1
-            runs.append((float(phi[start]), float(phi[end])))
-            start = None
+    # starts: a True after a False (or first); ends: a True before a False (or last)
+    edges = np.diff(np.concatenate(([False], mask, [False])).astype(np.int8))
+    starts, ends = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1) - 1
+    runs = [(float(phi[a]), float(phi[b])) for a, b in zip(starts, ends, strict=True)]
     full_turn = len(phi) > 2 and np.allclose(np.diff(phi), 2 * np.pi / len(phi), rtol=1e-9, atol=1e-12)
     if full_turn and len(runs) > 1 and mask[0] and mask[-1]:
         runs = [(runs[-1][0], runs[0][1])] + runs[1:-1]

@@ -17,7 +17,7 @@ from ..errors import InputError
 from .kinematics import Kinematics, kinematics
 from .loads import applied_forces, applied_torques, mass_elements, spring_states
 from .model import Mechanism, joints
-from .refs import GROUND, column, local_point, split_ref
+from .refs import GROUND, column, full, local_point, split_ref
 
 
 @dataclass(frozen=True)
@@ -198,10 +198,10 @@ def kinetostatics(
         kin,
         joint_list,
         ordered,
-        np.broadcast_to(torque, shape),
-        np.broadcast_to(frame.fx, shape),
-        np.broadcast_to(frame.fy, shape),
-        np.broadcast_to(frame.m, shape),
+        full(torque, shape),
+        full(frame.fx, shape),
+        full(frame.fy, shape),
+        full(frame.m, shape),
     )
 
 
@@ -263,6 +263,6 @@ def _point_on(state, local):
 
 def _broadcast_reaction(r: Reaction, shape) -> Reaction:
     def b(v):
-        return None if v is None else np.broadcast_to(v, shape)
+        return None if v is None else full(v, shape)
 
     return Reaction(b(r.fx), b(r.fy), b(r.normal), b(r.couple))

@@ -45,3 +45,11 @@ def local_point(mech: Mechanism, body: str, point: str):
     else:
         x, y = mech.body(body).points[point]
     return column(x), column(y)
+
+
+def full(value, shape):
+    """``value`` broadcast to ``shape``: the array itself when it has that shape already, else a read-only
+    broadcast view (no copy either way)."""
+    if isinstance(value, np.ndarray) and value.shape == shape:
+        return value
+    return np.broadcast_to(value, shape)
