@@ -52,9 +52,9 @@ length = st.floats(0.3, 3.0)
 
 
 @st.composite
-def base_mechanisms(draw, full_cycle=False):
+def base_mechanisms(draw, full_cycle=False, kinds=("four_bar", "slider_crank", "inverted", "six_bar")):
     """A random linkage of one of the four families (``full_cycle``: one whose crank turns fully)."""
-    kind = draw(st.sampled_from(["four_bar", "slider_crank", "inverted", "six_bar"]))
+    kind = draw(st.sampled_from(list(kinds)))
     branch = draw(st.sampled_from([1, -1]))
     if kind == "four_bar":
         if full_cycle:  # Grashof crank-rocker or double-crank: the crank (or ground) is the shortest link

@@ -30,7 +30,7 @@ from .engines import use_fused
 from .fused_source import KERNEL_BODY_FIELDS, SUMMARY_FIELDS, Generated, Unsupported, generate
 from .kinematics import DyadReport, Kinematics, SlideMotion, kinematics_result
 from .model import joints
-from .refs import GROUND, column
+from .refs import GROUND, column, full
 from .state import BodyState
 
 _KERNELS: dict[str, Any] = {}
@@ -48,10 +48,15 @@ def _cache_dir() -> Path | None:
     return path if os.access(path, os.W_OK) else None
 
 
-def _load_kernel(generated: Generated):
-    """The compiled kernel of ``generated``: from memory, from the on-disk cache, or compiled now."""
-    key = generated.key
+def _load_kernel(generated: Generated, mode: str):
+    """The compiled kernel of ``generated`` in ``mode``: from memory, from the on-disk cache, or compiled
+    now."""
+    if mode in generated.kernels:
+        return generated.kernels[mode]
+    source = generated.source(mode)
+    key = generated.key(mode)
     if key in _KERNELS:
+        generated.kernels[mode] = _KERNELS[key]
         return _KERNELS[key]
     import numba
 
@@ -61,7 +66,7 @@ def _load_kernel(generated: Generated):
         if not path.exists():  # written once, atomically: the text is named by its own hash
             fd, tmp = tempfile.mkstemp(dir=folder, suffix=".py")
             with os.fdopen(fd, "w") as handle:
-                handle.write(generated.source)
+                handle.write(source)
             os.replace(tmp, path)
         name = f"machdyn_fused_kernel_{key}"
         spec = importlib.util.spec_from_file_location(name, path)
@@ -72,9 +77,9 @@ def _load_kernel(generated: Generated):
         kernel = numba.njit(cache=True, error_model="numpy", nogil=True)(module.kernel)
     else:  # no writable cache: compile from the text, for this session only
         namespace: dict[str, Any] = {}
-        exec(compile(generated.source, f"<machdyn fused kernel {key}>", "exec"), namespace)
+        exec(compile(source, f"<machdyn fused kernel {key}>", "exec"), namespace)
         kernel = numba.njit(error_model="numpy", nogil=True)(namespace["kernel"])
-    _KERNELS[key] = kernel
+    _KERNELS[key] = generated.kernels[mode] = kernel
     return kernel
 
 
@@ -88,8 +93,8 @@ def _table(values: list) -> np.ndarray:
 
 
 def _prepared(mech, phi: np.ndarray):
-    """The generated code, compiled kernel and parameter table of ``mech``; kept with the model when they do
-    not depend on the crank angles (no load given as a function of the crank angle or with a window)."""
+    """The generated code and parameter table of ``mech``; kept with the model when they do not depend on the
+    crank angles (no load given as a function of the crank angle or with a window)."""
     cached = mech._derived.get("fused")
     if cached is not None:
         return cached
@@ -98,25 +103,23 @@ def _prepared(mech, phi: np.ndarray):
     except Unsupported as exc:
         raise InputError(f"The fused engine cannot compile mechanism '{mech.name}': {exc}; use "
                          "engine='numpy'.") from None
-    prepared = (generated, _load_kernel(generated), _table(generated.params))
+    prepared = (generated, _table(generated.params))
     if not generated.rows:
         mech._derived["fused"] = prepared
     return prepared
 
 
 def drive_table(value, phi: np.ndarray, designs: int | None) -> np.ndarray:
-    """A crank speed or acceleration as a (1 or N, 1 or M) table: a single value, one per crank angle (a 1-D
-    array shaped like phi), one per design (any other 1-D array, as the NumPy engine reads it) or both."""
+    """A crank speed or acceleration as a (1 or N, M) table: a single value, one per crank angle (a 1-D array
+    shaped like phi), one per design (any other 1-D array, as the NumPy engine reads it) or both."""
     arr = np.asarray(value, dtype=float)
     if arr.ndim == 0:
-        return arr.reshape(1, 1)
-    if arr.ndim == 1:
-        if arr.shape == phi.shape:
-            return arr[None, :]
-        return arr[:, None]
-    if arr.ndim == 2:
-        return np.ascontiguousarray(arr)
-    raise InputError(f"The crank speed and acceleration must have at most two axes; got shape {arr.shape}.")
+        arr = arr.reshape(1, 1)
+    elif arr.ndim == 1:
+        arr = arr[None, :] if arr.shape == phi.shape else arr[:, None]
+    elif arr.ndim != 2:
+        raise InputError(f"The crank speed and acceleration must have at most two axes; got shape {arr.shape}.")
+    return np.ascontiguousarray(np.broadcast_to(arr, (arr.shape[0], phi.size)))
 
 
 @dataclass(frozen=True)
@@ -128,21 +131,27 @@ class Run:
     summary: np.ndarray
     series: np.ndarray | None
     params: np.ndarray
+    inputs: dict
 
 
 def run(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 0.0), series: bool = False,
         forces: bool = True, progress=None, chunk_designs: int | None = None) -> Run:
-    """One fused pass over ``designs`` designs x the crank angles ``phi`` (see :func:`run`'s callers)."""
+    """One fused pass over ``designs`` designs x the crank angles ``phi``: the series of the motion (and of
+    the forces, with ``forces``) when ``series``, else the per-design summaries of the forces."""
     phi = np.ascontiguousarray(phi, dtype=float)
-    generated, kernel, P = _prepared(mech, phi)
+    generated, P = _prepared(mech, phi)
+    mode = ("full" if forces else "motion") if series else "summary"
+    kernel = _load_kernel(generated, mode)
     W = drive_table(speed, phi, mech.design_count)
     E = drive_table(acceleration, phi, mech.design_count)
     LP = np.stack(generated.rows) if generated.rows else np.zeros((1, phi.size))
-    DW = np.ascontiguousarray(np.broadcast_to(angle_weights(phi), phi.shape), dtype=float) if forces else phi
+    DW = np.ascontiguousarray(np.broadcast_to(angle_weights(phi), phi.shape), dtype=float) if not series else phi
     weighted = bool(np.all(np.abs(W) > 0))
     C0, S0 = np.cos(phi), np.sin(phi)
-    out = np.empty((designs, len(SUMMARY_FIELDS) + len(generated.joints)))
-    S = np.empty((len(generated.series), designs, phi.size)) if series else np.empty((0, 1, 1))
+    out = np.empty((designs if not series else 0, len(SUMMARY_FIELDS) + len(generated.joints)))
+    rows = generated.all_series if mode == "full" else generated.motion_series
+    S = np.empty((rows, designs, phi.size)) if series else np.empty((0, 1, 1))
+    B = np.empty((6 + len(generated.joints), phi.size)) if not series else np.empty((0, 1))
     about = np.asarray(about, dtype=float)
     step = designs if chunk_designs is None else max(1, int(chunk_designs))
     for start in range(0, designs, step):
@@ -151,11 +160,12 @@ def run(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 0.0), serie
         def part(table, start=start, stop=stop):
             return table[start:stop] if table.shape[0] > 1 else table
 
-        kernel(part(P), phi, C0, S0, part(W), part(E), DW, LP, about, series, forces, weighted,
-               S[:, start:stop] if series else S, out[start:stop])
+        kernel(part(P), C0, S0, part(W), part(E), DW, LP, about, weighted,
+               S[:, start:stop] if series else S, out[start:stop] if not series else out, B)
         if progress is not None:
             progress(stop, designs)
-    return Run(generated, out, S if series else None, P)
+    inputs = {"om": W, "ep": E, "c0": C0[None, :], "s0": S0[None, :]}
+    return Run(generated, out, S if series else None, P, inputs)
 
 
 def fused_kinematics(mech, phi, omega, eps, shape, on_fail: str) -> Kinematics:
@@ -184,7 +194,8 @@ def kinematics_from_run(mech, phi, omega, eps, shape, on_fail: str, result: Run)
         assembled &= ok
         failing.append((d, ok))
         for body in d.slide_bodies().values():
-            slides[body] = SlideMotion(*(series_of(result, f"slide.{body}.{f}", shape) for f in ("s", "v", "a")))
+            slides[body] = SlideMotion(*(full(series_of(result, f"slide.{body}.{f}", shape), shape)
+                                         for f in ("s", "v", "a")))
 
         def transmission(i=i):  # computed on demand, by the reference engine
             from .kinematics import kinematics
@@ -220,9 +231,10 @@ def fused_kinetostatics(mech, crank_angle, speed, acceleration, engine: str):
     for j, joint in enumerate(joint_list):
         extra = [series_of(result, f"joint.{j}.{f}", shape) if has_series(result, f"joint.{j}.{f}") else None
                  for f in ("normal", "couple")]
-        reactions[joint.name] = Reaction(series_of(result, f"joint.{j}.fx", shape),
-                                         series_of(result, f"joint.{j}.fy", shape), *extra)
-    return Forces(kin, joint_list, reactions, *(series_of(result, f"forces.{f}", shape)
+        reactions[joint.name] = Reaction(full(series_of(result, f"joint.{j}.fx", shape), shape),
+                                         full(series_of(result, f"joint.{j}.fy", shape), shape),
+                                         *(None if v is None else full(v, shape) for v in extra))
+    return Forces(kin, joint_list, reactions, *(full(series_of(result, f"forces.{f}", shape), shape)
                                                  for f in ("torque", "fx", "fy", "m")))
 
 
@@ -239,7 +251,7 @@ def _angles(result: Run, phi, shape) -> dict[str, np.ndarray]:
             out[body] = np.arctan2(series_of(result, f"body.{body}.s", shape),
                                    series_of(result, f"body.{body}.c", shape))
         elif how[0] == "crank":
-            out[body] = np.broadcast_to(phi, shape)
+            out[body] = phi
         elif how[0] == "value":
             out[body] = series_of(result, f"angle.{body}.th", shape)
         else:
@@ -249,8 +261,19 @@ def _angles(result: Run, phi, shape) -> dict[str, np.ndarray]:
     return out
 
 
-def series_of(result: Run, name: str, shape) -> np.ndarray:
-    return result.series[result.generated.series[name]].reshape(shape)  # type: ignore[index]
+def series_of(result: Run, name: str, shape):
+    """The output ``name`` of a series run: a row the kernel wrote, shaped ``shape``, or a constant, an
+    input or a parameter, as a float or an array that broadcasts to ``shape`` (as the NumPy engine keeps
+    them until a result is read)."""
+    kind, what = result.generated.series[name]
+    if kind == "row":
+        return result.series[what].reshape(shape)  # type: ignore[index]
+    if kind == "const":
+        return what
+    table = result.inputs[what] if kind == "input" else result.params[:, what:what + 1]
+    if len(shape) == 2:
+        return table
+    return table[0] if kind == "input" else float(table[0, 0])
 
 
 def has_series(result: Run, name: str) -> bool:

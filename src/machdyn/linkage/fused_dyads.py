@@ -40,7 +40,7 @@ def rrr_code(gen: Generator, d) -> None:
         {k}along = ({La} * {La} - {Lb} * {Lb} + {k}d2) / (2.0 * {k}d)
         {k}h2 = {La} * {La} - {k}along * {k}along
         {k}co = {k}d == 0.0
-        {k}ok = ({k}h2 >= -{ASSEMBLY_TOL!r} * {La} * {La}) or {k}co
+        {k}ok = ({k}h2 >= -{ASSEMBLY_TOL!r} * {La} * {La}) | {k}co
         {k}h = math.sqrt(max({k}h2, 0.0)) if {k}ok else math.nan
         {k}ux = {k}dx / {k}d
         {k}uy = {k}dy / {k}d
@@ -237,7 +237,7 @@ def rpr_code(gen: Generator, d) -> None:
         {k}D = math.hypot({k}dx, {k}dy)
         {k}ratio = {k}e / {k}D
         {k}co = {k}D == 0.0
-        {k}ok = (abs({k}ratio) <= 1.0 + {ASSEMBLY_TOL!r}) or {k}co
+        {k}ok = (abs({k}ratio) <= 1.0 + {ASSEMBLY_TOL!r}) | {k}co
         {k}sh = math.asin(min(max({k}ratio, -1.0), 1.0)) if {k}ok else math.nan
         {k}at = math.atan2({k}dy, {k}dx)
         {k}psi = {k}at - {k}sh if {br} == 1.0 else {k}at - (math.pi - {k}sh)

@@ -12,6 +12,7 @@ No numba here: the text is compiled by :mod:`machdyn.linkage.fused`.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -39,21 +40,34 @@ class Unsupported(Exception):
 
 @dataclass
 class Generated:
-    """The generated function's text and what it needs: parameter columns (each a float or an (N,) array),
-    per-position load rows (each an (M,) array) and the layout of the series and summary outputs."""
+    """The generated code's sections and what the kernels need: parameter columns (each a float or an (N,)
+    array), per-position load rows (each an (M,) array), the layout of the series and summary outputs and
+    how each body's angle follows from them."""
 
-    source: str
+    sections: dict[str, list[str]]
     params: list
     rows: list
-    series: dict[str, int]
+    series: dict[str, tuple]
+    motion_series: int
+    all_series: int
     joints: list[str]
     angles: list
 
-    @property
-    def key(self) -> str:
+    texts: dict = field(default_factory=dict, repr=False)
+    kernels: dict = field(default_factory=dict, repr=False)
+
+    def source(self, mode: str) -> str:
+        """The kernel's text: ``mode`` 'motion' (series of the motion), 'full' (series of motion and forces)
+        or 'summary' (per-design summaries)."""
+        if mode not in self.texts:
+            self.texts[mode] = _kernel_text(self, mode)
+        return self.texts[mode]
+
+    def key(self, mode: str) -> str:
+        """The kernel's name: a hash of its text."""
         import hashlib
 
-        return hashlib.sha1(self.source.encode()).hexdigest()[:16]
+        return hashlib.sha1(self.source(mode).encode()).hexdigest()[:16]
 
 
 @dataclass
@@ -71,6 +85,8 @@ class Generator:
     forces: list = field(default_factory=list)
     series: dict = field(default_factory=dict)
     series_lines: list = field(default_factory=list)
+    stored: dict = field(default_factory=dict)
+    prefixes: dict = field(default_factory=dict)
     counter: int = 0
     bodies: dict = field(default_factory=dict)
     dead_checks: list = field(default_factory=list)
@@ -156,11 +172,11 @@ class Generator:
         ("crank",) the crank angle, ("plus", other body, parameter) the other's angle plus a parameter, or
         ("value", expression) an expression of the kernel."""
         k = self.new("b")
-        names = {f: f"{k}{f}" for f in KERNEL_BODY_FIELDS}
         if local is None:
-            self.emit(self.motion, "\n".join(f"{names[f]} = {p[f]}" for f in ("x", "y", "vx", "vy", "ax", "ay")))
+            names = {f: p[f] for f in ("x", "y", "vx", "vy", "ax", "ay")}
         else:
             u, v = local
+            names = {f: f"{k}{f}" for f in ("x", "y", "vx", "vy", "ax", "ay")}
             self.emit(self.motion, f"""
                 {k}rx = {c} * {u} - {s} * {v}
                 {k}ry = {s} * {u} + {c} * {v}
@@ -172,7 +188,7 @@ class Generator:
                 {k}ax = {p['ax']} + {alpha} * {k}ry + {k}w2 * {k}rx
                 {k}ay = {p['ay']} - {alpha} * {k}rx + {k}w2 * {k}ry
             """)
-        self.emit(self.motion, f"{k}w = {omega}\n{k}al = {alpha}\n{k}c = {c}\n{k}s = {s}")
+        names.update(w=omega, al=alpha, c=c, s=s)
         if angle[0] == "value":
             self.series_out(f"angle.{body}", {"th": angle[1]})
             angle = ("value",)
@@ -180,12 +196,24 @@ class Generator:
             angle = ("plus", angle[1], int(angle[2][1:]))  # the parameter's column
         self.angles.append((body, angle))
         self.bodies[body] = names
+        self.prefixes[body] = k
         self.series_out(f"body.{body}", names)
 
     def series_out(self, prefix: str, names: dict[str, str]) -> None:
+        """Outputs of the series kernels: each a row the kernel writes, unless it is a constant, an input
+        (crank speed, acceleration, cos and sin of the crank angle), a parameter or a row already written."""
         for f, expr in names.items():
-            self.series[f"{prefix}.{f}"] = len(self.series)
-            self.series_lines.append(f"S[{self.series[f'{prefix}.{f}']}, i, j] = {expr}")
+            if re.fullmatch(r"-?\d+\.\d+", expr):
+                self.series[f"{prefix}.{f}"] = ("const", float(expr))
+            elif expr in ("om", "ep", "c0", "s0"):
+                self.series[f"{prefix}.{f}"] = ("input", expr)
+            elif re.fullmatch(r"q\d+", expr):
+                self.series[f"{prefix}.{f}"] = ("param", int(expr[1:]))
+            else:
+                if expr not in self.stored:
+                    self.stored[expr] = len(self.stored)
+                    self.series_lines.append(f"S_{self.stored[expr]}[j] = {expr}")
+                self.series[f"{prefix}.{f}"] = ("row", self.stored[expr])
 
     def line(self, local_from, local_to) -> tuple[str, str, str]:
         """Per design: length and unit direction from one body-frame point to another (dyads._line)."""
@@ -234,7 +262,7 @@ class Generator:
     def add_load(self, body: str, fx: str, fy: str, m: str, section: list | None = None) -> None:
         if body == GROUND:
             return
-        k = self.bodies[body]["x"][:-1]
+        k = self.prefixes[body]
         self.emit(self.forces if section is None else section, f"""
             {k}lx = {k}lx + {fx}
             {k}ly = {k}ly + {fy}
@@ -248,7 +276,7 @@ class Generator:
             self.add_load(body, "0.0", "0.0", f"-({couple})")
 
     def load(self, body: str) -> tuple[str, str, str]:
-        k = self.bodies[body]["x"][:-1]
+        k = self.prefixes[body]
         return f"{k}lx", f"{k}ly", f"{k}lm"
 
     def on(self, body: str, point: str) -> dict[str, str]:
@@ -276,7 +304,7 @@ def _loads(gen: Generator) -> None:
     gx, gy = gen.param(mech.gravity[0]), gen.param(mech.gravity[1])
     gen.emit(out, "ffx = 0.0\nffy = 0.0\nffm = 0.0")
     for name in mech.moving_bodies:
-        k = gen.bodies[name]["x"][:-1]
+        k = gen.prefixes[name]
         gen.emit(out, f"{k}lx = 0.0\n{k}ly = 0.0\n{k}lm = 0.0")
     masses = [(b.name, b.com, b.mass, b.inertia) for b in map(mech.body, mech.moving_bodies)]
     masses += [(pm.body, pm.position, pm.mass, pm.inertia) for pm in mech.point_masses]
@@ -350,8 +378,11 @@ def generate(mech, phi: np.ndarray) -> Generated:
         gen.series_out(f"joint.{j}", outputs)
     gen.series_out("forces", {"torque": "torque", "fx": "ffx", "fy": "ffy", "m": "ffm"})
     force_series = list(gen.series_lines)
-    source = _kernel_text(gen, motion_series, force_series, len(names))
-    return Generated(source, gen.params, gen.rows, gen.series, names, gen.angles)
+    sections = {"prologue": gen.prologue, "motion": gen.motion, "forces": gen.forces,
+                "motion_series": motion_series, "force_series": force_series,
+                "assembled": gen.assembled, "dead": gen.dead_checks}
+    return Generated(sections, gen.params, gen.rows, gen.series, len(motion_series), len(gen.stored), names,
+                     gen.angles)
 
 
 def _indent(lines: list[str], level: int) -> str:
@@ -359,67 +390,94 @@ def _indent(lines: list[str], level: int) -> str:
     return "\n".join(pad + line for line in lines) if lines else pad + "pass"
 
 
-def _kernel_text(gen: Generator, motion_series: list[str], force_series: list[str], n_joints: int) -> str:
-    checks = [f"s_asm = s_asm and {a}" for a in gen.assembled]
-    checks += [f"if not (abs({d}) >= {_DEAD_TOL!r}):\n    s_reg = False" for d in gen.dead_checks]
-    check_lines = "\n".join(checks).splitlines()
-    joint_init = [f"jm{j} = 0.0" for j in range(n_joints)]
-    joint_acc = []
-    for j in range(n_joints):
-        # squared magnitudes: one square root per design instead of one per position
-        joint_acc += [f"fj = r{j}x * r{j}x + r{j}y * r{j}y", f"if fj > jm{j}:", f"    jm{j} = fj"]
-    joint_out = [f"OUT[i, {len(SUMMARY_FIELDS) + j}] = math.sqrt(jm{j}) + bad" for j in range(n_joints)]
-    return f'''import math
+#: Rows written per loop over the positions: with more output streams the compiler no longer vectorises the
+#: loop (its run-time checks that the rows do not overlap grow with the square of their number).
+ROWS_PER_LOOP = 10
+#: At most this many copies of a loop: each copy adds to the compilation time (seconds for a big mechanism),
+#: so beyond it one loop writes every row, unvectorised.
+MAX_LOOPS = 3
 
 
-def kernel(P, phi, C0, S0, W, E, DW, LP, about, series, forces, weighted, S, OUT):
-    n = OUT.shape[0]
-    m = phi.shape[0]
+def _loops(work: list[str], stores: list[str]) -> list[str]:
+    """Loops over the positions, each computing ``work`` and writing at most ROWS_PER_LOOP rows (the
+    compiler drops from each loop what its rows do not need), or one loop when that would take more than
+    MAX_LOOPS copies."""
+    per_loop = ROWS_PER_LOOP if len(stores) <= ROWS_PER_LOOP * MAX_LOOPS else max(len(stores), 1)
+    out = []
+    for start in range(0, max(len(stores), 1), per_loop):
+        out.append(f"        for j in range(m):\n{_indent(work + stores[start:start + per_loop], 3)}\n")
+    return out
+
+
+def _kernel_text(g: Generated, mode: str) -> str:
+    """Per design: the prologue, then one loop over the positions in straight-line, branch-free code that
+    the compiler vectorises (the outputs go to one 1-D row each), then, for summaries, a loop of reductions
+    over the per-position rows of a small scratch table (no designs x positions arrays)."""
+    sec = g.sections
+    head = f"""import math
+
+
+def kernel(P, C0, S0, W, E, DW, LP, about, weighted, S, OUT, B):
+    n = OUT.shape[0] if S.shape[0] == 0 else S.shape[1]
+    m = C0.shape[0]
     zx = about[0]
     zy = about[1]
     for i in range(n):
         ip = i if P.shape[0] > 1 else 0
-        iw = i if W.shape[0] > 1 else 0
-        ie = i if E.shape[0] > 1 else 0
-{_indent(gen.prologue, 2)}
+        Wi = W[i if W.shape[0] > 1 else 0]
+        Ei = E[i if E.shape[0] > 1 else 0]
+{_indent(sec["prologue"], 2)}
+"""
+    position = ["om = Wi[j]", "ep = Ei[j]"] + sec["motion"]
+    if mode != "summary":
+        rows = sec["motion_series"] + (sec["force_series"] if mode == "full" else [])
+        hoist = [f"S_{k} = S[{k}, i]" for k in range(len(rows))]
+        work = position + (sec["forces"] if mode == "full" else [])
+        return head + _indent(hoist, 2) + "\n" + "".join(_loops(work, rows)) + "\n"
+    n_joints = len(g.joints)
+    assembled = " & ".join(f"({a})" for a in sec["assembled"]) or "True"
+    regular = " & ".join(f"(abs({d}) >= {_DEAD_TOL!r})" for d in sec["dead"]) or "True"
+    scratch = ["B_ok = B[0]", "B_reg = B[1]", "B_t = B[2]", "B_fx = B[3]", "B_fy = B[4]", "B_fm = B[5]"]
+    scratch += [f"B_j{j} = B[{6 + j}]" for j in range(n_joints)]
+    stores = [f"B_ok[j] = 1.0 if {assembled} else 0.0", f"B_reg[j] = 1.0 if {regular} else 0.0",
+              "B_t[j] = torque", "B_fx[j] = ffx", "B_fy[j] = ffy", "B_fm[j] = ffm"]
+    stores += [f"B_j{j}[j] = r{j}x * r{j}x + r{j}y * r{j}y" for j in range(n_joints)]
+    init = [f"jm{j} = 0.0" for j in range(n_joints)]
+    reduce = []
+    for j in range(n_joints):  # squared magnitudes: one square root per design
+        reduce += [f"if B_j{j}[j] > jm{j}:", f"    jm{j} = B_j{j}[j]"]
+    joint_out = [f"OUT[i, {len(SUMMARY_FIELDS) + j}] = math.sqrt(jm{j}) + bad" for j in range(n_joints)]
+    return head + _indent(scratch, 2) + "\n" + "".join(_loops(position + sec["forces"], stores)) + f"""
         s_asm = True
         s_reg = True
-        s_fin = True
         s_tmax = 0.0
         s_t2 = 0.0
         s_pw = 0.0
         s_wsum = 0.0
         s_fmax = 0.0
         s_mmax = 0.0
-{_indent(joint_init, 2)}
+{_indent(init, 2)}
         for j in range(m):
-            om = W[iw, j if W.shape[1] > 1 else 0]
-            ep = E[ie, j if E.shape[1] > 1 else 0]
-{_indent(gen.motion, 3)}
-{_indent(check_lines, 3)}
-            if series:
-{_indent(motion_series, 4)}
-            if forces:
-{_indent(gen.forces, 4)}
-                if series:
-{_indent(force_series, 5)}
-                if not math.isfinite(torque):
-                    s_fin = False
-                at = abs(torque)
-                if at > s_tmax:
-                    s_tmax = at
-                wt = DW[j] / abs(om) if weighted else DW[j]
-                s_wsum += wt
-                s_t2 += torque * torque * wt
-                s_pw += torque * om * wt
-                sf = ffx * ffx + ffy * ffy
-                if sf > s_fmax:
-                    s_fmax = sf
-                sm = abs(ffm - (zx * ffy - zy * ffx))
-                if sm > s_mmax:
-                    s_mmax = sm
-{_indent(joint_acc, 4)}
-        ok = s_asm and s_reg and s_fin
+            s_asm = s_asm and B_ok[j] > 0.5
+            s_reg = s_reg and B_reg[j] > 0.5
+            torque = B_t[j]
+            if not math.isfinite(torque):
+                s_reg = False
+            at = abs(torque)
+            if at > s_tmax:
+                s_tmax = at
+            wt = DW[j] / abs(Wi[j]) if weighted else DW[j]
+            s_wsum += wt
+            s_t2 += torque * torque * wt
+            s_pw += torque * Wi[j] * wt
+            sf = B_fx[j] * B_fx[j] + B_fy[j] * B_fy[j]
+            if sf > s_fmax:
+                s_fmax = sf
+            sm = abs(B_fm[j] - (zx * B_fy[j] - zy * B_fx[j]))
+            if sm > s_mmax:
+                s_mmax = sm
+{_indent(reduce, 3)}
+        ok = s_asm and s_reg
         bad = 0.0 if ok else math.nan
         OUT[i, 0] = 1.0 if s_asm else 0.0
         OUT[i, 1] = 1.0 if ok else 0.0
@@ -429,4 +487,4 @@ def kernel(P, phi, C0, S0, W, E, DW, LP, about, series, forces, weighted, S, OUT
         OUT[i, 5] = math.sqrt(s_fmax) + bad
         OUT[i, 6] = s_mmax + bad
 {_indent(joint_out, 2)}
-'''
+"""
