@@ -114,8 +114,8 @@ def drive_table(value, phi: np.ndarray, designs: int | None) -> np.ndarray:
     shaped like phi), one per design (any other 1-D array, as the NumPy engine reads it) or both."""
     arr = np.asarray(value, dtype=float)
     if arr.ndim == 0:
-        arr = arr.reshape(1, 1)
-    elif arr.ndim == 1:
+        return np.full((1, phi.size), float(arr))
+    if arr.ndim == 1:
         arr = arr[None, :] if arr.shape == phi.shape else arr[:, None]
     elif arr.ndim != 2:
         raise InputError(f"The crank speed and acceleration must have at most two axes; got shape {arr.shape}.")
@@ -146,7 +146,7 @@ def run(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 0.0), serie
     E = drive_table(acceleration, phi, mech.design_count)
     LP = np.stack(generated.rows) if generated.rows else np.zeros((1, phi.size))
     DW = np.ascontiguousarray(np.broadcast_to(angle_weights(phi), phi.shape), dtype=float) if not series else phi
-    weighted = bool(np.all(np.abs(W) > 0))
+    weighted = bool(np.all(W != 0.0)) if not series else False
     C0, S0 = np.cos(phi), np.sin(phi)
     out = np.empty((designs if not series else 0, len(SUMMARY_FIELDS) + len(generated.joints)))
     rows = generated.all_series if mode == "full" else generated.motion_series

@@ -6,6 +6,7 @@ and every named point. Arrays of design parameters (N,) and crank angles (M,) br
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -35,7 +36,7 @@ class DyadReport:
     kind: str
     bodies: tuple[str, str]
     det: np.ndarray
-    transmission_fn: object
+    transmission_fn: Callable[[], np.ndarray]
 
     @property
     def transmission(self) -> np.ndarray:

@@ -4,6 +4,7 @@ springs. Shared by kinetostatics (forces) and energy (powers and potentials)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -37,8 +38,8 @@ class Mass:
 
     name: str
     body: str
-    mass: object
-    inertia: object
+    mass: Any
+    inertia: Any
     motion: PointState
 
 

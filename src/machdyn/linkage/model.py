@@ -123,7 +123,7 @@ class Mechanism:
     torques: tuple[BodyTorque, ...] = ()
     springs: tuple[Spring, ...] = ()
     gravity: Vec = (0.0, -9.80665)
-    _index: dict = field(default=None, init=False, repr=False, compare=False)
+    _index: dict = field(default_factory=dict, init=False, repr=False, compare=False)
     _designs: int | None = field(default=None, init=False, repr=False, compare=False)
     #: Derived data kept with the (immutable) model, such as the fused engine's code and parameter table.
     _derived: dict = field(default_factory=dict, init=False, repr=False, compare=False)

@@ -94,6 +94,7 @@ def sweep(
                 out[k][start:stop] = v
         if progress is not None:
             progress(stop, n)
+    assert out is not None  # n >= 1 designs: at least one chunk
     return SweepResult(positions=n * phi.size, **out)
 
 
