@@ -6,6 +6,7 @@ or arrays of N design variants; as columns (N, 1) they broadcast against M crank
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -47,9 +48,25 @@ def local_point(mech: Mechanism, body: str, point: str):
     return column(x), column(y)
 
 
+#: Read-only broadcast views of single values, shared (a view of 0.0 over (N, M) serves every body at rest).
+_VIEWS: dict = {}
+
+
 def full(value, shape):
     """``value`` broadcast to ``shape``: the array itself when it has that shape already, else a read-only
     broadcast view (no copy either way)."""
-    if isinstance(value, np.ndarray) and value.shape == shape:
-        return value
+    if isinstance(value, np.ndarray):
+        if value.shape == shape:
+            return value
+        if value.ndim:
+            return np.broadcast_to(value, shape)
+    if isinstance(value, float | int | np.ndarray) and not isinstance(value, bool):
+        number = float(value)
+        key = (number, math.copysign(1.0, number), shape)  # 0.0 and -0.0 kept apart
+        view = _VIEWS.get(key)
+        if view is None:
+            if len(_VIEWS) >= 512:
+                _VIEWS.clear()
+            view = _VIEWS[key] = np.broadcast_to(number, shape)
+        return view
     return np.broadcast_to(value, shape)
