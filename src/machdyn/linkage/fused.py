@@ -109,6 +109,34 @@ def _prepared(mech, phi: np.ndarray):
     return prepared
 
 
+#: Crank angles per block of :func:`crank_trig`.
+_BLOCK = 64
+
+
+def crank_trig(phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """cos and sin of the crank angles ``phi`` [rad].
+
+    For many evenly spaced angles (as :func:`~machdyn.linkage.kinematics.crank_angles` makes them) they follow
+    from those of every 64th angle and of the 64 steps within a block by the angle-addition formulas,
+    cos(a + b) = cos a cos b - sin a sin b, sin(a + b) = sin a cos b + cos a sin b: a few multiplications per
+    angle instead of two transcendental functions. The result differs from ``np.cos``/``np.sin`` by a few units
+    in the last place (two more roundings, and the grid's own rounding of a + b).
+    """
+    n = phi.size
+    if n < 8 * _BLOCK:
+        return np.cos(phi), np.sin(phi)
+    step = (phi[-1] - phi[0]) / (n - 1)
+    if not step > 0 or np.max(np.abs(np.diff(phi) - step)) > 1e-12 * step:
+        return np.cos(phi), np.sin(phi)
+    coarse = phi[::_BLOCK]
+    fine = np.arange(_BLOCK) * step
+    cc, sc = np.cos(coarse)[:, None], np.sin(coarse)[:, None]
+    cf, sf = np.cos(fine), np.sin(fine)
+    c = (cc * cf - sc * sf).ravel()[:n]
+    s = (sc * cf + cc * sf).ravel()[:n]
+    return c, s
+
+
 def drive_table(value, phi: np.ndarray, designs: int | None) -> np.ndarray:
     """A crank speed or acceleration as a (1 or N, M) table: a single value, one per crank angle (a 1-D array
     shaped like phi), one per design (any other 1-D array, as the NumPy engine reads it) or both."""
@@ -147,7 +175,7 @@ def run(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 0.0), serie
     LP = np.stack(generated.rows) if generated.rows else np.zeros((1, phi.size))
     DW = np.ascontiguousarray(np.broadcast_to(angle_weights(phi), phi.shape), dtype=float) if not series else phi
     weighted = bool(np.all(W != 0.0)) if not series else False
-    C0, S0 = np.cos(phi), np.sin(phi)
+    C0, S0 = crank_trig(phi)
     out = np.empty((designs if not series else 0, len(SUMMARY_FIELDS) + len(generated.joints)))
     rows = generated.all_series if mode == "full" else generated.motion_series
     S = np.empty((rows, designs, phi.size)) if series else np.empty((0, 1, 1))
