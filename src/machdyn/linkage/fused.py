@@ -34,6 +34,7 @@ from .refs import GROUND, column, full
 from .state import BodyState
 
 _KERNELS: dict[str, Any] = {}
+_NO_ROWS = np.zeros((1, 1))  # the per-position load table of a mechanism without such loads (never read)
 
 
 def _cache_dir() -> Path | None:
@@ -172,7 +173,7 @@ def run(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 0.0), serie
     kernel = _load_kernel(generated, mode)
     W = drive_table(speed, phi, mech.design_count)
     E = drive_table(acceleration, phi, mech.design_count)
-    LP = np.stack(generated.rows) if generated.rows else np.zeros((1, phi.size))
+    LP = np.stack(generated.rows) if generated.rows else _NO_ROWS
     DW = np.ascontiguousarray(np.broadcast_to(angle_weights(phi), phi.shape), dtype=float) if not series else phi
     weighted = bool(np.all(W != 0.0)) if not series else False
     C0, S0 = crank_trig(phi)

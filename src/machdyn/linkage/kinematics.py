@@ -6,6 +6,7 @@ and every named point. Arrays of design parameters (N,) and crank angles (M,) br
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -169,7 +170,7 @@ def kinematics(
         eps = column(eps) if eps.ndim == 1 and eps.shape != phi.shape else eps
     designs = (mech.design_count, 1) if mech.design_count is not None else ()
     shape = np.broadcast_shapes(designs, np.shape(phi), np.shape(omega), np.shape(eps))
-    if use_fused(engine, mech, phi, int(np.prod(shape))):
+    if engine != "numpy" and use_fused(engine, mech, phi, math.prod(shape)):
         from .fused import fused_kinematics
 
         return fused_kinematics(mech, phi, omega, eps, shape, on_fail)

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from .engines import check_engine
 from .kinematics import Kinematics, kinematics
 from .loads import applied_forces, applied_torques, mass_elements, spring_states
 from .model import Mechanism, joints
@@ -170,6 +171,7 @@ def kinetostatics(
 
     Valid away from dead positions, where the reactions grow without bound (the dyad determinant vanishes).
     """
+    check_engine(engine)
     if kinematics_result is None and engine != "numpy":
         from .fused import fused_kinetostatics
 
