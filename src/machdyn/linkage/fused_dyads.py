@@ -118,7 +118,7 @@ def _guide(gen: Generator, body: str, point: str, angle) -> tuple[dict, str, str
     ga = gen.param(angle)
     k = gen.new("g")
     gen.emit(gen.prologue, f"{k}ca = math.cos({ga})\n{k}sa = math.sin({ga})")
-    G = gen.point(body, gen.local(body, point))
+    G = gen.point(body, gen.local(body, point, value=True))
     gen.emit(gen.motion, f"""
         {k}ux = {S['c']} * {k}ca - {S['s']} * {k}sa
         {k}uy = {S['s']} * {k}ca + {S['c']} * {k}sa
@@ -217,7 +217,7 @@ def rpr_code(gen: Generator, d) -> None:
     """RPR: machdyn.linkage.dyads.rpr_motion and rpr_forces, in scalars."""
     a_pin = gen.local(d.a, split_ref(d.pin_a)[1])
     b_pin = gen.local(d.b, split_ref(d.pin_b)[1])
-    slide = gen.local(d.b, d.slide[0])
+    slide = gen.local(d.b, d.slide[0], value=True)
     sang = gen.param(d.slide[1])
     br = gen.param(float(d.branch))
     k = gen.new("d")

@@ -120,14 +120,17 @@ class Generator:
         self.rows.append(np.ascontiguousarray(arr))
         return f"LP[{len(self.rows) - 1}, j]"
 
-    def local(self, body: str, point: str) -> tuple[str, str] | None:
-        """Parameter names of a body-frame point, or None if it is the frame origin for every design."""
+    def local(self, body: str, point: str, value: bool = False) -> tuple[str, str] | None:
+        """Parameter names of a body-frame point, or None for a joint at the frame origin of a moving body
+        (as the builders place a link's first joint): that shortcut is part of the topology, so it is taken
+        for joints only; ground points and ``value`` points (centres of mass, guides, load points) are always
+        parameters, so that a value that happens to be zero does not make another topology."""
         xy = self.mech.ground[point] if body == GROUND else self.mech.body(body).points[point]
-        return self.local_xy(xy)
+        return self.local_xy(xy, value or body == GROUND)
 
-    def local_xy(self, xy) -> tuple[str, str] | None:
+    def local_xy(self, xy, value: bool = False) -> tuple[str, str] | None:
         u, v = xy
-        if isinstance(u, float | int) and isinstance(v, float | int) and u == 0 and v == 0:
+        if not value and isinstance(u, float | int) and isinstance(v, float | int) and u == 0 and v == 0:
             return None
         return self.param(u), self.param(v)
 
@@ -162,9 +165,9 @@ class Generator:
         """)
         return {k: f"{p}{k}" for k in ("x", "y", "vx", "vy", "ax", "ay")}
 
-    def ref_point(self, ref: str, section: list | None = None) -> dict[str, str]:
+    def ref_point(self, ref: str, section: list | None = None, value: bool = False) -> dict[str, str]:
         body, name = split_ref(ref)
-        return self.point(body, self.local(body, name), section)
+        return self.point(body, self.local(body, name, value), section)
 
     def place(self, body: str, p: dict, local, omega: str, alpha: str, c: str, s: str, angle: tuple) -> None:
         """The state of ``body`` whose point ``local`` moves as ``p`` (body_from_point). Its angle is computed
@@ -309,7 +312,7 @@ def _loads(gen: Generator) -> None:
     masses = [(b.name, b.com, b.mass, b.inertia) for b in map(mech.body, mech.moving_bodies)]
     masses += [(pm.body, pm.position, pm.mass, pm.inertia) for pm in mech.point_masses]
     for body, com, mass, inertia in masses:
-        G = gen.point(body, gen.local_xy(com), out)
+        G = gen.point(body, gen.local_xy(com, value=True), out)
         m, i = gen.param(mass), gen.param(inertia)
         f = gen.new("m")
         gen.emit(out, f"{f}fx = {m} * ({gx} - {G['ax']})\n{f}fy = {m} * ({gy} - {G['ay']})")
@@ -319,14 +322,14 @@ def _loads(gen: Generator) -> None:
         on = window(gen.phi, force.active)
         fx, fy = _value(gen, force.fx, on), _value(gen, force.fy, on)
         body = split_ref(force.point)[0]
-        p = gen.ref_point(force.point, out)
+        p = gen.ref_point(force.point, out, value=True)
         f = gen.new("e")
         gen.emit(out, f"{f}x = {fx}\n{f}y = {fy}")
         gen.add_load(body, f"{f}x", f"{f}y", f"{p['x']} * {f}y - {p['y']} * {f}x")
     for torque in mech.torques:
         gen.add_load(torque.body, "0.0", "0.0", _value(gen, torque.torque, window(gen.phi, torque.active)))
     for spring in mech.springs:
-        p1, p2 = gen.ref_point(spring.point_1, out), gen.ref_point(spring.point_2, out)
+        p1, p2 = gen.ref_point(spring.point_1, out, True), gen.ref_point(spring.point_2, out, True)
         k, l0 = gen.param(spring.stiffness), gen.param(spring.free_length)
         f = gen.new("k")
         gen.emit(out, f"""
