@@ -320,7 +320,7 @@ class CounterweightSpec(Spec):
 
 class OutputSpec(Spec):
     shaking_moment_about: Point = (0.0, 0.0)
-    harmonics: int = Field(default=6, ge=1, le=100, strict=True)
+    harmonics: int = Field(6, ge=1, le=100, strict=True)
 
 
 class LinkageProblem(Spec):
