@@ -56,6 +56,12 @@ TARGET_VS_NUMPY = 2.0  # kinematics within this factor of the NumPy reference
 TARGET_KINETOSTATICS_VS_NUMPY = 5.0  # full kinetostatics within this factor of the NumPy kinematics
 TARGET_SWEEP_POSITIONS_PER_S = 2.0e6
 TARGET_SWEEP_PEAK_MB = 2048.0
+TARGET_FUSED_SWEEP_POSITIONS_PER_S = 12.0e6  # fused sweep with full kinetostatics
+TARGET_FUSED_KIN_VS_NUMPY = 1.0  # fused kinematics of one cycle at most as long as the NumPy reference
+TARGET_FUSED_KINETOSTATICS_VS_NUMPY = 2.0  # fused full kinetostatics within 2x the NumPy kinematics reference
+TARGET_ANALYSE_MS = 1.0  # analyse of one design at 360 positions
+ANALYSE_POSITIONS = 360
+RATIO_REPEATS = 15  # interleaved repeats for the ratio statistics
 
 INSTALL_HINT = "install the bench extra: make bench, or pip install -e '.[bench]'"
 
@@ -199,6 +205,50 @@ def best_time_ms(
         if was_enabled:
             gc.enable()
     return best * 1e3, result
+
+
+def batch_size(fn: Callable[[], Any], min_batch_s: float = 0.02) -> int:
+    """Calls per batch so that a batch of ``fn`` lasts at least ``min_batch_s``."""
+    fn()
+    number = 1
+    while True:
+        start = time.perf_counter()
+        for _ in range(number):
+            fn()
+        if time.perf_counter() - start >= min_batch_s or number >= 1_000_000:
+            return number
+        number *= 2
+
+
+def interleaved_times(fns: dict[str, Callable[[], Any]], repeats: int) -> dict[str, list[float]]:
+    """Per repeat, the time of one call [ms] of every function, the functions timed one after the other in
+    each repeat (so that a change of machine load affects all of them alike); garbage collector paused."""
+    numbers = {k: batch_size(f) for k, f in fns.items()}
+    out: dict[str, list[float]] = {k: [] for k in fns}
+    was_enabled = gc.isenabled()
+    gc.disable()
+    try:
+        for _ in range(repeats):
+            for k, f in fns.items():
+                start = time.perf_counter()
+                for _ in range(numbers[k]):
+                    f()
+                out[k].append((time.perf_counter() - start) / numbers[k] * 1e3)
+    finally:
+        if was_enabled:
+            gc.enable()
+    return out
+
+
+def stats(values: list[float]) -> dict[str, float]:
+    """min, median and max of ``values``."""
+    arr = np.asarray(values, dtype=float)
+    return {"min": float(arr.min()), "median": float(np.median(arr)), "max": float(arr.max())}
+
+
+def ratio_stats(num: list[float], den: list[float]) -> dict[str, float]:
+    """min/median/max over repeats of the per-repeat ratio num/den."""
+    return stats([a / b for a, b in zip(num, den, strict=True)])
 
 
 def version_of(dist: str) -> str | None:
@@ -485,6 +535,88 @@ def bench_machdyn(linkage: Any, quick: bool) -> tuple[Row, Row, dict[str, Any]]:
     return kin_row, kst_row, info
 
 
+def bench_engines(linkage: Any, quick: bool) -> tuple[list[Row], dict[str, Any]]:
+    """The fused engine against the NumPy engine and the NumPy reference: kinematics and full kinetostatics of
+    the cycle, and analyse at 360 positions, timed interleaved over repeats (ratios min/median/max)."""
+    phi = crank_angles(N_ANGLES)
+    ref = fourbar_reference(CRANK, COUPLER, ROCKER, GROUND, phi, OMEGA)
+    mech = linkage.four_bar(CRANK, COUPLER, ROCKER, GROUND)
+    kin_row = Row("kin_fused", "machdyn, fused", "kinematics(engine='fused')", note="compiled, cached")
+    kst_row = Row("kinetostatics_fused", "machdyn, fused", "kinetostatics(engine='fused')",
+                  note="+ all joint forces")
+    info: dict[str, Any] = {}
+    t0 = time.perf_counter()
+    try:
+        linkage.kinematics(mech, phi, speed=OMEGA, engine="fused")
+        linkage.kinetostatics(mech, phi, speed=OMEGA, engine="fused")
+    except Exception as exc:  # numba missing or the engine failing: reported, not fatal
+        for row in (kin_row, kst_row):
+            row.problem = f"fused engine failed: {type(exc).__name__}: {exc}"
+        return [kin_row, kst_row], info
+    info["first_call_s"] = time.perf_counter() - t0  # compilation, or loading the compiled kernels
+
+    def kin(engine: str) -> Callable[[], tuple[np.ndarray, ...]]:
+        def call() -> tuple[np.ndarray, ...]:
+            k = linkage.kinematics(mech, phi, speed=OMEGA, engine=engine)
+            cpl, rck = k.body("coupler"), k.body("rocker")
+            return cpl.angle, cpl.omega, cpl.alpha, rck.angle, rck.omega, rck.alpha
+        return call
+
+    def kst(engine: str) -> Callable[[], Any]:
+        def call() -> Any:
+            f = linkage.kinetostatics(mech, phi, speed=OMEGA, engine=engine)
+            return f.driving_torque, [f.joint(j.name) for j in f.joints], f
+        return call
+
+    phi_a = linkage.crank_angles(ANALYSE_POSITIONS)
+
+    def analyse_only() -> Any:
+        return linkage.analyse(mech, phi_a, OMEGA)
+
+    def analyse_sized() -> Any:
+        a = linkage.analyse(mech, phi_a, OMEGA)
+        return linkage.diagnose(mech, kinematics_result=a.kinematics)
+
+    def analyse_fresh() -> Any:  # a new mechanism each call: its diagnostics (3600 samples) computed anew
+        m = linkage.four_bar(CRANK, COUPLER, ROCKER, GROUND)
+        return linkage.analyse(m, phi_a, OMEGA).diagnostics
+
+    fns = {"numpy_ref": reference_kinematics, "kin_numpy": kin("numpy"), "kin_fused": kin("fused"),
+           "kst_numpy": kst("numpy"), "kst_fused": kst("fused"), "analyse": analyse_only,
+           "analyse_sized": analyse_sized, "analyse_fresh": analyse_fresh}
+    times = interleaved_times(fns, 5 if quick else RATIO_REPEATS)
+    info["times_ms"] = {k: stats(v) for k, v in times.items()}
+    info["ratios"] = {
+        "kin_fused_over_numpy_ref": ratio_stats(times["kin_fused"], times["numpy_ref"]),
+        "kinetostatics_fused_over_numpy_ref": ratio_stats(times["kst_fused"], times["numpy_ref"]),
+        "kin_numpy_over_numpy_ref": ratio_stats(times["kin_numpy"], times["numpy_ref"]),
+        "kinetostatics_numpy_over_numpy_ref": ratio_stats(times["kst_numpy"], times["numpy_ref"]),
+        "kin_fused_over_kin_numpy": ratio_stats(times["kin_fused"], times["kin_numpy"]),
+        "kinetostatics_fused_over_kinetostatics_numpy": ratio_stats(times["kst_fused"], times["kst_numpy"]),
+    }
+    out = kin("fused")()
+    kin_row.ms = info["times_ms"]["kin_fused"]["min"]
+    kin_row.angle_diff = wrapped_max_diff(out[3], ref["theta4"])
+    kin_row.extra.update(
+        coupler_angle_diff_rad=wrapped_max_diff(out[0], ref["theta3"]),
+        rocker_omega_rel_diff=rel_diff(out[4], ref["omega4"]),
+        rocker_alpha_rel_diff=rel_diff(out[5], ref["alpha4"]),
+    )
+    torque = kst("fused")()[0]
+    torque_ref = reference_driving_torque(CRANK, COUPLER, ROCKER, GROUND, phi, OMEGA)
+    kst_row.ms = info["times_ms"]["kst_fused"]["min"]
+    kst_row.angle_diff = kin_row.angle_diff
+    kst_row.extra["torque_rel_diff"] = rel_diff(torque, torque_ref)
+    numpy_torque = linkage.kinetostatics(mech, phi, speed=OMEGA).driving_torque
+    info["fused_vs_numpy_torque_rel_diff"] = rel_diff(torque, numpy_torque)
+    info["ok"] = bool(kst_row.extra["torque_rel_diff"] <= TORQUE_RTOL
+                      and info["fused_vs_numpy_torque_rel_diff"] <= 1e-12
+                      and kin_row.extra["rocker_omega_rel_diff"] <= DERIV_RTOL)
+    if not info["ok"]:
+        kst_row.problem = "the fused engine disagrees with the reference or with the NumPy engine"
+    return [kin_row, kst_row], info
+
+
 def sweep_designs(n: int, seed: int = SWEEP_SEED) -> tuple[np.ndarray, ...]:
     """n four-bar designs, each link +-SWEEP_SPREAD around the benchmark's, all Grashof crank-rockers."""
     rng = np.random.default_rng(seed)
@@ -503,7 +635,7 @@ def sweep_designs(n: int, seed: int = SWEEP_SEED) -> tuple[np.ndarray, ...]:
     return links[:, 0], links[:, 1], links[:, 2], links[:, 3]
 
 
-def sweep_worker(quick: bool) -> dict[str, Any]:
+def sweep_worker(quick: bool, engine: str = "numpy") -> dict[str, Any]:
     """Runs in its own process so that its peak resident memory is the sweep's alone."""
     linkage, error = import_machdyn()
     if error:
@@ -513,16 +645,19 @@ def sweep_worker(quick: bool) -> dict[str, Any]:
     phi = crank_angles(SWEEP_POSITIONS)
     mech = linkage.four_bar(crank, coupler, rocker, ground)
     warm = linkage.four_bar(crank[:50], coupler[:50], rocker[:50], ground[:50])
-    linkage.sweep(warm, phi, speed=OMEGA)
+    t0 = time.perf_counter()
+    linkage.sweep(warm, phi, speed=OMEGA, engine=engine)  # for "fused": compiles or loads the kernel
+    warm_s = time.perf_counter() - t0
     rss_before_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
-    best = math.inf
+    runs: list[float] = []
     result = None
-    for _ in range(1 if quick else 2):
+    for _ in range(1 if quick else (2 if engine == "numpy" else 5)):
         result = None
         gc.collect()
         t0 = time.perf_counter()
-        result = linkage.sweep(mech, phi, speed=OMEGA)
-        best = min(best, time.perf_counter() - t0)
+        result = linkage.sweep(mech, phi, speed=OMEGA, engine=engine)
+        runs.append(time.perf_counter() - t0)
+    best = min(runs)
     peak_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0  # Linux: KiB
     assembled = np.asarray(result.assembled)
     # spot check: RMS driving torque of a few designs against the energy balance in NumPy
@@ -533,6 +668,9 @@ def sweep_worker(quick: bool) -> dict[str, Any]:
     rms_ref = np.sqrt(np.mean(t_ref * t_ref, axis=1))
     rms = np.asarray(result.rms_driving_torque)[idx]
     return {
+        "engine": engine,
+        "warmup_s": warm_s,
+        "runs_s": runs,
         "designs": n,
         "positions": SWEEP_POSITIONS,
         "seconds": best,
@@ -566,7 +704,8 @@ def fmt(x: float | None, spec: str) -> str:
     return "—" if x is None else format(x, spec)
 
 
-def print_report(rows: list[Row], kin_ms: float | None, sweep: dict[str, Any], targets: list[tuple]) -> None:
+def print_report(rows: list[Row], kin_ms: float | None, sweep: dict[str, Any], targets: list[tuple],
+                 engines: dict[str, Any], fused_sweep: dict[str, Any]) -> None:
     from rich.console import Console
     from rich.markup import escape
     from rich.table import Table
@@ -603,18 +742,32 @@ def print_report(rows: list[Row], kin_ms: float | None, sweep: dict[str, Any], t
     )
     for col in ("designs", "positions", "best time s", "positions / s", "peak RSS MB", "all assembled"):
         sw.add_column(col, justify="right")
-    if "error" not in sweep:
-        sw.add_row(
-            f"{sweep['designs']:,}",
-            str(sweep["positions"]),
-            f"{sweep['seconds']:.3f}",
-            f"{sweep['positions_per_s']:,.0f}",
-            f"{sweep['peak_mb']:.0f}",
-            yes_no[sweep["all_assembled"]],
-        )
-    else:
-        sw.add_row("—", "—", "—", "—", "—", "—")
+    sw.add_column("engine")
+    for run in (sweep, fused_sweep):
+        if "error" not in run:
+            sw.add_row(
+                f"{run['designs']:,}",
+                str(run["positions"]),
+                f"{run['seconds']:.3f}",
+                f"{run['positions_per_s']:,.0f}",
+                f"{run['peak_mb']:.0f}",
+                yes_no[run["all_assembled"]],
+                run.get("engine", ""),
+            )
+        else:
+            sw.add_row("—", "—", "—", "—", "—", "—", "—")
     console.print(sw)
+
+    if engines.get("ratios"):
+        et = Table(title="Engines: time ratios per interleaved repeat (min / median / max)", title_justify="left")
+        et.add_column("ratio")
+        for col in ("min", "median", "max"):
+            et.add_column(col, justify="right")
+        for key, st in engines["ratios"].items():
+            et.add_row(key, *(f"{st[c]:.2f}" for c in ("min", "median", "max")))
+        for key, st in engines["times_ms"].items():
+            et.add_row(f"{key} [ms]", *(f"{st[c]:.3f}" for c in ("min", "median", "max")))
+        console.print(et)
 
     tt = Table(title="Targets", title_justify="left")
     tt.add_column("target")
@@ -628,6 +781,8 @@ def print_report(rows: list[Row], kin_ms: float | None, sweep: dict[str, Any], t
     problems = [f"{r.label} {r.call}: {r.problem}" for r in rows if r.problem]
     if "error" in sweep:
         problems.append(f"machdyn sweep: {sweep['error']}")
+    if "error" in fused_sweep:
+        problems.append(f"machdyn fused sweep: {fused_sweep['error']}")
     for line in problems:
         console.print(f"[bold red]not measured or failed[/]: {escape(line)}", highlight=False)
     console.file.flush()
@@ -638,12 +793,14 @@ def main(argv: list[str] | None = None) -> int:
     quick_help = "fewer repeats and a 1,000-design sweep (smoke test)"
     parser.add_argument("--quick", action="store_true", help=quick_help)
     parser.add_argument("--strict", action="store_true", help="exit non-zero when a target is missed")
-    parser.add_argument("--worker", choices=("pylinkage-pure", "sweep"), help=argparse.SUPPRESS)
+    parser.add_argument("--worker", choices=("pylinkage-pure", "sweep", "sweep-fused"), help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
 
     if args.worker:
-        worker = pylinkage_pure_worker if args.worker == "pylinkage-pure" else sweep_worker
-        out = worker(args.quick)
+        if args.worker == "pylinkage-pure":
+            out = pylinkage_pure_worker(args.quick)
+        else:
+            out = sweep_worker(args.quick, "fused" if args.worker == "sweep-fused" else "numpy")
         print(json.dumps(out))
         return 0
 
@@ -659,13 +816,17 @@ def main(argv: list[str] | None = None) -> int:
         kin_row = Row("kin", "machdyn", "kinematics", problem=str(machdyn_error))
         kst_row = Row("kinetostatics", "machdyn", "kinetostatics", problem=str(machdyn_error))
         sweep: dict[str, Any] = {"error": str(machdyn_error)}
+        fused_sweep: dict[str, Any] = {"error": str(machdyn_error)}
+        engine_rows, engines = [], {}
     else:
         kin_row, kst_row, info = bench_machdyn(linkage, args.quick)
+        engine_rows, engines = bench_engines(linkage, args.quick)
         sweep = run_worker("sweep", args.quick)
+        fused_sweep = run_worker("sweep-fused", args.quick)
 
     peer_rows = bench_pylinkage(args.quick)
     mech_row = bench_mechanism(args.quick)
-    rows = [ref_row, kin_row, kst_row, *peer_rows, mech_row]
+    rows = [ref_row, kin_row, kst_row, *engine_rows, *peer_rows, mech_row]
 
     by_key = {r.key: r for r in rows}
     kin_ms, kst_ms = kin_row.ms, kst_row.ms
@@ -689,6 +850,18 @@ def main(argv: list[str] | None = None) -> int:
         "sweep_throughput": check(pps, lambda v: v >= TARGET_SWEEP_POSITIONS_PER_S),
         "sweep_memory": check(peak, lambda v: v < TARGET_SWEEP_PEAK_MB),
     }
+    ratios = engines.get("ratios", {})
+    times_ms = engines.get("times_ms", {})
+    fused_pps = fused_sweep.get("positions_per_s")
+    r_fk = ratios.get("kin_fused_over_numpy_ref", {}).get("median")
+    r_fks = ratios.get("kinetostatics_fused_over_numpy_ref", {}).get("median")
+    analyse_ms = times_ms.get("analyse", {}).get("median")
+    met.update({
+        "fused_sweep_throughput": check(fused_pps, lambda v: v >= TARGET_FUSED_SWEEP_POSITIONS_PER_S),
+        "fused_kin_vs_numpy_ref": check(r_fk, lambda r: r <= TARGET_FUSED_KIN_VS_NUMPY),
+        "fused_kinetostatics_vs_numpy_ref": check(r_fks, lambda r: r <= TARGET_FUSED_KINETOSTATICS_VS_NUMPY),
+        "analyse_360_ms": check(analyse_ms, lambda v: v < TARGET_ANALYSE_MS),
+    })
     targets = [
         (
             "kinematics vs pure-Python pylinkage",
@@ -726,6 +899,30 @@ def main(argv: list[str] | None = None) -> int:
             f"< {TARGET_SWEEP_PEAK_MB:.0f} MB",
             met["sweep_memory"],
         ),
+        (
+            f"fused sweep {fused_sweep.get('designs', SWEEP_DESIGNS):,} designs × {SWEEP_POSITIONS} positions",
+            f"{fmt(fused_pps, ',.0f')} pos/s",
+            f"≥ {TARGET_FUSED_SWEEP_POSITIONS_PER_S:,.0f} pos/s",
+            met["fused_sweep_throughput"],
+        ),
+        (
+            "fused kinematics / NumPy reference (median)",
+            f"{fmt(r_fk, '.2f')}×",
+            f"≤ {TARGET_FUSED_KIN_VS_NUMPY:g}×",
+            met["fused_kin_vs_numpy_ref"],
+        ),
+        (
+            "fused kinetostatics / NumPy kinematics reference (median)",
+            f"{fmt(r_fks, '.2f')}×",
+            f"≤ {TARGET_FUSED_KINETOSTATICS_VS_NUMPY:g}×",
+            met["fused_kinetostatics_vs_numpy_ref"],
+        ),
+        (
+            f"analyse at {ANALYSE_POSITIONS} positions (median; diagnostics not read)",
+            f"{fmt(analyse_ms, '.3f')} ms",
+            f"< {TARGET_ANALYSE_MS:g} ms",
+            met["analyse_360_ms"],
+        ),
     ]
 
     accuracy = {r.key: r.angle_ok for r in rows}
@@ -733,9 +930,17 @@ def main(argv: list[str] | None = None) -> int:
     sweep_torque_ok = sweep_ok and sweep["rms_torque_rel_diff"] <= SWEEP_TORQUE_RTOL
     machdyn_checks_ok = linkage is not None and info.get("derivatives_ok") and info.get("torque_ok")
     sweep_checks_ok = sweep_ok and sweep["all_assembled"] and sweep_torque_ok
+    fused_ok = "error" not in fused_sweep and fused_sweep["all_assembled"] and (
+        fused_sweep["rms_torque_rel_diff"] <= SWEEP_TORQUE_RTOL) and engines.get("ok", False)
+    sweep_checks_ok = bool(sweep_checks_ok and fused_ok)
     machdyn_checks_ok = bool(machdyn_checks_ok and sweep_checks_ok)
 
-    print_report(rows, kin_ms, sweep, targets)
+    sweep_runs = {k: stats(v["runs_s"]) for k, v in (("numpy", sweep), ("fused", fused_sweep)) if "runs_s" in v}
+    engines["sweep_runs_s"] = sweep_runs
+    if "numpy" in sweep_runs and "fused" in sweep_runs:  # throughput ratio over every pair of runs
+        engines["ratios"]["sweep_numpy_time_over_fused_time"] = stats(
+            [a / b for a in sweep["runs_s"] for b in fused_sweep["runs_s"]])
+    print_report(rows, kin_ms, sweep, targets, engines, fused_sweep)
 
     sweep_headline = ("seconds", "positions_per_s", "peak_mb")  # top-level keys already
     result: dict[str, Any] = {
@@ -762,6 +967,10 @@ def main(argv: list[str] | None = None) -> int:
         "ratio_pylinkage_numba_over_kin": r_nb,
         "ratio_kin_over_numpy_ref": r_np,
         "ratio_kinetostatics_over_numpy_ref": r_kst,
+        "fused_sweep_positions_per_s": fused_pps,
+        "fused_sweep_seconds": fused_sweep.get("seconds"),
+        "fused_sweep_peak_mb": fused_sweep.get("peak_mb"),
+        "engines": engines,
         "targets_met": met,
         "all_targets_met": all(v is True for v in met.values()),
         "accuracy_ok": accuracy_ok,
@@ -770,10 +979,12 @@ def main(argv: list[str] | None = None) -> int:
             **{f"{r.key}_{k}": v for r in rows for k, v in r.extra.items() if k != "version"},
             **{f"machdyn_{k}": v for k, v in info.items()},
             **{f"sweep_{k}": v for k, v in sweep.items() if k not in sweep_headline},
+            **{f"fused_sweep_{k}": v for k, v in fused_sweep.items() if k not in sweep_headline},
         },
         "problems": {
             **{r.key: r.problem for r in rows if r.problem},
             **({"sweep": sweep["error"]} if not sweep_ok else {}),
+            **({"fused_sweep": fused_sweep["error"]} if "error" in fused_sweep else {}),
         },
         "versions": {
             "python": platform.python_version(),

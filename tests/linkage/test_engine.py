@@ -285,3 +285,37 @@ def test_joint_names_are_unique_in_solution_order():
     names = [j.name for j in forces.joints]
     assert names[:2] == ["O", "A"] and "A:rod_2" in names
     assert names == [j[0] for j in joints(mech)]
+
+
+def test_diagnostics_sized_to_the_request_equal_a_resampling():
+    # At constant crank speed the diagnostics of an analysed revolution of n positions are those of diagnose at n
+    # samples: the same dead and limit positions, strokes and time ratio (to rounding: the rates are scaled by
+    # the crank speed before the zero crossings are interpolated).
+    for mech in (four_bar(0.04, 0.12, 0.08, 0.10), slider_crank(0.1, 0.4, 0.05), four_bar(1.0, 2.0, 1.0, 2.0)):
+        phi = crank_angles(720)
+        kin = kinematics(mech, phi, 7.5, on_fail="mask")
+        sized = diagnose(mech, kinematics_result=kin)
+        resampled = diagnose(mech, 720)
+        assert sized.grashof == resampled.grashof
+        assert sized.assembly_ranges == resampled.assembly_ranges
+        np.testing.assert_allclose(sized.dead_positions, resampled.dead_positions, rtol=1e-12, atol=1e-12)
+        assert [p.body for p in sized.limit_positions] == [p.body for p in resampled.limit_positions]
+        for a, b in zip(sized.limit_positions, resampled.limit_positions, strict=True):
+            assert abs(a.crank_angle - b.crank_angle) < 1e-12 and abs(a.value - b.value) < 1e-12
+        assert sized.strokes.keys() == resampled.strokes.keys()
+        for body, stroke in sized.strokes.items():
+            assert stroke == pytest.approx(resampled.strokes[body], rel=1e-12)
+        assert (sized.time_ratio is None) == (resampled.time_ratio is None)
+        if sized.time_ratio is not None:
+            assert sized.time_ratio == pytest.approx(resampled.time_ratio, rel=1e-12)
+    with pytest.raises(InputError, match="full revolution"):
+        diagnose(mech, kinematics_result=kinematics(mech, np.linspace(0.0, 1.0, 50), on_fail="mask"))
+
+
+def test_analysis_diagnostics_are_computed_when_read_and_kept():
+    mech = four_bar(0.04, 0.12, 0.08, 0.10)
+    result = analyse(mech, crank_angles(360), 10.0)
+    assert "diagnostics" not in vars(result)  # not computed by analyse itself
+    first = result.diagnostics
+    assert first == diagnose(mech) and diagnose(mech) is first  # kept with the (immutable) mechanism
+    assert analyse(mech, crank_angles(360), 10.0, diagnostics=False).diagnostics is None

@@ -52,9 +52,9 @@ length = st.floats(0.3, 3.0)
 
 
 @st.composite
-def base_mechanisms(draw, full_cycle=False):
+def base_mechanisms(draw, full_cycle=False, kinds=("four_bar", "slider_crank", "inverted", "six_bar")):
     """A random linkage of one of the four families (``full_cycle``: one whose crank turns fully)."""
-    kind = draw(st.sampled_from(["four_bar", "slider_crank", "inverted", "six_bar"]))
+    kind = draw(st.sampled_from(list(kinds)))
     branch = draw(st.sampled_from([1, -1]))
     if kind == "four_bar":
         if full_cycle:  # Grashof crank-rocker or double-crank: the crank (or ground) is the shortest link
@@ -84,9 +84,10 @@ def base_mechanisms(draw, full_cycle=False):
 
 
 @st.composite
-def mechanisms(draw, full_cycle=False, loads=True, gravity=True):
-    """A random linkage with random mass properties and (optionally) loads and gravity."""
-    mech = draw(base_mechanisms(full_cycle=full_cycle))
+def mechanisms(draw, full_cycle=False, loads=True, gravity=True, base=None):
+    """A random linkage with random mass properties and (optionally) loads and gravity; ``base`` draws the
+    bare linkage (default: :func:`base_mechanisms`)."""
+    mech = draw(base if base is not None else base_mechanisms(full_cycle=full_cycle))
     bodies = tuple(
         replace(b, mass=draw(st.floats(0.1, 10.0)), inertia=draw(st.floats(0.0, 2.0)),
                 com=(draw(st.floats(-0.5, 1.5)), draw(st.floats(-0.5, 0.5))))

@@ -3,8 +3,9 @@ and design variants. See :mod:`machdyn.linkage.model` for the model and its conv
 
 from .analysis import Analysis, analyse
 from .builders import double_slider_crank, four_bar, inverted_slider_crank, six_bar, slider_crank
-from .diagnostics import Diagnostics, diagnose, grashof_type
+from .diagnostics import Diagnostics, diagnose
 from .energy import Energy, WorkBalance, energy
+from .grashof import grashof_type
 from .harmonics import Harmonics, harmonics
 from .kinematics import Kinematics, SlideMotion, angle_ranges, crank_angles, kinematics
 from .kinetostatics import Forces, Joint, Reaction, kinetostatics

@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -15,14 +16,21 @@ from .model import Mechanism
 
 @dataclass(frozen=True)
 class Analysis:
-    """Results of :func:`analyse`: ``kinematics``, ``forces``, ``energy``, ``diagnostics`` (None for design
-    sweeps) and ``work_balance`` (the built-in work-energy check)."""
+    """Results of :func:`analyse`: ``kinematics``, ``forces``, ``energy``, ``work_balance`` (the built-in
+    work-energy check) and ``diagnostics`` (None for design sweeps), computed when first read."""
 
     kinematics: Kinematics
     forces: Forces
     energy: Energy
-    diagnostics: Diagnostics | None
     work_balance: WorkBalance
+    with_diagnostics: bool = field(default=True, repr=False)
+
+    @cached_property
+    def diagnostics(self) -> Diagnostics | None:
+        """The revolution diagnostics of a single design (see :func:`~machdyn.linkage.diagnostics.diagnose`),
+        computed on first access and kept with the mechanism."""
+        mech = self.mechanism
+        return diagnose(mech) if self.with_diagnostics and mech.design_count is None else None
 
     @property
     def mechanism(self) -> Mechanism:
@@ -38,9 +46,9 @@ class Analysis:
 
 def analyse(mech: Mechanism, crank_angle, speed=1.0, acceleration=0.0, *, diagnostics: bool = True) -> Analysis:
     """Kinematics, kinetostatics and energy of ``mech`` at ``crank_angle`` [rad], crank ``speed`` [rad/s] and
-    ``acceleration`` [rad/s^2]; with ``diagnostics`` (single designs), the revolution diagnostics too."""
+    ``acceleration`` [rad/s^2]; with ``diagnostics`` (single designs), the revolution diagnostics too, when
+    first read (:attr:`Analysis.diagnostics`): a call that does not read them does not pay for them."""
     kin = kinematics(mech, crank_angle, speed, acceleration)
     forces = kinetostatics(mech, kinematics_result=kin)
     en = energy(mech, forces=forces)
-    diag = diagnose(mech) if diagnostics and mech.design_count is None else None
-    return Analysis(kin, forces, en, diag, en.work_balance())
+    return Analysis(kin, forces, en, en.work_balance(), diagnostics)

@@ -13,18 +13,24 @@ import numpy as np
 from .kinematics import Kinematics
 
 
+def angle_weights(crank_angle) -> np.ndarray:
+    """The crank-angle step each sample stands for, up to a common factor: equal over an evenly sampled full
+    revolution, the trapezoidal weights otherwise."""
+    phi = np.asarray(crank_angle, dtype=float)
+    if phi.ndim == 0 or phi.size < 2:
+        return np.ones(np.shape(phi))
+    if np.allclose(np.diff(phi), 2 * np.pi / phi.size, rtol=1e-9, atol=1e-12):
+        return np.ones(phi.shape)
+    dphi = np.zeros(phi.shape)
+    steps = np.diff(phi)
+    dphi[:-1] += 0.5 * steps
+    dphi[1:] += 0.5 * steps
+    return dphi
+
+
 def time_weights(kin: Kinematics) -> np.ndarray:
     """Weights proportional to the time each sample stands for, summing to 1 along the last axis."""
-    phi = np.asarray(kin.crank_angle, dtype=float)
-    if phi.ndim == 0 or phi.size < 2:
-        dphi = np.ones(np.shape(phi))
-    elif np.allclose(np.diff(phi), 2 * np.pi / phi.size, rtol=1e-9, atol=1e-12):
-        dphi = np.ones(phi.shape)
-    else:
-        dphi = np.zeros(phi.shape)
-        steps = np.diff(phi)
-        dphi[:-1] += 0.5 * steps
-        dphi[1:] += 0.5 * steps
+    dphi = angle_weights(kin.crank_angle)
     speed = np.abs(np.asarray(kin.speed, dtype=float))
     # Where the crank stands still (a static analysis) time has no meaning: fall back to angle weights.
     w = np.broadcast_to(dphi, kin.shape) / speed if np.all(speed > 0) else np.broadcast_to(dphi, kin.shape)

@@ -12,58 +12,12 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputError
-from .kinematics import angle_ranges, crank_angles, format_ranges, kinematics, singular
-from .model import GROUND, RPR, RRP, RRR, Mechanism, split_ref
+from .grashof import grashof_type
+from .kinematics import Kinematics, angle_ranges, crank_angles, format_ranges, kinematics, singular
+from .model import Mechanism
 
 #: Below this transmission angle [deg] force transmission is poor (Norton, §4.10: keep mu >= 40 deg).
 MIN_GOOD_TRANSMISSION_DEG = 40.0
-
-
-def _four_bar_lengths(mech: Mechanism):
-    """Crank, coupler, rocker and ground lengths [m] if ``mech`` is a four-bar (one RRR from the crank to the
-    ground), else None."""
-    if len(mech.dyads) != 1 or not isinstance(mech.dyads[0], RRR):
-        return None
-    d = mech.dyads[0]
-    body_a, pin_a = split_ref(d.pin_a)
-    body_b, pin_b = split_ref(d.pin_b)
-    if body_a != mech.crank.body or body_b != GROUND:
-        return None
-    pivot = split_ref(mech.crank.pivot)[1]
-
-    def dist(p, q):
-        return np.hypot(np.asarray(p[0]) - q[0], np.asarray(p[1]) - q[1])
-
-    crank = mech.body(mech.crank.body).points
-    a, b = mech.body(d.a).points, mech.body(d.b).points
-    return (
-        dist(crank[pin_a], crank[pivot]),
-        dist(a[pin_a], a[d.inner]),
-        dist(b[pin_b], b[d.inner]),
-        dist(mech.ground[pin_b], mech.ground[pivot]),
-    )
-
-
-def grashof_type(mech: Mechanism):
-    """Grashof type of a four-bar: 'crank-rocker', 'double-crank', 'rocker-crank', 'Grashof double-rocker',
-    'change-point' or 'non-Grashof triple-rocker' (Norton, §2.12: s + l vs p + q, and which link is shortest).
-    None if ``mech`` is not a four-bar; an array of names for design variants."""
-    lengths = _four_bar_lengths(mech)
-    if lengths is None:
-        return None
-    links = np.broadcast_arrays(*[np.asarray(v, dtype=float) for v in lengths])
-    stack = np.stack(links, axis=-1)
-    s, l_ = stack.min(axis=-1), stack.max(axis=-1)
-    total = stack.sum(axis=-1)
-    pq = total - s - l_
-    shortest = stack.argmin(axis=-1)
-    names = np.array(["crank-rocker", "rocker-crank", "Grashof double-rocker", "double-crank"])
-    # shortest index: 0 crank, 1 coupler, 2 rocker, 3 ground
-    grashof = names[np.choose(shortest, [0, 2, 1, 3])]
-    tol = 1e-12 * total
-    kind = np.where(np.abs(s + l_ - pq) <= tol, "change-point",
-                    np.where(s + l_ < pq, grashof, "non-Grashof triple-rocker"))
-    return str(kind) if kind.ndim == 0 else kind
 
 
 @dataclass(frozen=True)
@@ -92,36 +46,68 @@ class Diagnostics:
 
 
 def _zero_crossings(phi, values, valid):
-    """Crank angles [rad] where ``values`` changes sign between neighbouring valid samples (linear
-    interpolation), including the wrap from the last sample to the first over a full cycle."""
-    out = []
+    """(index, crank angle [rad]) where ``values`` changes sign between neighbouring valid samples (linear
+    interpolation) or is zero, including the wrap from the last sample to the first over a full cycle."""
     n = len(phi)
-    for i in range(n):
-        j = (i + 1) % n
-        if j == 0 and not np.isclose((phi[0] - phi[-1]) % (2 * np.pi), 2 * np.pi / n):
-            continue
-        if not (valid[i] and valid[j]):
-            continue
-        a, b = values[i], values[j]
-        if a == 0.0:
-            out.append((i, float(phi[i])))
-        elif a * b < 0.0:
-            step = (phi[j] - phi[i]) % (2 * np.pi)
-            out.append((i, float((phi[i] + step * a / (a - b)) % (2 * np.pi))))
-    return out
+    i = np.arange(n)
+    j = (i + 1) % n
+    pair = valid & valid[j]
+    if n and not np.isclose((phi[0] - phi[-1]) % (2 * np.pi), 2 * np.pi / n):
+        pair[-1] = False  # not a full cycle: no wrap
+    a, b = values, values[j]
+    with np.errstate(invalid="ignore"):
+        zero = pair & (a == 0.0)
+        cross = pair & ~zero & (a * b < 0.0)
+    idx = np.flatnonzero(zero | cross)
+    step = (phi[j[idx]] - phi[idx]) % (2 * np.pi)
+    ai, bi = a[idx], b[idx]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        interpolated = (phi[idx] + step * ai / (ai - bi)) % (2 * np.pi)
+    angles = np.where(zero[idx], phi[idx], interpolated)
+    return [(int(k), float(x)) for k, x in zip(idx, angles, strict=True)]
 
 
-def diagnose(mech: Mechanism, samples: int = 3600) -> Diagnostics:
+def diagnose(mech: Mechanism, samples: int = 3600, *, kinematics_result: Kinematics | None = None) -> Diagnostics:
     """Assembly ranges, Grashof type, dead and limit positions, strokes, time ratio and transmission-angle
     extremes of one design over a full crank revolution sampled at ``samples`` evenly spaced angles
-    (accuracy of located angles about 360/samples deg before interpolation)."""
+    (accuracy of located angles about 360/samples deg before interpolation).
+
+    With ``kinematics_result`` (one design over a full revolution sampled evenly, as
+    :func:`~machdyn.linkage.kinematics.crank_angles` makes it, at a crank speed that does not vanish) the
+    diagnostics are sized to that request: no kinematics is computed again. The result is kept with the
+    (immutable) mechanism, so asking again costs nothing.
+    """
     if mech.design_count is not None:
         raise InputError(
             f"diagnose works on one design at a time; mechanism '{mech.name}' has {mech.design_count} "
             "variants (use mech.take_designs(i))."
         )
-    phi = crank_angles(samples)
-    kin = kinematics(mech, phi, 1.0, 0.0, on_fail="mask")
+    if kinematics_result is not None:
+        return _diagnose(mech, _revolution(kinematics_result))
+    key = ("diagnostics", int(samples))
+    if key not in mech._derived:
+        phi = crank_angles(samples)
+        mech._derived[key] = _diagnose(mech, kinematics(mech, phi, 1.0, 0.0, on_fail="mask"))
+    return mech._derived[key]
+
+
+def _revolution(kin: Kinematics) -> Kinematics:
+    phi = np.asarray(kin.crank_angle, dtype=float)
+    n = phi.size
+    if (kin.mechanism.design_count is not None or phi.ndim != 1 or n < 4 or np.ndim(kin.assembled) != 1
+            or not np.allclose(np.diff(phi), 2 * np.pi / n, rtol=1e-9, atol=1e-12)):
+        raise InputError(
+            "Diagnostics from a kinematics result need one design over a full revolution sampled evenly "
+            f"(crank_angles(n)); got crank angles of shape {phi.shape} and results of shape {kin.shape}."
+        )
+    if not np.all(np.asarray(kin.speed) != 0.0):
+        raise InputError("Diagnostics from a kinematics result need a crank speed that does not vanish.")
+    return kin
+
+
+def _diagnose(mech: Mechanism, kin: Kinematics) -> Diagnostics:
+    phi = np.asarray(kin.crank_angle, dtype=float)
+    samples = phi.size
     assembled = np.asarray(kin.assembled)
     ok = assembled & ~singular(kin.dyad_reports, kin.shape)
     warnings = []
@@ -194,16 +180,17 @@ def _dead_positions(phi, reports, assembled, ok, assembly_ranges) -> list[float]
 def _outputs(mech: Mechanism, kin):
     """The outputs whose limit positions matter: sliders (travel) and rockers pinned to the ground (angle)."""
     for d in mech.dyads:
-        if isinstance(d, RRP) and d.guide.body == GROUND:
-            sm = kin.slide(d.b)
-            yield d.b, np.asarray(sm.s), np.asarray(sm.v)
-        if isinstance(d, RRR | RPR) and split_ref(d.pin_b)[0] == GROUND:
-            b = kin.body(d.b)
-            angle = np.asarray(b.angle)
-            good = np.isfinite(angle)
-            unwrapped = np.full(angle.shape, np.nan)
-            unwrapped[good] = np.unwrap(angle[good])  # NaN (not assembled) would spread through unwrap
-            yield d.b, unwrapped, np.asarray(b.omega)
+        for out in d.outputs():
+            if out.kind == "slide":
+                sm = kin.slide(out.body)
+                yield out.body, np.asarray(sm.s), np.asarray(sm.v)
+            else:
+                b = kin.body(out.body)
+                angle = np.asarray(b.angle)
+                good = np.isfinite(angle)
+                unwrapped = np.full(angle.shape, np.nan)
+                unwrapped[good] = np.unwrap(angle[good])  # NaN (not assembled) would spread through unwrap
+                yield out.body, unwrapped, np.asarray(b.omega)
 
 
 def _time_ratio(limits: list, full_rotation: bool) -> float | None:

@@ -181,7 +181,8 @@ def rrp_motion(P: PointState, S: BodyState, g_local, g_angle, a_pin, a_inner, b_
         P.ay + al_a * px - om_a * om_a * py,
     )
     ca, sa = _orient(px, py, La, cda, sda)
-    body_a = body_from_point(*_anchor(P, a_pin, B, a_inner), np.arctan2(sa, ca), om_a, al_a, ca, sa)
+    anchor, anchor_local = _anchor(P, a_pin, B, a_inner)
+    body_a = body_from_point(anchor, anchor_local, np.arctan2(sa, ca), om_a, al_a, ca, sa)
     body_b = body_from_point(B, b_inner, g_ang, S.omega, S.alpha, ux, uy)
 
     def transmission():

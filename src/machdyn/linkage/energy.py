@@ -16,10 +16,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from .kinematics import Kinematics, _col
+from .kinematics import Kinematics
 from .kinetostatics import Forces, kinetostatics
 from .loads import applied_forces, applied_torques, mass_elements, spring_states
 from .model import Mechanism
+from .refs import column, full
 
 
 @dataclass(frozen=True)
@@ -152,7 +153,7 @@ def energy(
     forces = forces or kinetostatics(mech, crank_angle, speed, acceleration)
     kin = forces.kinematics
     shape = kin.shape
-    gx, gy = (_col(v) for v in kin.mechanism.gravity)
+    gx, gy = (column(v) for v in kin.mechanism.gravity)
     kinetic = {}
     v_grav = np.zeros(shape)
     rate = np.zeros(shape)
@@ -160,7 +161,7 @@ def energy(
     for m in mass_elements(kin):
         G, body = m.motion, kin.body(m.body)
         v2 = G.vx * G.vx + G.vy * G.vy
-        kinetic[m.name] = np.broadcast_to(0.5 * m.mass * v2 + 0.5 * m.inertia * body.omega**2, shape)
+        kinetic[m.name] = full(0.5 * m.mass * v2 + 0.5 * m.inertia * body.omega**2, shape)
         v_grav = v_grav - m.mass * (gx * G.x + gy * G.y)
         rate = rate + m.mass * (G.vx * G.ax + G.vy * G.ay) + m.inertia * body.omega * body.alpha
         grav_power = m.mass * (gx * G.vx + gy * G.vy)
@@ -176,4 +177,4 @@ def energy(
         load_power = load_power + f.fx * f.motion.vx + f.fy * f.motion.vy
     for t in applied_torques(kin):
         load_power = load_power + t.torque * kin.body(t.body).omega
-    return Energy(forces, kinetic, v_grav, v_spring, rate, np.broadcast_to(load_power, shape), conservative)
+    return Energy(forces, kinetic, v_grav, v_spring, rate, full(load_power, shape), conservative)

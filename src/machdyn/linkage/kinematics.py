@@ -6,30 +6,18 @@ and every named point. Arrays of design parameters (N,) and crank angles (M,) br
 
 from __future__ import annotations
 
+import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..errors import AssemblyError, InputError, SingularPositionError, check_finite
-from . import dyads as dy
-from .model import GROUND, PRP, RPR, RRP, RRR, Mechanism, split_ref
+from .engines import check_engine, use_fused
+from .grashof import grashof_type
+from .model import Mechanism
+from .refs import GROUND, column, full, local_point, split_ref
 from .state import BodyState, PointState, body_from_point, ground_state
-
-
-def _col(value):
-    """A design parameter as a column (N, 1) so that it broadcasts against crank angles (M,)."""
-    arr = np.asarray(value, dtype=float)
-    if arr.ndim == 0:
-        return float(arr)
-    return arr[:, None] if arr.ndim == 1 else arr
-
-
-def _local(mech: Mechanism, body: str, point: str):
-    if body == GROUND:
-        x, y = mech.ground[point]
-    else:
-        x, y = mech.body(body).points[point]
-    return _col(x), _col(y)
 
 
 @dataclass(frozen=True)
@@ -49,7 +37,7 @@ class DyadReport:
     kind: str
     bodies: tuple[str, str]
     det: np.ndarray
-    transmission_fn: object
+    transmission_fn: Callable[[], np.ndarray]
 
     @property
     def transmission(self) -> np.ndarray:
@@ -104,17 +92,20 @@ class Kinematics:
                     raise InputError(
                         f"Body '{body}' has no point '{point}'; its points: {', '.join(b.points)}."
                     )
-                self._points[ref] = self._broadcast(self.body(body).point(*map(_col, b.points[point])))
+                self._points[ref] = self._broadcast(self.body(body).point(*map(column, b.points[point])))
         return self._points[ref]
 
     def com(self, body: str) -> PointState:
         """Motion of the centre of mass of ``body``."""
-        b = self.mechanism.body(body)
-        return self._broadcast(self.body(body).point(*map(_col, b.com)))
+        key = ("com", body)
+        if key not in self._points:  # used by kinetostatics and energy alike: computed once
+            b = self.mechanism.body(body)
+            self._points[key] = self._broadcast(self.body(body).point(*map(column, b.com)))
+        return self._points[key]
 
     def local_point(self, body: str, xy) -> PointState:
         """Motion of an arbitrary body-frame point ``xy`` [m] of ``body``."""
-        return self._broadcast(self.body(body).point(*map(_col, xy)))
+        return self._broadcast(self.body(body).point(*map(column, xy)))
 
     def slide(self, body: str) -> SlideMotion:
         """Travel of the slider/block ``body`` along its guide."""
@@ -127,7 +118,7 @@ class Kinematics:
 
     def _broadcast(self, p: PointState) -> PointState:
         shape = self.shape
-        return PointState(*(np.broadcast_to(v, shape) for v in (p.x, p.y, p.vx, p.vy, p.ax, p.ay)))
+        return PointState(*(full(v, shape) for v in (p.x, p.y, p.vx, p.vy, p.ax, p.ay)))
 
 
 def crank_angles(count: int = 360, start: float = 0.0) -> np.ndarray:
@@ -145,6 +136,7 @@ def kinematics(
     acceleration=0.0,
     *,
     on_fail: str = "raise",
+    engine: str = "numpy",
 ) -> Kinematics:
     """Positions, velocities and accelerations of every body of ``mech`` at each crank angle.
 
@@ -157,6 +149,9 @@ def kinematics(
     acceleration : crank angular acceleration [rad/s^2], shaped like ``speed``.
     on_fail : "raise" raises :class:`AssemblyError` listing the crank-angle ranges where the linkage cannot
         close; "mask" returns NaN there, flagged ``assembled = False``.
+    engine : "numpy" (the reference), "fused" (one compiled pass per position, :mod:`machdyn.linkage.fused`;
+        1-D crank angles) or "auto" (fused when numba is present and the request is large enough to pay for
+        a compilation).
 
     Closed form per dyad (see :mod:`machdyn.linkage.dyads`), valid at every assembled, non-dead position.
     """
@@ -168,20 +163,25 @@ def kinematics(
     check_finite("crank acceleration", acceleration, "rad/s^2")
     omega = np.asarray(speed, dtype=float)
     eps = np.asarray(acceleration, dtype=float)
+    check_engine(engine)
     if mech.design_count is not None:
         # A 1-D speed or acceleration that does not match the crank angles is one value per design.
-        omega = _col(omega) if omega.ndim == 1 and omega.shape != phi.shape else omega
-        eps = _col(eps) if eps.ndim == 1 and eps.shape != phi.shape else eps
+        omega = column(omega) if omega.ndim == 1 and omega.shape != phi.shape else omega
+        eps = column(eps) if eps.ndim == 1 and eps.shape != phi.shape else eps
+    designs = (mech.design_count, 1) if mech.design_count is not None else ()
+    shape = np.broadcast_shapes(designs, np.shape(phi), np.shape(omega), np.shape(eps))
+    if engine != "numpy" and use_fused(engine, mech, phi, math.prod(shape)):
+        from .fused import fused_kinematics
+
+        return fused_kinematics(mech, phi, omega, eps, shape, on_fail)
     states: dict[str, BodyState] = {GROUND: ground_state()}
     slides: dict[str, SlideMotion] = {}
     reports = []
     # Crank: its frame turns with phi about the pivot.
     crank = mech.body(mech.crank.body)
     _, pivot_name = split_ref(mech.crank.pivot)
-    ox, oy = _local(mech, GROUND, pivot_name)
-    cu, cv = _local(mech, crank.name, pivot_name)
-    designs = (mech.design_count, 1) if mech.design_count is not None else ()
-    shape = np.broadcast_shapes(designs, np.shape(phi), np.shape(omega), np.shape(eps))
+    ox, oy = local_point(mech, GROUND, pivot_name)
+    cu, cv = local_point(mech, crank.name, pivot_name)
     with np.errstate(all="ignore"):
         # Scalars stay scalars through the solution (cheaper); results are broadcast to full shape at the end.
         pivot = PointState(ox, oy, 0.0, 0.0, 0.0, 0.0)
@@ -189,84 +189,33 @@ def kinematics(
         assembled = True
         failing = []
         for d in mech.dyads:
-            motion = _solve_dyad(mech, d, states)
+            motion = d.solve_motion(mech, states)
             states[d.a], states[d.b] = motion.a, motion.b
             assembled = assembled & motion.assembled
             failing.append((d, motion.assembled))
             for key, (sv, dsv, ddsv) in motion.slides.items():
-                slides[d.a if key == "a" else d.b] = SlideMotion(*(np.broadcast_to(v, shape) for v in (sv, dsv, ddsv)))
-            reports.append(DyadReport(type(d).__name__, (d.a, d.b), motion.det, motion.transmission))
+                slides[d.a if key == "a" else d.b] = SlideMotion(*(full(v, shape) for v in (sv, dsv, ddsv)))
+            reports.append(DyadReport(d.kind, (d.a, d.b), motion.det, motion.transmission))
+    states.pop(GROUND)
+    return kinematics_result(mech, phi, omega, eps, shape, on_fail, states, slides, reports, failing, assembled)
+
+
+def kinematics_result(mech, phi, omega, eps, shape, on_fail, states, slides, reports, failing, assembled):
+    """The :class:`Kinematics` of solved body states, after the assembly and dead-position checks."""
     assembled = np.broadcast_to(assembled, shape)
     if on_fail == "raise" and not np.all(assembled):
         raise AssemblyError(_assembly_message(mech, phi, assembled, failing))
     if on_fail == "raise":
         _check_not_dead(mech, phi, reports, shape)
-    states.pop(GROUND)
     return Kinematics(
-        mech, phi, np.broadcast_to(omega, shape), np.broadcast_to(eps, shape), assembled,
+        mech, phi, full(omega, shape), full(eps, shape), assembled,
         states, slides, tuple(reports),
     )
 
 
 def _broadcast_state(st: BodyState, shape) -> BodyState:
-    return BodyState(*(np.broadcast_to(v, shape) for v in (
+    return BodyState(*(full(v, shape) for v in (
         st.x, st.y, st.vx, st.vy, st.ax, st.ay, st.angle, st.omega, st.alpha, st.cos, st.sin)))
-
-
-def _point(mech: Mechanism, states, ref: str) -> PointState:
-    body, point = split_ref(ref)
-    return states[body].point(*_local(mech, body, point))
-
-
-def _solve_dyad(mech: Mechanism, d, states) -> dy.DyadMotion:
-    if isinstance(d, RRR):
-        pa = split_ref(d.pin_a)[1]
-        pb = split_ref(d.pin_b)[1]
-        return dy.rrr_motion(
-            _point(mech, states, d.pin_a),
-            _point(mech, states, d.pin_b),
-            _local(mech, d.a, pa),
-            _local(mech, d.a, d.inner),
-            _local(mech, d.b, pb),
-            _local(mech, d.b, d.inner),
-            d.branch,
-        )
-    if isinstance(d, RRP):
-        gb, gp = split_ref(d.guide.point)
-        return dy.rrp_motion(
-            _point(mech, states, d.pin_a),
-            states[gb],
-            _local(mech, gb, gp),
-            _col(d.guide.angle),
-            _local(mech, d.a, split_ref(d.pin_a)[1]),
-            _local(mech, d.a, d.inner),
-            _local(mech, d.b, d.inner),
-            d.branch,
-        )
-    if isinstance(d, RPR):
-        return dy.rpr_motion(
-            _point(mech, states, d.pin_a),
-            _point(mech, states, d.pin_b),
-            _local(mech, d.a, split_ref(d.pin_a)[1]),
-            _local(mech, d.b, split_ref(d.pin_b)[1]),
-            _local(mech, d.b, d.slide[0]),
-            _col(d.slide[1]),
-            d.branch,
-        )
-    if isinstance(d, PRP):
-        b1, p1 = split_ref(d.guide_a.point)
-        b2, p2 = split_ref(d.guide_b.point)
-        return dy.prp_motion(
-            states[b1],
-            _local(mech, b1, p1),
-            _col(d.guide_a.angle),
-            states[b2],
-            _local(mech, b2, p2),
-            _col(d.guide_b.angle),
-            _local(mech, d.a, d.inner),
-            _local(mech, d.b, d.inner),
-        )
-    raise InputError(f"Unknown dyad type {type(d).__name__!r}; expected RRR, RRP, RPR or PRP.")
 
 
 def angle_ranges(phi: np.ndarray, mask: np.ndarray) -> list[tuple[float, float]]:
@@ -276,14 +225,10 @@ def angle_ranges(phi: np.ndarray, mask: np.ndarray) -> list[tuple[float, float]]
     mask = np.asarray(mask, dtype=bool).ravel()
     order = np.argsort(phi)
     phi, mask = phi[order], mask[order]
-    runs, start = [], None
-    for i, flag in enumerate(mask):
-        if flag and start is None:
-            start = i
-        if start is not None and (not flag or i == len(mask) - 1):
-            end = i if flag else i - 1
-            runs.append((float(phi[start]), float(phi[end])))
-            start = None
+    # starts: a True after a False (or first); ends: a True before a False (or last)
+    edges = np.diff(np.concatenate(([False], mask, [False])).astype(np.int8))
+    starts, ends = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1) - 1
+    runs = [(float(phi[a]), float(phi[b])) for a, b in zip(starts, ends, strict=True)]
     full_turn = len(phi) > 2 and np.allclose(np.diff(phi), 2 * np.pi / len(phi), rtol=1e-9, atol=1e-12)
     if full_turn and len(runs) > 1 and mask[0] and mask[-1]:
         runs = [(runs[-1][0], runs[0][1])] + runs[1:-1]
@@ -332,8 +277,6 @@ def _check_not_dead(mech: Mechanism, phi, reports, shape) -> None:
 
 
 def _assembly_message(mech: Mechanism, phi, assembled, per_dyad=()) -> str:
-    from .diagnostics import grashof_type
-
     fails = ~assembled
     design_note = ""
     if assembled.ndim == 2:
@@ -345,7 +288,7 @@ def _assembly_message(mech: Mechanism, phi, assembled, per_dyad=()) -> str:
     text = format_ranges(ranges)
     kind = grashof_type(mech)
     kind_note = f" Grashof type: {kind}." if isinstance(kind, str) else ""
-    culprits = [f"{type(d).__name__} {d.a}-{d.b}" for d, ok in per_dyad if not np.all(ok)]
+    culprits = [f"{d.kind} {d.a}-{d.b}" for d, ok in per_dyad if not np.all(ok)]
     if len(mech.dyads) > 1 and culprits:
         kind_note += f" The dyad(s) that cannot close: {', '.join(culprits)}."
     if np.all(fails):

@@ -14,10 +14,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from . import dyads as dy
-from .kinematics import Kinematics, _col, _local, kinematics
+from .engines import check_engine
+from .kinematics import Kinematics, kinematics
 from .loads import applied_forces, applied_torques, mass_elements, spring_states
-from .model import GROUND, PRP, RPR, RRP, RRR, Mechanism, joints, split_ref
+from .model import Mechanism, joints
+from .refs import GROUND, column, full, local_point, split_ref
 
 
 @dataclass(frozen=True)
@@ -126,7 +127,7 @@ def body_loads(kin: Kinematics) -> tuple[dict, _Frame]:
     """Resultant load (Fx, Fy, M about the origin) on every moving body from inertia, gravity, external forces
     and torques and springs; and what springs anchored to the frame put on the frame."""
     mech = kin.mechanism
-    gx, gy = (_col(v) for v in mech.gravity)
+    gx, gy = (column(v) for v in mech.gravity)
     loads = {name: (0.0, 0.0, 0.0) for name in mech.moving_bodies}
     frame = _Frame()
     for m in mass_elements(kin):
@@ -156,6 +157,7 @@ def kinetostatics(
     acceleration=0.0,
     *,
     kinematics_result: Kinematics | None = None,
+    engine: str = "numpy",
 ) -> Forces:
     """Joint reactions, driving torque and frame loads of ``mech`` at each crank angle.
 
@@ -164,104 +166,90 @@ def kinetostatics(
     mech : the linkage; crank_angle [rad]; speed [rad/s]; acceleration [rad/s^2] (as for
         :func:`~machdyn.linkage.kinematics.kinematics`), or an already computed ``kinematics_result``.
 
+    engine : "numpy", "fused" or "auto", as for :func:`~machdyn.linkage.kinematics.kinematics` (without a
+        ``kinematics_result``, the fused engine computes motion and forces in one pass).
+
     Valid away from dead positions, where the reactions grow without bound (the dyad determinant vanishes).
     """
+    check_engine(engine)
+    if kinematics_result is None and engine != "numpy":
+        from .fused import fused_kinetostatics
+
+        forces = fused_kinetostatics(mech, crank_angle, speed, acceleration, engine)
+        if forces is not None:
+            return forces
     kin = kinematics_result or kinematics(mech, crank_angle, speed, acceleration)
-    states = kin.bodies
     loads, frame = body_loads(kin)
-    reactions: dict = {}
     joint_list = tuple(Joint(*j) for j in joints(mech))
-    key_of = {(j.name.split(":")[0], j.body_2): j.name for j in joint_list}
-
-    def record(name, kind, body_1, body_2, reaction):
-        reactions[key_of[(name, body_2)]] = reaction
-
-    def point_of(ref):
-        body, point = split_ref(ref)
-        if body == GROUND:
-            x, y = mech.ground[point]
-            return _PointXY(_col(x), _col(y))
-        st = states[body]
-        px, py = st.offset(*_local(mech, body, point))
-        return _PointXY(st.x + px, st.y + py)
-
-    def transmit(body, x, y, fx, fy):
-        """The known body carries the opposite of a reaction it exerts at (x, y)."""
-        if body == GROUND:
-            frame.force_at(x, y, -fx, -fy)
-        else:
-            _add_force_at(loads, body, x, y, -fx, -fy)
-
-    for d in reversed(mech.dyads):
-        la, lb = loads[d.a], loads[d.b]
-        if isinstance(d, RRR):
-            ka, kb = split_ref(d.pin_a)[0], split_ref(d.pin_b)[0]
-            P, Q = point_of(d.pin_a), point_of(d.pin_b)
-            B = _point_on(states[d.a], _local(mech, d.a, d.inner))
-            fp, fq, fab = dy.rrr_forces(la, lb, P, Q, B)
-            record(split_ref(d.pin_a)[1], "R", ka, d.a, Reaction(*fp))
-            record(split_ref(d.pin_b)[1], "R", kb, d.b, Reaction(*fq))
-            record(d.inner, "R", d.a, d.b, Reaction(*fab))
-            transmit(ka, P.x, P.y, *fp)
-            transmit(kb, Q.x, Q.y, *fq)
-        elif isinstance(d, RRP):
-            ka = split_ref(d.pin_a)[0]
-            gb = d.guide.body
-            P = point_of(d.pin_a)
-            B = _point_on(states[d.a], _local(mech, d.a, d.inner))
-            slider = states[d.b]
-            fp, fab, N, couple = dy.rrp_forces(la, lb, P, B, slider.cos, slider.sin)
-            nx, ny = -slider.sin, slider.cos
-            record(split_ref(d.pin_a)[1], "R", ka, d.a, Reaction(*fp))
-            record(d.inner, "R", d.a, d.b, Reaction(*fab))
-            record(f"{d.b}/{gb}", "P", gb, d.b, Reaction(N * nx, N * ny, N, couple))
-            transmit(ka, P.x, P.y, *fp)
-            transmit(gb, B.x, B.y, N * nx, N * ny)
-            _couple_back(loads, frame, gb, couple)
-        elif isinstance(d, RPR):
-            ka, kb = split_ref(d.pin_a)[0], split_ref(d.pin_b)[0]
-            P, Q = point_of(d.pin_a), point_of(d.pin_b)
-            block = states[d.a]
-            fp, fq, N, couple = dy.rpr_forces(la, lb, P, Q, block.cos, block.sin)
-            nx, ny = -block.sin, block.cos
-            record(split_ref(d.pin_a)[1], "R", ka, d.a, Reaction(*fp))
-            record(split_ref(d.pin_b)[1], "R", kb, d.b, Reaction(*fq))
-            record(f"{d.a}/{d.b}", "P", d.b, d.a, Reaction(N * nx, N * ny, N, couple))
-            transmit(ka, P.x, P.y, *fp)
-            transmit(kb, Q.x, Q.y, *fq)
-        elif isinstance(d, PRP):
-            B = _point_on(states[d.a], _local(mech, d.a, d.inner))
-            sa, sb = states[d.a], states[d.b]
-            Na, ca, Nb, cb, fab = dy.prp_forces(la, lb, B, (sa.cos, sa.sin), (sb.cos, sb.sin))
-            g1, g2 = d.guide_a.body, d.guide_b.body
-            n1 = (-sa.sin, sa.cos)
-            n2 = (-sb.sin, sb.cos)
-            record(f"{d.a}/{g1}", "P", g1, d.a, Reaction(Na * n1[0], Na * n1[1], Na, ca))
-            record(f"{d.b}/{g2}", "P", g2, d.b, Reaction(Nb * n2[0], Nb * n2[1], Nb, cb))
-            record(d.inner, "R", d.a, d.b, Reaction(*fab))
-            transmit(g1, B.x, B.y, Na * n1[0], Na * n1[1])
-            transmit(g2, B.x, B.y, Nb * n2[0], Nb * n2[1])
-            _couple_back(loads, frame, g1, ca)
-            _couple_back(loads, frame, g2, cb)
+    ctx = ForceContext(mech, kin.bodies, loads, frame, [None] * len(joint_list))
+    for i in reversed(range(len(mech.dyads))):
+        ctx.base = 1 + 3 * i  # the crank's pivot is joint 0; each dyad declares three joints
+        mech.dyads[i].solve_forces(ctx)
 
     crank = mech.crank.body
-    O = point_of(mech.crank.pivot)
+    O = ctx.point(mech.crank.pivot)
     cfx, cfy, cm = loads[crank]
     torque = -(cm - (O.x * cfy - O.y * cfx))
-    record(split_ref(mech.crank.pivot)[1], "R", GROUND, crank, Reaction(-cfx, -cfy))
+    ctx.base = 0
+    ctx.react(0, -cfx, -cfy)
     frame.force_at(O.x, O.y, cfx, cfy)
     frame.couple(-torque)
     shape = kin.shape
-    ordered = {j.name: _broadcast_reaction(reactions[j.name], shape) for j in joint_list}
+    ordered = {j.name: _broadcast_reaction(r, shape) for j, r in zip(joint_list, ctx.reactions, strict=True)}
     return Forces(
         kin,
         joint_list,
         ordered,
-        np.broadcast_to(torque, shape),
-        np.broadcast_to(frame.fx, shape),
-        np.broadcast_to(frame.fy, shape),
-        np.broadcast_to(frame.m, shape),
+        full(torque, shape),
+        full(frame.fx, shape),
+        full(frame.fy, shape),
+        full(frame.m, shape),
     )
+
+
+class ForceContext:
+    """What a dyad's force solver works with: the body states and accumulated loads, the frame, and the
+    reactions of the joints (the dyad's three joints start at index ``base`` of the mechanism's joints)."""
+
+    def __init__(self, mech: Mechanism, states: dict, loads: dict, frame: _Frame, reactions: list):
+        self.mech = mech
+        self.states = states
+        self.loads = loads
+        self.frame = frame
+        self.reactions = reactions
+        self.base = 0
+
+    def point(self, ref: str) -> _PointXY:
+        """Position [m] of the known point ``"body.point"``."""
+        body, point = split_ref(ref)
+        if body == GROUND:
+            x, y = self.mech.ground[point]
+            return _PointXY(column(x), column(y))
+        st = self.states[body]
+        px, py = st.offset(*local_point(self.mech, body, point))
+        return _PointXY(st.x + px, st.y + py)
+
+    def on(self, body: str, point: str) -> _PointXY:
+        """Position [m] of ``point`` of the just solved ``body``."""
+        return _point_on(self.states[body], local_point(self.mech, body, point))
+
+    def react(self, index: int, fx, fy, normal=None, couple=None) -> None:
+        """The reaction of the dyad's joint ``index`` (0, 1, 2 in the order of its declared joints)."""
+        self.reactions[self.base + index] = Reaction(fx, fy, normal, couple)
+
+    def transmit(self, body: str, x, y, fx, fy) -> None:
+        """The known body carries the opposite of a reaction it exerts at (x, y)."""
+        if body == GROUND:
+            self.frame.force_at(x, y, -fx, -fy)
+        else:
+            _add_force_at(self.loads, body, x, y, -fx, -fy)
+
+    def couple_back(self, body: str, couple) -> None:
+        """The known body carries the opposite of a couple a prismatic joint exerts."""
+        if body == GROUND:
+            self.frame.couple(-couple)
+        else:
+            _add(self.loads, body, 0.0, 0.0, -couple)
 
 
 @dataclass(slots=True)
@@ -275,15 +263,8 @@ def _point_on(state, local):
     return _PointXY(state.x + px, state.y + py)
 
 
-def _couple_back(loads, frame, body, couple):
-    if body == GROUND:
-        frame.couple(-couple)
-    else:
-        _add(loads, body, 0.0, 0.0, -couple)
-
-
 def _broadcast_reaction(r: Reaction, shape) -> Reaction:
     def b(v):
-        return None if v is None else np.broadcast_to(v, shape)
+        return None if v is None else full(v, shape)
 
     return Reaction(b(r.fx), b(r.fy), b(r.normal), b(r.couple))

@@ -4,11 +4,13 @@ springs. Shared by kinetostatics (forces) and energy (powers and potentials)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
-from .kinematics import Kinematics, _col
-from .model import GROUND, LoadValue, split_ref
+from .kinematics import Kinematics
+from .model import LoadValue
+from .refs import GROUND, column, split_ref
 from .state import PointState
 
 
@@ -27,7 +29,7 @@ def evaluate(value: LoadValue, phi):
     """A load value at crank angles phi: a constant, a design array, or a function of phi."""
     if callable(value):
         return np.asarray(value(phi), dtype=float)
-    return _col(value)
+    return column(value)
 
 
 @dataclass(slots=True)
@@ -36,8 +38,8 @@ class Mass:
 
     name: str
     body: str
-    mass: object
-    inertia: object
+    mass: Any
+    inertia: Any
     motion: PointState
 
 
@@ -47,9 +49,9 @@ def mass_elements(kin: Kinematics) -> list[Mass]:
     out = []
     for name in mech.moving_bodies:
         b = mech.body(name)
-        out.append(Mass(name, name, _col(b.mass), _col(b.inertia), kin.com(name)))
+        out.append(Mass(name, name, column(b.mass), column(b.inertia), kin.com(name)))
     for pm in mech.point_masses:
-        out.append(Mass(pm.name, pm.body, _col(pm.mass), _col(pm.inertia), kin.local_point(pm.body, pm.position)))
+        out.append(Mass(pm.name, pm.body, column(pm.mass), column(pm.inertia), kin.local_point(pm.body, pm.position)))
     return out
 
 
@@ -120,8 +122,8 @@ def spring_states(kin: Kinematics) -> list[SpringState]:
         ex = np.where(length > 0, ex, 0.0)
         ey = np.where(length > 0, ey, 0.0)
         rate = ex * (p2.vx - p1.vx) + ey * (p2.vy - p1.vy)
-        stretch = length - _col(s.free_length)
-        k = _col(s.stiffness)
+        stretch = length - column(s.free_length)
+        k = column(s.stiffness)
         out.append(
             SpringState(s.name, split_ref(s.point_1)[0], split_ref(s.point_2)[0], p1, p2, length, rate,
                         k * stretch, ex, ey, 0.5 * k * stretch * stretch)

@@ -19,12 +19,14 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError, check_finite, check_positive
+from .dyad_types import PRP, RPR, RRP, RRR, Dyad, Guide
+from .refs import GROUND, Array, Number, Vec, split_ref
 
-Array = np.ndarray
-Number = float | Array
-Vec = tuple[Number, Number]
-
-GROUND = "ground"
+__all__ = [
+    "GROUND", "PRP", "RPR", "RRP", "RRR", "Array", "Body", "BodyTorque", "Crank", "Dyad", "Guide", "LoadValue",
+    "Mechanism", "Number", "PointForce", "PointMass", "Spring", "Vec", "joints", "split_ref", "stack_designs",
+    "validate",
+]
 
 
 @dataclass(frozen=True)
@@ -65,83 +67,6 @@ class Crank:
     body: str
     pivot: str
 
-
-@dataclass(frozen=True)
-class Guide:
-    """A straight slide line fixed in a known body: through ``point`` (``"body.point"``) with direction
-    ``angle`` [rad] measured in that body's frame (0 = along the body's x axis)."""
-
-    point: str
-    angle: Number = 0.0
-
-    @property
-    def body(self) -> str:
-        return self.point.split(".", 1)[0]
-
-
-@dataclass(frozen=True)
-class RRR:
-    """Dyad of two links joined by revolute joints: ``a`` pinned at the known point ``pin_a``, ``b`` at
-    ``pin_b``, and a to b at the inner joint ``inner``.
-
-    ``branch`` = +1 puts the inner joint to the left of the line from pin_a to pin_b, -1 to the right.
-    """
-
-    a: str
-    b: str
-    pin_a: str
-    pin_b: str
-    inner: str
-    branch: int = 1
-
-
-@dataclass(frozen=True)
-class RRP:
-    """Dyad link + slider: link ``a`` pinned at the known point ``pin_a`` and to slider ``b`` at ``inner``;
-    the slider's point ``inner`` moves along ``guide`` (a line fixed in a known body).
-
-    ``branch`` = +1 puts the slider ahead of the foot of pin_a on the guide (along the guide direction),
-    -1 behind it.
-    """
-
-    a: str
-    b: str
-    pin_a: str
-    inner: str
-    guide: Guide
-    branch: int = 1
-
-
-@dataclass(frozen=True)
-class RPR:
-    """Dyad block + rocker: block ``a`` pinned at the known point ``pin_a`` slides along a line fixed in
-    rocker ``b``; the rocker is pinned at the known point ``pin_b``.
-
-    The slide line is ``slide`` = (point name in b, angle [rad] in b's frame); the block's frame is aligned
-    with it. ``branch`` = +1 points the slide direction from the rocker side towards the block, -1 away.
-    """
-
-    a: str
-    b: str
-    pin_a: str
-    pin_b: str
-    slide: tuple[str, Number]
-    branch: int = 1
-
-
-@dataclass(frozen=True)
-class PRP:
-    """Dyad of two sliders joined by a revolute joint ``inner``: ``a`` slides along ``guide_a``, ``b`` along
-    ``guide_b`` (lines fixed in known bodies). The joint sits where the two lines cross (no branch)."""
-
-    a: str
-    b: str
-    inner: str
-    guide_a: Guide
-    guide_b: Guide
-
-
-Dyad = RRR | RRP | RPR | PRP
 
 #: A load value: a constant, or a function of the crank angle phi [rad] (array in, array out).
 LoadValue = Number | Callable[[Array], Array]
@@ -198,8 +123,10 @@ class Mechanism:
     torques: tuple[BodyTorque, ...] = ()
     springs: tuple[Spring, ...] = ()
     gravity: Vec = (0.0, -9.80665)
-    _index: dict = field(default=None, init=False, repr=False, compare=False)
+    _index: dict = field(default_factory=dict, init=False, repr=False, compare=False)
     _designs: int | None = field(default=None, init=False, repr=False, compare=False)
+    #: Derived data kept with the (immutable) model, such as the fused engine's code and parameter table.
+    _derived: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "bodies", tuple(self.bodies))
@@ -241,44 +168,13 @@ class Mechanism:
         return _take(self, index, self.design_count)
 
 
-def split_ref(ref: str) -> tuple[str, str]:
-    """Split ``"body.point"`` into its two names."""
-    if not isinstance(ref, str) or ref.count(".") != 1:
-        raise InputError(f"A point reference must be written 'body.point'; got {ref!r}.")
-    body, point = ref.split(".")
-    return body, point
-
-
 def joints(mech: Mechanism) -> list[tuple[str, str, str, str]]:
     """Every joint as (name, kind 'R' or 'P', body 1, body 2), body 1 being the earlier (known) body, in
     solution order. A name used by several joints (two rods on one crank pin 'A') is kept for the first and
     written 'A:body2' for the others."""
     out = [(mech.crank.pivot.split(".")[1], "R", GROUND, mech.crank.body)]
     for d in mech.dyads:
-        if isinstance(d, RRR):
-            out += [
-                (split_ref(d.pin_a)[1], "R", split_ref(d.pin_a)[0], d.a),
-                (split_ref(d.pin_b)[1], "R", split_ref(d.pin_b)[0], d.b),
-                (d.inner, "R", d.a, d.b),
-            ]
-        elif isinstance(d, RRP):
-            out += [
-                (split_ref(d.pin_a)[1], "R", split_ref(d.pin_a)[0], d.a),
-                (d.inner, "R", d.a, d.b),
-                (f"{d.b}/{d.guide.body}", "P", d.guide.body, d.b),
-            ]
-        elif isinstance(d, RPR):
-            out += [
-                (split_ref(d.pin_a)[1], "R", split_ref(d.pin_a)[0], d.a),
-                (split_ref(d.pin_b)[1], "R", split_ref(d.pin_b)[0], d.b),
-                (f"{d.a}/{d.b}", "P", d.b, d.a),
-            ]
-        elif isinstance(d, PRP):
-            out += [
-                (f"{d.a}/{d.guide_a.body}", "P", d.guide_a.body, d.a),
-                (f"{d.b}/{d.guide_b.body}", "P", d.guide_b.body, d.b),
-                (d.inner, "R", d.a, d.b),
-            ]
+        out += d.joints()
     seen: set[str] = set()
     unique = []
     for name, kind, body_1, body_2 in out:
@@ -335,23 +231,19 @@ def validate(mech: Mechanism, sizes: set[int]) -> None:
     known.add(crank.name)
     placed = {crank.name}
     for i, d in enumerate(mech.dyads):
-        where = f"dyad {i + 1} ({type(d).__name__} {d.a}-{d.b})"
+        where = f"dyad {i + 1} ({d.kind} {d.a}-{d.b})"
         for body in (d.a, d.b):
             mech.body(body)
             if body in placed:
                 raise InputError(f"Body '{body}' of {where} is already placed by an earlier group.")
         if d.a == d.b:
             raise InputError(f"The two bodies of {where} must differ; got '{d.a}' twice.")
-        if isinstance(d, RRR | RRP | RPR) and d.branch not in (1, -1):
-            raise InputError(f"The branch of {where} must be +1 or -1; got {d.branch!r}.")
-        for attr in ("pin_a", "pin_b"):
-            if hasattr(d, attr):
-                _require_point(mech, getattr(d, attr), f"{where}.{attr}", known)
-        for attr in ("guide", "guide_a", "guide_b"):
-            if hasattr(d, attr):
-                g = getattr(d, attr)
-                _require_point(mech, g.point, f"{where}.{attr}", known)
-                check_finite(f"angle of {where}.{attr}", g.angle, "rad")
+        if d.has_branch and getattr(d, "branch", None) not in (1, -1):
+            raise InputError(f"The branch of {where} must be +1 or -1; got {getattr(d, 'branch', None)!r}.")
+        for attr, ref in d.known_points():
+            _require_point(mech, ref, f"{where}.{attr}", known)
+        for attr, g in d.guides():
+            check_finite(f"angle of {where}.{attr}", g.angle, "rad")
         _require_own_points(mech, d, where)
         known |= {d.a, d.b}
         placed |= {d.a, d.b}
@@ -400,16 +292,7 @@ def _require_point(mech: Mechanism, ref: str, field_name: str, known: set[str]) 
 
 
 def _require_own_points(mech: Mechanism, d: Dyad, where: str) -> None:
-    needs: list[tuple[str, str]] = []
-    if isinstance(d, RRR):
-        needs = [(d.a, split_ref(d.pin_a)[1]), (d.a, d.inner), (d.b, split_ref(d.pin_b)[1]), (d.b, d.inner)]
-    elif isinstance(d, RRP):
-        needs = [(d.a, split_ref(d.pin_a)[1]), (d.a, d.inner), (d.b, d.inner)]
-    elif isinstance(d, RPR):
-        needs = [(d.a, split_ref(d.pin_a)[1]), (d.b, split_ref(d.pin_b)[1]), (d.b, d.slide[0])]
-    elif isinstance(d, PRP):
-        needs = [(d.a, d.inner), (d.b, d.inner)]
-    for body, point in needs:
+    for body, point in d.own_points():
         if point not in mech.body(body).points:
             raise InputError(f"Body '{body}' of {where} needs a point '{point}' for its joint.")
 

@@ -12,20 +12,24 @@ Arrays broadcast over designs x crank positions; scalars are allowed anywhere.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
+
+#: A float or an array broadcasting over designs x positions.
+Value = Any
 
 
 @dataclass(slots=True)
 class PointState:
     """Position [m], velocity [m/s] and acceleration [m/s^2] of a point, global axes."""
 
-    x: np.ndarray
-    y: np.ndarray
-    vx: np.ndarray
-    vy: np.ndarray
-    ax: np.ndarray
-    ay: np.ndarray
+    x: Value
+    y: Value
+    vx: Value
+    vy: Value
+    ax: Value
+    ay: Value
 
     @property
     def speed(self) -> np.ndarray:
@@ -43,17 +47,17 @@ class BodyState:
     """Frame origin (x, y) [m] with its velocity and acceleration, angle [rad], omega [rad/s], alpha [rad/s^2];
     cos/sin of the angle are kept because every point transform needs them."""
 
-    x: np.ndarray
-    y: np.ndarray
-    vx: np.ndarray
-    vy: np.ndarray
-    ax: np.ndarray
-    ay: np.ndarray
-    angle: np.ndarray
-    omega: np.ndarray
-    alpha: np.ndarray
-    cos: np.ndarray
-    sin: np.ndarray
+    x: Value
+    y: Value
+    vx: Value
+    vy: Value
+    ax: Value
+    ay: Value
+    angle: Value
+    omega: Value
+    alpha: Value
+    cos: Value
+    sin: Value
 
     def offset(self, u, v) -> tuple[np.ndarray, np.ndarray]:
         """The body-frame vector (u, v) [m] rotated into global axes."""

@@ -10,6 +10,7 @@ import numpy as np
 
 from ..errors import InputError
 from .averages import time_mean, time_rms
+from .engines import use_fused
 from .kinematics import kinematics, singular
 from .kinetostatics import kinetostatics
 from .model import Mechanism
@@ -48,11 +49,18 @@ def sweep(
     shaking_about=(0.0, 0.0),
     chunk_positions: int = DEFAULT_CHUNK_POSITIONS,
     progress: Callable[[int, int], None] | None = None,
+    engine: str = "auto",
 ) -> SweepResult:
     """Full kinetostatics of every design variant of ``mech`` at every crank angle, summarised per design.
 
     The designs are processed in chunks of about ``chunk_positions`` positions, so peak memory does not grow
     with the number of designs. ``progress(done, total)`` is called after each chunk.
+
+    ``engine``: "numpy" (the reference: whole-array operations per chunk), "fused" (kinematics,
+    kinetostatics and summaries in one compiled pass per position, :mod:`machdyn.linkage.fused`; memory
+    independent of the number of crank angles) or "auto" (fused when numba is present and the sweep has at
+    least :data:`~machdyn.linkage.engines.AUTO_MIN_POSITIONS` positions). Both give the same summaries to
+    rounding.
     """
     phi = np.asarray(crank_angle, dtype=float)
     if phi.ndim != 1:
@@ -62,6 +70,8 @@ def sweep(
         # Variants that differ only in their drive: one speed (and acceleration) per design, as columns.
         speed, acceleration = (_as_column(v, phi, n) for v in (speed, acceleration))
     per_chunk = max(1, int(chunk_positions) // max(phi.size, 1))
+    if use_fused(engine, mech, phi, n * phi.size):
+        return _fused_sweep(mech, phi, speed, acceleration, n, shaking_about, per_chunk, progress)
     out = None
     for start in range(0, n, per_chunk):
         stop = min(n, start + per_chunk)
@@ -84,7 +94,26 @@ def sweep(
                 out[k][start:stop] = v
         if progress is not None:
             progress(stop, n)
+    assert out is not None  # n >= 1 designs: at least one chunk
     return SweepResult(positions=n * phi.size, **out)
+
+
+def _fused_sweep(mech, phi, speed, acceleration, n, about, per_chunk, progress) -> SweepResult:
+    from .fused import run
+    from .fused_source import SUMMARY_FIELDS
+
+    result = run(mech, phi, speed, acceleration, designs=n, about=about, forces=True, progress=progress,
+                 chunk_designs=per_chunk)
+    out = result.summary
+    columns = {name: out[:, k] for k, name in enumerate(SUMMARY_FIELDS)}
+    joints = {name: out[:, len(SUMMARY_FIELDS) + j] for j, name in enumerate(result.generated.joints)}
+    return SweepResult(
+        assembled=columns.pop("assembled") > 0.5,
+        regular=columns.pop("regular") > 0.5,
+        max_joint_force=joints,
+        positions=n * phi.size,
+        **columns,
+    )
 
 
 def _design_count(mech: Mechanism, phi, speed, acceleration) -> int:
@@ -129,8 +158,8 @@ def _summaries(forces, about) -> dict:
     ok = assembled & regular & np.isfinite(torque).all(axis=-1)
     bad = np.where(ok, 0.0, np.nan)
 
-    def peak(values):
-        return np.nanmax(np.abs(np.atleast_2d(values)), axis=-1) + bad
+    def peak(values):  # the largest magnitude, NaN ignored (fmax: no warning for a design without values)
+        return np.fmax.reduce(np.abs(np.atleast_2d(values)), axis=-1) + bad
 
     return {
         "assembled": assembled,

@@ -15,21 +15,7 @@ import numpy as np
 
 from ..errors import InputError, ProblemFileError
 from .errors import did_you_mean
-from .schema import (
-    CustomSpec,
-    DoubleCrankSpec,
-    DoubleSliderCrankSpec,
-    FourBarSpec,
-    InvertedSliderCrankSpec,
-    LinkageProblem,
-    LinkSpec,
-    PRPSpec,
-    RPRSpec,
-    RRPSpec,
-    RRRSpec,
-    SixBarSpec,
-    SliderCrankSpec,
-)
+from .schema import CustomSpec, DoubleCrankSpec, LinkageProblem, LinkSpec
 
 STANDARD_GRAVITY = (0.0, -9.80665)
 
@@ -55,51 +41,12 @@ def gravity_vector(problem: LinkageProblem) -> tuple[float, float]:
 
 def _geometry(spec):
     """The mechanism from its builder (or written out for custom) and the list of (body, spec) overrides."""
-    from .. import linkage as lk
+    from ..linkage.standard import STANDARD_MECHANISMS
 
     name = spec.name or spec.type
-    if isinstance(spec, SliderCrankSpec):
-        mech = lk.slider_crank(
-            spec.crank.length, spec.rod.length, spec.offset, slide_angle=spec.slide_angle,
-            branch=spec.branch, linear_density=spec.linear_density, name=name,
-        )
-        return mech, [("crank", spec.crank), ("rod", spec.rod), ("slider", spec.slider)]
-    if isinstance(spec, FourBarSpec):
-        mech = lk.four_bar(
-            spec.crank.length, spec.coupler.length, spec.rocker.length, spec.ground.length,
-            ground_angle=spec.ground.angle, branch=spec.branch, linear_density=spec.linear_density,
-            coupler_point=spec.coupler_point, name=name,
-        )
-        return mech, [("crank", spec.crank), ("coupler", spec.coupler), ("rocker", spec.rocker)]
-    if isinstance(spec, InvertedSliderCrankSpec):
-        mech = lk.inverted_slider_crank(
-            spec.crank.length, spec.ground.length, offset=spec.offset, branch=spec.branch,
-            linear_density=spec.linear_density, rocker_length=spec.rocker.length, name=name,
-        )
-        return mech, [("crank", spec.crank), ("block", spec.block), ("rocker", spec.rocker)]
-    if isinstance(spec, SixBarSpec):
-        mech = lk.six_bar(
-            spec.crank.length, spec.coupler.length, spec.rocker.length, spec.ground.length,
-            spec.coupler_point, spec.link5.length, spec.link6.length, spec.pivot6,
-            branch=spec.branch, branch2=spec.branch2, linear_density=spec.linear_density, name=name,
-        )
-        return mech, [
-            ("crank", spec.crank), ("coupler", spec.coupler), ("rocker", spec.rocker),
-            ("link5", spec.link5), ("link6", spec.link6),
-        ]
-    if isinstance(spec, DoubleSliderCrankSpec):
-        mech = lk.double_slider_crank(
-            spec.crank.length_1, spec.rod_1.length, spec.crank.length_2, spec.rod_2.length,
-            offset_1=spec.offset_1, offset_2=spec.offset_2, phase=spec.crank.phase,
-            slide_angle_1=spec.slide_angle_1, slide_angle_2=spec.slide_angle_2,
-            branch_1=spec.branch_1, branch_2=spec.branch_2, linear_density=spec.linear_density, name=name,
-        )
-        return mech, [
-            ("crank", spec.crank), ("rod_1", spec.rod_1), ("slider_1", spec.slider_1),
-            ("rod_2", spec.rod_2), ("slider_2", spec.slider_2),
-        ]
-    assert isinstance(spec, CustomSpec)
-    return _custom(spec, name), []
+    if isinstance(spec, CustomSpec):
+        return _custom(spec, name), []
+    return STANDARD_MECHANISMS[spec.type].build(spec, linear_density=spec.linear_density, name=name)
 
 
 def _custom(spec: CustomSpec, name: str):
@@ -117,19 +64,7 @@ def _custom(spec: CustomSpec, name: str):
     if problems:
         raise ProblemFileError(problems)
     bodies = tuple(m.Body(b.name, dict(b.points), b.mass, b.inertia, tuple(b.com)) for b in spec.bodies)
-    dyads = []
-    for d in spec.dyads:
-        if isinstance(d, RRRSpec):
-            dyads.append(m.RRR(d.a, d.b, d.pin_a, d.pin_b, d.inner, d.branch))
-        elif isinstance(d, RRPSpec):
-            dyads.append(m.RRP(d.a, d.b, d.pin_a, d.inner, m.Guide(d.guide.point, d.guide.angle), d.branch))
-        elif isinstance(d, RPRSpec):
-            dyads.append(m.RPR(d.a, d.b, d.pin_a, d.pin_b, (d.slide.point, d.slide.angle), d.branch))
-        elif isinstance(d, PRPSpec):
-            dyads.append(
-                m.PRP(d.a, d.b, d.inner, m.Guide(d.guide_a.point, d.guide_a.angle),
-                      m.Guide(d.guide_b.point, d.guide_b.angle))
-            )
+    dyads = [_dyad(d) for d in spec.dyads]
     return m.Mechanism(
         name=name,
         ground={k: tuple(v) for k, v in spec.ground.items()},
@@ -137,6 +72,19 @@ def _custom(spec: CustomSpec, name: str):
         crank=m.Crank(spec.crank.body, spec.crank.pivot),
         dyads=tuple(dyads),
     )
+
+
+def _dyad(d):
+    """The engine's dyad from its problem-file table (same field names; guides and slides as tables)."""
+    from ..linkage.dyad_types import DYAD_TYPES, Guide
+
+    values = {k: getattr(d, k) for k in type(d).model_fields if k != "type"}
+    for key, value in values.items():
+        if key.startswith("guide"):
+            values[key] = Guide(value.point, value.angle)
+        elif key == "slide":
+            values[key] = (value.point, value.angle)
+    return DYAD_TYPES[d.type](**values)
 
 
 def _unknown(what: str, value: str, choices: list[str]) -> str:
@@ -205,7 +153,10 @@ def build_mechanism(problem: LinkageProblem):
             problems.append((path, _unknown("body", body, body_names)))
 
     loads = problem.loads
-    forces, torques, springs, masses = [], [], [], []
+    forces: list = []
+    torques: list = []
+    springs: list = []
+    masses: list = []
     for i, f in enumerate(loads.forces):
         need_point(f"loads.forces[{i}].point", f.point)
         forces.append(m.PointForce(f.name or f"force_{i + 1}", f.point, f.fx, f.fy, _active(f.active)))

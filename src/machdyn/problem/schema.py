@@ -7,10 +7,14 @@ refused (``extra="forbid"``). :mod:`machdyn.problem.build` turns them into the e
 
 from __future__ import annotations
 
-from typing import Annotated, Any, Literal
+import dataclasses
+import inspect
+from typing import TYPE_CHECKING, Annotated, Any, Literal, Union
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, field_validator
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, create_model, field_validator
 
+from ..linkage.dyad_types import DYAD_TYPES
+from ..linkage.standard import STANDARD_MECHANISMS, Part, StandardMechanism
 from .fields import (
     Acceleration,
     Angle,
@@ -107,7 +111,7 @@ class DoubleCrankSpec(Spec):
 
     length_1: PositiveLength
     length_2: PositiveLength
-    phase: Angle = 3.141592653589793
+    phase: Angle = STANDARD_MECHANISMS["double_slider_crank"].default("phase")
     mass: Mass | None = None
     inertia: Inertia | None = None
     com: Point | None = None
@@ -118,63 +122,44 @@ class _MechanismBase(Spec):
     linear_density: LinearDensity = 1.0
 
 
-class SliderCrankSpec(_MechanismBase):
-    type: Literal["slider_crank"]
-    crank: LinkSpec
-    rod: LinkSpec
-    slider: BlockSpec = BlockSpec()
-    offset: Length = 0.0
-    slide_angle: Angle = 0.0
-    branch: Branch = 1
+def _standard_spec(declaration: StandardMechanism) -> type[Spec]:
+    """The table of a standard mechanism, made from its declaration (fields in order, the builder's
+    defaults)."""
+    fields: dict[str, Any] = {"type": (Literal[declaration.type], ...)}  # type: ignore[valid-type]
+    for f in declaration.fields:
+        if isinstance(f, Part):
+            model, default = _PARTS[f.kind]
+            fields[f.name] = (model, ... if default is None else default)
+            continue
+        value_type = _PARAMETERS[f.kind]
+        default = declaration.default(f.name)
+        if default is inspect.Parameter.empty:
+            fields[f.name] = (value_type, ...)
+        elif default is None:
+            fields[f.name] = (value_type | None, None)
+        else:
+            fields[f.name] = (value_type, default)
+    name = "".join(word.capitalize() for word in declaration.type.split("_")) + "Spec"
+    return create_model(name, __base__=_MechanismBase, __module__=__name__, **fields)  # type: ignore[call-overload]
 
 
-class FourBarSpec(_MechanismBase):
-    type: Literal["four_bar"]
-    crank: LinkSpec
-    coupler: LinkSpec
-    rocker: LinkSpec
-    ground: GroundSpec
-    coupler_point: Point | None = None
-    branch: Branch = 1
+_PARTS: dict[str, tuple[type[Spec], Spec | None]] = {
+    "link": (LinkSpec, None),
+    "optional_link": (OptionalLinkSpec, OptionalLinkSpec()),
+    "block": (BlockSpec, BlockSpec()),
+    "ground": (GroundSpec, None),
+    "ground_length": (GroundLengthSpec, None),
+    "double_crank": (DoubleCrankSpec, None),
+}
+_PARAMETERS: dict[str, Any] = {"length": Length, "angle": Angle, "point": Point, "branch": Branch}
 
-
-class InvertedSliderCrankSpec(_MechanismBase):
-    type: Literal["inverted_slider_crank"]
-    crank: LinkSpec
-    ground: GroundLengthSpec
-    block: BlockSpec = BlockSpec()
-    rocker: OptionalLinkSpec = OptionalLinkSpec()
-    offset: Length = 0.0
-    branch: Branch = 1
-
-
-class SixBarSpec(_MechanismBase):
-    type: Literal["six_bar"]
-    crank: LinkSpec
-    coupler: LinkSpec
-    rocker: LinkSpec
-    ground: GroundLengthSpec
-    coupler_point: Point
-    link5: LinkSpec
-    link6: LinkSpec
-    pivot6: Point
-    branch: Branch = 1
-    branch2: Branch = 1
-
-
-class DoubleSliderCrankSpec(_MechanismBase):
-    type: Literal["double_slider_crank"]
-    crank: DoubleCrankSpec
-    rod_1: LinkSpec
-    rod_2: LinkSpec
-    slider_1: BlockSpec = BlockSpec()
-    slider_2: BlockSpec = BlockSpec()
-    offset_1: Length = 0.0
-    offset_2: Length = 0.0
-    slide_angle_1: Angle = 0.0
-    slide_angle_2: Angle = 0.0
-    branch_1: Branch = 1
-    branch_2: Branch = 1
+#: The table of each standard mechanism by its type.
+STANDARD_SPECS: dict[str, type[Spec]] = {t: _standard_spec(m) for t, m in STANDARD_MECHANISMS.items()}
+SliderCrankSpec = STANDARD_SPECS["slider_crank"]
+FourBarSpec = STANDARD_SPECS["four_bar"]
+InvertedSliderCrankSpec = STANDARD_SPECS["inverted_slider_crank"]
+SixBarSpec = STANDARD_SPECS["six_bar"]
+DoubleSliderCrankSpec = STANDARD_SPECS["double_slider_crank"]
 
 
 # ----------------------------------------------------------------------------------------------- custom
@@ -205,47 +190,29 @@ class SlideSpec(Spec):
     angle: Angle = 0.0
 
 
-class RRRSpec(Spec):
-    type: Literal["RRR"]
-    a: Name
-    b: Name
-    pin_a: PointRef
-    pin_b: PointRef
-    inner: Name
-    branch: Branch = 1
+#: The problem-file type of each field of the dyad declarations (:mod:`machdyn.linkage.dyad_types`).
+_DYAD_FIELDS: dict[str, Any] = {
+    "a": Name, "b": Name, "inner": Name, "pin_a": PointRef, "pin_b": PointRef, "guide": GuideSpec,
+    "guide_a": GuideSpec, "guide_b": GuideSpec, "slide": SlideSpec, "branch": Branch,
+}
 
 
-class RRPSpec(Spec):
-    type: Literal["RRP"]
-    a: Name
-    b: Name
-    pin_a: PointRef
-    inner: Name
-    guide: GuideSpec
-    branch: Branch = 1
+def _dyad_spec(declaration: type) -> type[Spec]:
+    """The table of a dyad of a custom mechanism, with the fields of the dyad's declaration."""
+    kind = getattr(declaration, "kind")  # noqa: B009  # a class attribute of every dyad declaration
+    fields: dict[str, Any] = {"type": (Literal[kind], ...)}
+    for f in dataclasses.fields(declaration):
+        default = ... if f.default is dataclasses.MISSING else f.default
+        fields[f.name] = (_DYAD_FIELDS[f.name], default)
+    return create_model(f"{kind}Spec", __base__=Spec, __module__=__name__, **fields)  # type: ignore[call-overload]
 
 
-class RPRSpec(Spec):
-    type: Literal["RPR"]
-    a: Name
-    b: Name
-    pin_a: PointRef
-    pin_b: PointRef
-    slide: SlideSpec
-    branch: Branch = 1
-
-
-class PRPSpec(Spec):
-    type: Literal["PRP"]
-    a: Name
-    b: Name
-    inner: Name
-    guide_a: GuideSpec
-    guide_b: GuideSpec
-
-
-DYAD_SPECS: dict[str, type[Spec]] = {"RRR": RRRSpec, "RRP": RRPSpec, "RPR": RPRSpec, "PRP": PRPSpec}
-DyadSpec = RRRSpec | RRPSpec | RPRSpec | PRPSpec
+DYAD_SPECS: dict[str, type[Spec]] = {kind: _dyad_spec(t) for kind, t in DYAD_TYPES.items()}
+RRRSpec, RRPSpec, RPRSpec, PRPSpec = (DYAD_SPECS[k] for k in ("RRR", "RRP", "RPR", "PRP"))
+if TYPE_CHECKING:  # made at import time from the declarations: any of the tables above
+    DyadSpec = Any
+else:
+    DyadSpec = Union[tuple(DYAD_SPECS.values())]  # noqa: UP007
 
 
 class CustomSpec(Spec):
@@ -257,17 +224,11 @@ class CustomSpec(Spec):
     dyads: list[Annotated[DyadSpec, Field(discriminator="type")]] = []
 
 
-MECHANISM_SPECS: dict[str, type[Spec]] = {
-    "slider_crank": SliderCrankSpec,
-    "four_bar": FourBarSpec,
-    "inverted_slider_crank": InvertedSliderCrankSpec,
-    "six_bar": SixBarSpec,
-    "double_slider_crank": DoubleSliderCrankSpec,
-    "custom": CustomSpec,
-}
-MechanismSpec = (
-    SliderCrankSpec | FourBarSpec | InvertedSliderCrankSpec | SixBarSpec | DoubleSliderCrankSpec | CustomSpec
-)
+MECHANISM_SPECS: dict[str, type[Spec]] = {**STANDARD_SPECS, "custom": CustomSpec}
+if TYPE_CHECKING:
+    MechanismSpec = Any
+else:
+    MechanismSpec = Union[tuple(MECHANISM_SPECS.values())]  # noqa: UP007
 
 
 # ---------------------------------------------------------------------------------------- drive, loads

@@ -1,0 +1,493 @@
+"""Straight-line scalar code of a mechanism's whole solution, for the fused engine (:mod:`.fused`).
+
+:func:`generate` walks a mechanism once (crank, dyads in order, loads, dyads in reverse for the forces) and
+writes one Python function that loops over designs and crank positions and, at each position, computes in
+scalars what the NumPy engine computes in arrays: the same closed forms (:mod:`machdyn.linkage.dyads`), the
+same loads (:mod:`machdyn.linkage.loads`), the same order of operations. Every number of the model is read
+from a parameter table (one row per design), so the code depends on the mechanism's topology only and one
+compiled function serves every design of that topology.
+
+No numba here: the text is compiled by :mod:`machdyn.linkage.fused`.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .loads import window
+from .model import joints
+from .refs import GROUND, split_ref
+
+#: The fields of a body state, in the order of the series output.
+BODY_FIELDS = ("x", "y", "vx", "vy", "ax", "ay", "th", "w", "al", "c", "s")
+#: Per-design summaries, in the order of the summary output (then one column per joint).
+SUMMARY_FIELDS = ("assembled", "regular", "max_driving_torque", "rms_driving_torque", "mean_input_power",
+                  "max_shaking_force", "max_shaking_moment")
+
+#: The fields the kernel writes (the angles are computed afterwards, see Generated.angles).
+KERNEL_BODY_FIELDS = tuple(f for f in BODY_FIELDS if f != "th")
+_GROUND_STATE = {"x": "0.0", "y": "0.0", "vx": "0.0", "vy": "0.0", "ax": "0.0", "ay": "0.0",
+                 "w": "0.0", "al": "0.0", "c": "1.0", "s": "0.0"}
+
+
+class Unsupported(Exception):
+    """The mechanism uses a feature the fused engine does not compile (the NumPy engine handles it)."""
+
+
+@dataclass
+class Generated:
+    """The generated code's sections and what the kernels need: parameter columns (each a float or an (N,)
+    array), per-position load rows (each an (M,) array), the layout of the series and summary outputs and
+    how each body's angle follows from them."""
+
+    sections: dict[str, list[str]]
+    params: list
+    rows: list
+    series: dict[str, tuple]
+    motion_series: int
+    all_series: int
+    joints: list[str]
+    angles: list
+
+    texts: dict = field(default_factory=dict, repr=False)
+    kernels: dict = field(default_factory=dict, repr=False)
+
+    def source(self, mode: str) -> str:
+        """The kernel's text: ``mode`` 'motion' (series of the motion), 'full' (series of motion and forces)
+        or 'summary' (per-design summaries)."""
+        if mode not in self.texts:
+            self.texts[mode] = _kernel_text(self, mode)
+        return self.texts[mode]
+
+    def key(self, mode: str) -> str:
+        """The kernel's name: a hash of its text."""
+        import hashlib
+
+        return hashlib.sha1(self.source(mode).encode()).hexdigest()[:16]
+
+
+@dataclass
+class Generator:
+    """Collects the lines of each section of the kernel while the mechanism is walked."""
+
+    mech: Any
+    phi: np.ndarray
+    params: list = field(default_factory=list)
+    rows: list = field(default_factory=list)
+    prologue: list = field(default_factory=list)
+    motion: list = field(default_factory=list)
+    angles: list = field(default_factory=list)  # (body, how its angle follows), in solution order
+    loads: list = field(default_factory=list)
+    forces: list = field(default_factory=list)
+    series: dict = field(default_factory=dict)
+    series_lines: list = field(default_factory=list)
+    stored: dict = field(default_factory=dict)
+    prefixes: dict = field(default_factory=dict)
+    counter: int = 0
+    bodies: dict = field(default_factory=dict)
+    dead_checks: list = field(default_factory=list)
+    assembled: list = field(default_factory=list)
+    joint_base: int = 0
+    reactions: list = field(default_factory=list)
+    force_solvers: list = field(default_factory=list)
+
+    # -- names and values
+    def new(self, prefix: str) -> str:
+        self.counter += 1
+        return f"{prefix}{self.counter}"
+
+    def param(self, value) -> str:
+        """A parameter column read once per design; returns its local name."""
+        arr = np.asarray(value, dtype=float)
+        if arr.ndim > 1:
+            raise Unsupported("parameters with more than one axis")
+        name = f"q{len(self.params)}"
+        self.params.append(float(arr) if arr.ndim == 0 else arr)
+        self.prologue.append(f"{name} = P[ip, {len(self.params) - 1}]")
+        return name
+
+    def row(self, values) -> str:
+        """A per-position value (a load that depends on the crank angle); returns an expression."""
+        arr = np.asarray(values, dtype=float)
+        try:
+            arr = np.broadcast_to(arr, self.phi.shape)
+        except ValueError:
+            raise Unsupported("a load that varies by design and crank angle") from None
+        self.rows.append(np.ascontiguousarray(arr))
+        return f"LP[{len(self.rows) - 1}, j]"
+
+    def local(self, body: str, point: str, value: bool = False) -> tuple[str, str] | None:
+        """Parameter names of a body-frame point, or None for a joint at the frame origin of a moving body
+        (as the builders place a link's first joint): that shortcut is part of the topology, so it is taken
+        for joints only; ground points and ``value`` points (centres of mass, guides, load points) are always
+        parameters, so that a value that happens to be zero does not make another topology."""
+        xy = self.mech.ground[point] if body == GROUND else self.mech.body(body).points[point]
+        return self.local_xy(xy, value or body == GROUND)
+
+    def local_xy(self, xy, value: bool = False) -> tuple[str, str] | None:
+        u, v = xy
+        if not value and isinstance(u, float | int) and isinstance(v, float | int) and u == 0 and v == 0:
+            return None
+        return self.param(u), self.param(v)
+
+    def emit(self, section: list, text: str) -> None:
+        section.extend(line.strip() for line in text.strip().splitlines())
+
+    def state(self, body: str) -> dict[str, str]:
+        return _GROUND_STATE if body == GROUND else self.bodies[body]
+
+    # -- kinematic building blocks (the formulas of machdyn.linkage.state)
+    def point(self, body: str, local: tuple[str, str] | None, section: list | None = None) -> dict[str, str]:
+        """Motion of a body-frame point: x, y, vx, vy, ax, ay."""
+        section = self.motion if section is None else section
+        s = self.state(body)
+        if local is None:
+            return {k: s[k] for k in ("x", "y", "vx", "vy", "ax", "ay")}
+        u, v = local
+        p = self.new("p")
+        if body == GROUND:
+            self.emit(section, f"{p}x = {u}\n{p}y = {v}")
+            return {"x": f"{p}x", "y": f"{p}y", "vx": "0.0", "vy": "0.0", "ax": "0.0", "ay": "0.0"}
+        self.emit(section, f"""
+            {p}rx = {s['c']} * {u} - {s['s']} * {v}
+            {p}ry = {s['s']} * {u} + {s['c']} * {v}
+            {p}w2 = {s['w']} * {s['w']}
+            {p}x = {s['x']} + {p}rx
+            {p}y = {s['y']} + {p}ry
+            {p}vx = {s['vx']} - {s['w']} * {p}ry
+            {p}vy = {s['vy']} + {s['w']} * {p}rx
+            {p}ax = {s['ax']} - {s['al']} * {p}ry - {p}w2 * {p}rx
+            {p}ay = {s['ay']} + {s['al']} * {p}rx - {p}w2 * {p}ry
+        """)
+        return {k: f"{p}{k}" for k in ("x", "y", "vx", "vy", "ax", "ay")}
+
+    def ref_point(self, ref: str, section: list | None = None, value: bool = False) -> dict[str, str]:
+        body, name = split_ref(ref)
+        return self.point(body, self.local(body, name, value), section)
+
+    def place(self, body: str, p: dict, local, omega: str, alpha: str, c: str, s: str, angle: tuple) -> None:
+        """The state of ``body`` whose point ``local`` moves as ``p`` (body_from_point). Its angle is computed
+        after the kernel, for the series output only, as ``angle`` says: ("atan2",) from its cos and sin,
+        ("crank",) the crank angle, ("plus", other body, parameter) the other's angle plus a parameter, or
+        ("value", expression) an expression of the kernel."""
+        k = self.new("b")
+        if local is None:
+            names = {f: p[f] for f in ("x", "y", "vx", "vy", "ax", "ay")}
+        else:
+            u, v = local
+            names = {f: f"{k}{f}" for f in ("x", "y", "vx", "vy", "ax", "ay")}
+            self.emit(self.motion, f"""
+                {k}rx = {c} * {u} - {s} * {v}
+                {k}ry = {s} * {u} + {c} * {v}
+                {k}w2 = {omega} * {omega}
+                {k}x = {p['x']} - {k}rx
+                {k}y = {p['y']} - {k}ry
+                {k}vx = {p['vx']} + {omega} * {k}ry
+                {k}vy = {p['vy']} - {omega} * {k}rx
+                {k}ax = {p['ax']} + {alpha} * {k}ry + {k}w2 * {k}rx
+                {k}ay = {p['ay']} - {alpha} * {k}rx + {k}w2 * {k}ry
+            """)
+        names.update(w=omega, al=alpha, c=c, s=s)
+        if angle[0] == "value":
+            self.series_out(f"angle.{body}", {"th": angle[1]})
+            angle = ("value",)
+        elif angle[0] == "plus":
+            angle = ("plus", angle[1], int(angle[2][1:]))  # the parameter's column
+        self.angles.append((body, angle))
+        self.bodies[body] = names
+        self.prefixes[body] = k
+        self.series_out(f"body.{body}", names)
+
+    def series_out(self, prefix: str, names: dict[str, str]) -> None:
+        """Outputs of the series kernels: each a row the kernel writes, unless it is a constant, an input
+        (crank speed, acceleration, cos and sin of the crank angle), a parameter or a row already written."""
+        for f, expr in names.items():
+            if re.fullmatch(r"-?\d+\.\d+", expr):
+                self.series[f"{prefix}.{f}"] = ("const", float(expr))
+            elif expr in ("om", "ep", "c0", "s0"):
+                self.series[f"{prefix}.{f}"] = ("input", expr)
+            elif re.fullmatch(r"q\d+", expr):
+                self.series[f"{prefix}.{f}"] = ("param", int(expr[1:]))
+            else:
+                if expr not in self.stored:
+                    self.stored[expr] = len(self.stored)
+                    self.series_lines.append(f"S_{self.stored[expr]}[j] = {expr}")
+                self.series[f"{prefix}.{f}"] = ("row", self.stored[expr])
+
+    def line(self, local_from, local_to) -> tuple[str, str, str]:
+        """Per design: length and unit direction from one body-frame point to another (dyads._line)."""
+        k = self.new("L")
+        fu, fv = local_from if local_from is not None else ("0.0", "0.0")
+        tu, tv = local_to if local_to is not None else ("0.0", "0.0")
+        self.emit(self.prologue, f"""
+            {k}dx = {tu} - {fu}
+            {k}dy = {tv} - {fv}
+            {k} = math.hypot({k}dx, {k}dy)
+            {k}c = {k}dx / {k}
+            {k}s = {k}dy / {k}
+        """)
+        return k, f"{k}c", f"{k}s"
+
+    def dyad_check(self, assembled: str, det: str, name: str) -> None:
+        self.assembled.append(assembled)
+        self.dead_checks.append(det)
+        self.series_out(f"dyad.{name}", {"assembled": f"1.0 if {assembled} else 0.0", "det": det})
+
+    # -- forces (the formulas of machdyn.linkage.kinetostatics)
+    def react(self, index: int, fx: str, fy: str, normal: str | None = None, couple: str | None = None) -> None:
+        j = self.joint_base + index
+        self.emit(self.forces, f"r{j}x = {fx}\nr{j}y = {fy}")
+        outputs = {"fx": f"r{j}x", "fy": f"r{j}y"}
+        if normal is not None:
+            self.emit(self.forces, f"r{j}n = {normal}\nr{j}c = {couple}")
+            outputs.update(normal=f"r{j}n", couple=f"r{j}c")
+        self.reactions.append((j, outputs))
+
+    def transmit(self, body: str, x: str, y: str, fx: str, fy: str) -> None:
+        t = self.new("t")
+        self.emit(self.forces, f"{t}x = -({fx})\n{t}y = -({fy})")
+        self.add_force_at(body, x, y, f"{t}x", f"{t}y")
+
+    def add_force_at(self, body: str, x: str, y: str, fx: str, fy: str) -> None:
+        if body == GROUND:
+            self.emit(self.forces, f"""
+                ffx = ffx + {fx}
+                ffy = ffy + {fy}
+                ffm = ffm + ({x} * {fy} - {y} * {fx})
+            """)
+        else:
+            self.add_load(body, fx, fy, f"{x} * {fy} - {y} * {fx}")
+
+    def add_load(self, body: str, fx: str, fy: str, m: str, section: list | None = None) -> None:
+        if body == GROUND:
+            return
+        k = self.prefixes[body]
+        self.emit(self.forces if section is None else section, f"""
+            {k}lx = {k}lx + {fx}
+            {k}ly = {k}ly + {fy}
+            {k}lm = {k}lm + ({m})
+        """)
+
+    def couple_back(self, body: str, couple: str) -> None:
+        if body == GROUND:
+            self.emit(self.forces, f"ffm = ffm + (-({couple}))")
+        else:
+            self.add_load(body, "0.0", "0.0", f"-({couple})")
+
+    def load(self, body: str) -> tuple[str, str, str]:
+        k = self.prefixes[body]
+        return f"{k}lx", f"{k}ly", f"{k}lm"
+
+    def on(self, body: str, point: str) -> dict[str, str]:
+        """Position of a point of a solved body, recomputed from its frame (ForceContext.on)."""
+        return self.point(body, self.local(body, point), self.forces)
+
+
+# ---------------------------------------------------------------------------------------------- the kernel
+
+#: |normalised determinant| below which a position is dead (machdyn.linkage.kinematics.DEAD_TOL).
+_DEAD_TOL = 1e-6
+
+
+def _value(gen: Generator, value, on) -> str:
+    """A load value (constant, design array or function of the crank angle) times its window ``on``."""
+    if callable(value):
+        return gen.row(np.asarray(value(gen.phi), dtype=float) * on)
+    expr = gen.param(value)
+    return expr if np.ndim(on) == 0 else f"{expr} * {gen.row(on)}"
+
+
+def _loads(gen: Generator) -> None:
+    """The loads on every moving body and the frame (machdyn.linkage.kinetostatics.body_loads)."""
+    mech, out = gen.mech, gen.forces
+    gx, gy = gen.param(mech.gravity[0]), gen.param(mech.gravity[1])
+    gen.emit(out, "ffx = 0.0\nffy = 0.0\nffm = 0.0")
+    for name in mech.moving_bodies:
+        k = gen.prefixes[name]
+        gen.emit(out, f"{k}lx = 0.0\n{k}ly = 0.0\n{k}lm = 0.0")
+    masses = [(b.name, b.com, b.mass, b.inertia) for b in map(mech.body, mech.moving_bodies)]
+    masses += [(pm.body, pm.position, pm.mass, pm.inertia) for pm in mech.point_masses]
+    for body, com, mass, inertia in masses:
+        G = gen.point(body, gen.local_xy(com, value=True), out)
+        m, i = gen.param(mass), gen.param(inertia)
+        f = gen.new("m")
+        gen.emit(out, f"{f}fx = {m} * ({gx} - {G['ax']})\n{f}fy = {m} * ({gy} - {G['ay']})")
+        gen.add_load(body, f"{f}fx", f"{f}fy",
+                     f"{G['x']} * {f}fy - {G['y']} * {f}fx - {i} * {gen.state(body)['al']}")
+    for force in mech.forces:
+        on = window(gen.phi, force.active)
+        fx, fy = _value(gen, force.fx, on), _value(gen, force.fy, on)
+        body = split_ref(force.point)[0]
+        p = gen.ref_point(force.point, out, value=True)
+        f = gen.new("e")
+        gen.emit(out, f"{f}x = {fx}\n{f}y = {fy}")
+        gen.add_load(body, f"{f}x", f"{f}y", f"{p['x']} * {f}y - {p['y']} * {f}x")
+    for torque in mech.torques:
+        gen.add_load(torque.body, "0.0", "0.0", _value(gen, torque.torque, window(gen.phi, torque.active)))
+    for spring in mech.springs:
+        p1, p2 = gen.ref_point(spring.point_1, out, True), gen.ref_point(spring.point_2, out, True)
+        k, l0 = gen.param(spring.stiffness), gen.param(spring.free_length)
+        f = gen.new("k")
+        gen.emit(out, f"""
+            {f}dx = {p2['x']} - {p1['x']}
+            {f}dy = {p2['y']} - {p1['y']}
+            {f}l = math.hypot({f}dx, {f}dy)
+            {f}ex = {f}dx / {f}l if {f}l > 0 else 0.0
+            {f}ey = {f}dy / {f}l if {f}l > 0 else 0.0
+            {f}T = {k} * ({f}l - {l0})
+            {f}f1x = {f}T * {f}ex
+            {f}f1y = {f}T * {f}ey
+            {f}f2x = -{f}f1x
+            {f}f2y = -{f}f1y
+        """)
+        for ref, p, sx, sy in ((spring.point_1, p1, f"{f}f1x", f"{f}f1y"), (spring.point_2, p2, f"{f}f2x", f"{f}f2y")):
+            gen.add_force_at(split_ref(ref)[0], p["x"], p["y"], sx, sy)
+
+
+def generate(mech, phi: np.ndarray) -> Generated:
+    """The kernel of ``mech`` (see the module docstring). Raises :class:`Unsupported` for what it cannot
+    compile."""
+    gen = Generator(mech, np.asarray(phi, dtype=float))
+    crank = mech.crank.body
+    pivot = split_ref(mech.crank.pivot)[1]
+    o = gen.local(GROUND, pivot)
+    O = {"x": o[0] if o else "0.0", "y": o[1] if o else "0.0", "vx": "0.0", "vy": "0.0", "ax": "0.0", "ay": "0.0"}
+    gen.emit(gen.motion, "c0 = C0[j]\ns0 = S0[j]")  # cos and sin of the crank angles, computed once
+    gen.place(crank, O, gen.local(crank, pivot), "om", "ep", "c0", "s0", ("crank",))
+    for d in mech.dyads:
+        d.emit_fused(gen)
+    motion_series = list(gen.series_lines)
+    gen.series_lines.clear()
+    _loads(gen)
+    for i in reversed(range(len(mech.dyads))):
+        gen.joint_base = 1 + 3 * i
+        gen.force_solvers[i](gen)
+    cl = gen.load(crank)
+    gen.emit(gen.forces, f"""
+        torque = -({cl[2]} - ({O['x']} * {cl[1]} - {O['y']} * {cl[0]}))
+        ffx = ffx + {cl[0]}
+        ffy = ffy + {cl[1]}
+        ffm = ffm + ({O['x']} * {cl[1]} - {O['y']} * {cl[0]})
+        ffm = ffm + (-torque)
+    """)
+    gen.joint_base = 0
+    gen.react(0, f"-{cl[0]}", f"-{cl[1]}")
+    names = [j[0] for j in joints(mech)]
+    for j, outputs in sorted(gen.reactions):
+        gen.series_out(f"joint.{j}", outputs)
+    gen.series_out("forces", {"torque": "torque", "fx": "ffx", "fy": "ffy", "m": "ffm"})
+    force_series = list(gen.series_lines)
+    sections = {"prologue": gen.prologue, "motion": gen.motion, "forces": gen.forces,
+                "motion_series": motion_series, "force_series": force_series,
+                "assembled": gen.assembled, "dead": gen.dead_checks}
+    return Generated(sections, gen.params, gen.rows, gen.series, len(motion_series), len(gen.stored), names,
+                     gen.angles)
+
+
+def _indent(lines: list[str], level: int) -> str:
+    pad = "    " * level
+    return "\n".join(pad + line for line in lines) if lines else pad + "pass"
+
+
+#: Rows written per loop over the positions: with more output streams the compiler no longer vectorises the
+#: loop (its run-time checks that the rows do not overlap grow with the square of their number).
+ROWS_PER_LOOP = 10
+#: At most this many copies of a loop: each copy adds to the compilation time (seconds for a big mechanism),
+#: so beyond it one loop writes every row, unvectorised.
+MAX_LOOPS = 3
+
+
+def _loops(work: list[str], stores: list[str]) -> list[str]:
+    """Loops over the positions, each computing ``work`` and writing at most ROWS_PER_LOOP rows (the
+    compiler drops from each loop what its rows do not need), or one loop when that would take more than
+    MAX_LOOPS copies."""
+    per_loop = ROWS_PER_LOOP if len(stores) <= ROWS_PER_LOOP * MAX_LOOPS else max(len(stores), 1)
+    out = []
+    for start in range(0, max(len(stores), 1), per_loop):
+        out.append(f"        for j in range(m):\n{_indent(work + stores[start:start + per_loop], 3)}\n")
+    return out
+
+
+def _kernel_text(g: Generated, mode: str) -> str:
+    """Per design: the prologue, then one loop over the positions in straight-line, branch-free code that
+    the compiler vectorises (the outputs go to one 1-D row each), then, for summaries, a loop of reductions
+    over the per-position rows of a small scratch table (no designs x positions arrays)."""
+    sec = g.sections
+    head = f"""import math
+
+
+def kernel(P, C0, S0, W, E, DW, LP, about, weighted, S, OUT, B):
+    n = OUT.shape[0] if S.shape[0] == 0 else S.shape[1]
+    m = C0.shape[0]
+    zx = about[0]
+    zy = about[1]
+    for i in range(n):
+        ip = i if P.shape[0] > 1 else 0
+        Wi = W[i if W.shape[0] > 1 else 0]
+        Ei = E[i if E.shape[0] > 1 else 0]
+{_indent(sec["prologue"], 2)}
+"""
+    position = ["om = Wi[j]", "ep = Ei[j]"] + sec["motion"]
+    if mode != "summary":
+        rows = sec["motion_series"] + (sec["force_series"] if mode == "full" else [])
+        hoist = [f"S_{k} = S[{k}, i]" for k in range(len(rows))]
+        work = position + (sec["forces"] if mode == "full" else [])
+        return head + _indent(hoist, 2) + "\n" + "".join(_loops(work, rows)) + "\n"
+    n_joints = len(g.joints)
+    assembled = " & ".join(f"({a})" for a in sec["assembled"]) or "True"
+    regular = " & ".join(f"(abs({d}) >= {_DEAD_TOL!r})" for d in sec["dead"]) or "True"
+    scratch = ["B_ok = B[0]", "B_reg = B[1]", "B_t = B[2]", "B_fx = B[3]", "B_fy = B[4]", "B_fm = B[5]"]
+    scratch += [f"B_j{j} = B[{6 + j}]" for j in range(n_joints)]
+    stores = [f"B_ok[j] = 1.0 if {assembled} else 0.0", f"B_reg[j] = 1.0 if {regular} else 0.0",
+              "B_t[j] = torque", "B_fx[j] = ffx", "B_fy[j] = ffy", "B_fm[j] = ffm"]
+    stores += [f"B_j{j}[j] = r{j}x * r{j}x + r{j}y * r{j}y" for j in range(n_joints)]
+    init = [f"jm{j} = 0.0" for j in range(n_joints)]
+    reduce = []
+    for j in range(n_joints):  # squared magnitudes: one square root per design
+        reduce += [f"if B_j{j}[j] > jm{j}:", f"    jm{j} = B_j{j}[j]"]
+    joint_out = [f"OUT[i, {len(SUMMARY_FIELDS) + j}] = math.sqrt(jm{j}) + bad" for j in range(n_joints)]
+    return head + _indent(scratch, 2) + "\n" + "".join(_loops(position + sec["forces"], stores)) + f"""
+        s_asm = True
+        s_reg = True
+        s_tmax = 0.0
+        s_t2 = 0.0
+        s_pw = 0.0
+        s_wsum = 0.0
+        s_fmax = 0.0
+        s_mmax = 0.0
+{_indent(init, 2)}
+        for j in range(m):
+            s_asm = s_asm and B_ok[j] > 0.5
+            s_reg = s_reg and B_reg[j] > 0.5
+            torque = B_t[j]
+            if not math.isfinite(torque):
+                s_reg = False
+            at = abs(torque)
+            if at > s_tmax:
+                s_tmax = at
+            wt = DW[j] / abs(Wi[j]) if weighted else DW[j]
+            s_wsum += wt
+            s_t2 += torque * torque * wt
+            s_pw += torque * Wi[j] * wt
+            sf = B_fx[j] * B_fx[j] + B_fy[j] * B_fy[j]
+            if sf > s_fmax:
+                s_fmax = sf
+            sm = abs(B_fm[j] - (zx * B_fy[j] - zy * B_fx[j]))
+            if sm > s_mmax:
+                s_mmax = sm
+{_indent(reduce, 3)}
+        ok = s_asm and s_reg
+        bad = 0.0 if ok else math.nan
+        OUT[i, 0] = 1.0 if s_asm else 0.0
+        OUT[i, 1] = 1.0 if ok else 0.0
+        OUT[i, 2] = s_tmax + bad
+        OUT[i, 3] = math.sqrt(s_t2 / s_wsum) + bad if s_wsum > 0.0 else math.nan
+        OUT[i, 4] = s_pw / s_wsum + bad if s_wsum > 0.0 else math.nan
+        OUT[i, 5] = math.sqrt(s_fmax) + bad
+        OUT[i, 6] = s_mmax + bad
+{_indent(joint_out, 2)}
+"""
