@@ -29,9 +29,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from .kinematics import _col
 from .kinetostatics import Forces
-from .model import RRP, split_ref
+from .model import split_ref
+from .refs import column
 
 
 @dataclass(frozen=True)
@@ -127,8 +127,8 @@ def crank_effort(forces: Forces, pin: str | None = None) -> CrankEffort:
     pivot = kin.point(mech.crank.pivot)
     point_name = joint.name.split(":")[0]
     pin_motion = kin.point(f"{crank}.{point_name}")
-    u, v = (_col(c) for c in mech.body(crank).points[point_name])
-    pu, pv = (_col(c) for c in mech.body(crank).points[split_ref(mech.crank.pivot)[1]])
+    u, v = (column(c) for c in mech.body(crank).points[point_name])
+    pu, pv = (column(c) for c in mech.body(crank).points[split_ref(mech.crank.pivot)[1]])
     radius = np.hypot(np.asarray(u) - pu, np.asarray(v) - pv)
     if np.any(radius <= 0):
         raise InputError(f"The pin '{joint.name}' lies on the crank's pivot: the crank radius is 0 m.")
@@ -194,7 +194,7 @@ def piston_effort(forces: Forces, slider: str | None = None) -> PistonEffort:
     if not isinstance(forces, Forces):
         raise InputError(f"piston_effort needs the Forces of kinetostatics; got {type(forces).__name__}.")
     mech = forces.mechanism
-    groups = [d for d in mech.dyads if isinstance(d, RRP)]
+    groups = [d for d in mech.dyads if d.kind == "RRP"]
     if slider is None:
         if len(groups) != 1:
             raise InputError(

@@ -118,15 +118,13 @@ def plot_mechanism(
 
     # guides fixed in the ground
     for d in mechanism.dyads:
-        guides = [getattr(d, a) for a in ("guide", "guide_a", "guide_b") if hasattr(d, a)]
-        for g in guides:
+        for g, slider in d.drawing().guides:
             gbody, gpoint = _model.split_ref(g.point)
             if gbody != _model.GROUND:
                 continue
             gx, gy = (float(_pick(v, design)) for v in mechanism.ground[gpoint])
             ga = _pick(g.angle, design)
             ux, uy = np.cos(ga), np.sin(ga)
-            slider = d.b if isinstance(d, _model.RRP) else d.a if g is getattr(d, "guide_a", None) else d.b
             sx, sy = coords[slider][next(iter(mechanism.body(slider).points))]
             along = (sx - gx) * ux + (sy - gy) * uy
             lo, hi = np.nanmin(along) - 2.5 * size, np.nanmax(along) + 2.5 * size

@@ -86,15 +86,7 @@ def design_count(analysis: Any) -> int | None:
 
 def slider_bodies(mech: _model.Mechanism) -> list[str]:
     """Bodies that slide along a guide (the slide coordinate is reported for them)."""
-    out: list[str] = []
-    for d in mech.dyads:
-        if isinstance(d, _model.RRP):
-            out.append(d.b)
-        elif isinstance(d, _model.RPR):
-            out.append(d.a)
-        elif isinstance(d, _model.PRP):
-            out += [d.a, d.b]
-    return out
+    return [b for d in mech.dyads for b in d.drawing().sliders]
 
 
 def joint_list(forces: Any) -> list[tuple[str, str, str, str]]:
