@@ -15,8 +15,14 @@ def _module_name(path: Path) -> str:
     return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
 
 
+#: Modules that are loaded inside a function on purpose: the compiled engine, which needs numba and is imported
+#: only when asked for; the dispatch to it from the NumPy engine is not a dependency of substance.
+OPTIONAL_BACKENDS = ("machdyn.linkage.fused",)
+
+
 def _imports(path: Path) -> set[str]:
-    """The machdyn modules a module imports, at any level (inside functions too), except for type checking."""
+    """The machdyn modules a module imports, at any level (inside functions too), except for type checking and
+    the lazy loading of an optional backend."""
     tree = ast.parse(path.read_text(encoding="utf-8"))
     package = _module_name(path) if path.name == "__init__.py" else _module_name(path).rsplit(".", 1)[0]
     found: set[str] = set()
@@ -24,6 +30,7 @@ def _imports(path: Path) -> set[str]:
     for node in ast.walk(tree):
         if isinstance(node, ast.If) and "TYPE_CHECKING" in ast.unparse(node.test):
             skip.update(id(n) for n in ast.walk(node))
+    top = {id(n) for n in tree.body}
     for node in ast.walk(tree):
         if id(node) in skip:
             continue
@@ -36,6 +43,8 @@ def _imports(path: Path) -> set[str]:
                 target = ".".join(base + ([node.module] if node.module else []))
             else:
                 target = node.module or ""
+            if id(node) not in top and target.startswith(OPTIONAL_BACKENDS):
+                continue
             if target.startswith("machdyn"):
                 found.add(target)
                 found.update(f"{target}.{a.name}" for a in node.names)
