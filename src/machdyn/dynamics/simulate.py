@@ -1,0 +1,550 @@
+"""Forward dynamics of the equivalent machine under a real drive: periodic steady state, start-up, free motion.
+
+Equation of motion (Lagrange, one degree of freedom; Uicker, Pennock & Shigley, *Theory of Machines and
+Mechanisms*, 5th ed., ch. 16): J(phi) phi'' + J'(phi)/2 phi'^2 = M_drive(phi') + M(phi, phi'), where J includes
+the flywheel and the drive's rotor reduced to the crank.
+
+**Steady state, directly.** With the kinetic energy K = J omega^2 / 2 and phi as the independent variable the
+equation becomes dK/dphi = M_drive(omega) + M(phi, omega), omega = sqrt(2K/J), dt/dphi = 1/omega: one equation
+per design, whatever the mechanism. The periodic solution K(phi0 + P) = K(phi0) is found by Newton's method on
+K(phi0) (shooting over one cycle), with the derivative dK(P)/dK(phi0) integrated alongside (the variational
+equation), so a few cycles are integrated, not the hundreds a start-up from rest takes to settle. All design
+variants share phi and are integrated together in one call of :func:`scipy.integrate.solve_ivp`.
+
+**Start-up and free motion** integrate the state (phi, omega) in time.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import InputError, MachdynError
+from .drives import ConstantSpeed, ConstantTorque
+from .equivalent import EquivalentMachine
+from .tables import FourierCurve, PeriodicCurve
+
+RTOL = 1e-11  # the integrator's relative tolerance: periodicity and energy are checked to 1e-9
+
+
+class NotSettledError(MachdynError):
+    """The simulation did not reach a periodic steady state (or steady running) within its limits."""
+
+
+def _designs(machine: EquivalentMachine, *values) -> int:
+    sizes = {machine.designs} | {int(np.size(v)) for v in values if np.ndim(v) > 0}
+    sizes.discard(1)
+    if len(sizes) > 1:
+        raise InputError(f"The design-variant arrays of the machine, flywheel and drive must have one length; got "
+                         f"lengths {sorted(sizes)}.")
+    return sizes.pop() if sizes else 1
+
+
+def _added_inertia(flywheel, drive, n) -> np.ndarray:
+    fw = np.asarray(flywheel, dtype=float)
+    if not np.all(np.isfinite(fw)) or np.any(fw < 0):
+        bad = fw[~(np.isfinite(fw) & (fw >= 0))].ravel()[0] if fw.ndim else float(fw)
+        raise InputError(f"The flywheel inertia must be >= 0 kg*m^2; got {bad:g} kg*m^2.")
+    return np.broadcast_to(fw + np.asarray(getattr(drive, "inertia", 0.0), dtype=float), (n,)).astype(float)
+
+
+class _Model:
+    """The right-hand sides, vectorised over designs. When every curve of the machine is a Fourier series, J,
+    J', the position moment and the damping come from one stacked matrix product per call (the fast path)."""
+
+    def __init__(self, machine: EquivalentMachine, drive, added: np.ndarray, n: int):
+        self.m, self.drive, self.added, self.n = machine, drive, added, n
+        self.speed_dependent = not (isinstance(drive, ConstantTorque) and not machine.forces
+                                    and not np.any(machine.damping.y))
+        curves = (machine.inertia, machine.potential, machine.moment, machine.damping)
+        self.fast = all(isinstance(c, FourierCurve) for c in curves) and not machine.forces
+        if self.fast:
+            self._stack(*curves)
+        self.torque_slope = getattr(drive, "torque_slope", None)
+
+    def _stack(self, j, v, m, c):
+        n = self.n
+        kmax = max(x.harmonics for x in (j, v, m, c))
+        self.k = np.arange(1, kmax + 1) * (2.0 * np.pi / self.m.period)
+
+        def pad(x):
+            out = np.zeros((n, kmax))
+            out[:, : x.shape[1]] = x
+            return out
+
+        k = self.k
+        ja, jb, va, vb = pad(j.a), pad(j.b), pad(v.a), pad(v.b)
+        self.c0 = np.stack([np.broadcast_to(j.a0, (n,)), np.zeros(n), np.broadcast_to(m.a0, (n,)),
+                            np.broadcast_to(c.a0, (n,))])
+        self.ca = np.stack([ja, jb * k, pad(m.a) - vb * k, pad(c.a)])
+        self.cb = np.stack([jb, -ja * k, pad(m.b) + va * k, pad(c.b)])
+
+    def curves(self, phi):
+        """J (without the added inertia), J', position moment and reduced damping at phi (N,)."""
+        if self.fast:
+            phi = np.asarray(phi, dtype=float)
+            if phi.ndim == 2:
+                arg = phi[..., None] * self.k
+                out = (self.c0[..., None] + np.einsum("rnk,nmk->rnm", self.ca, np.cos(arg))
+                       + np.einsum("rnk,nmk->rnm", self.cb, np.sin(arg)))
+            elif phi.ndim == 0 or np.all(phi == phi.flat[0]):
+                arg = float(np.ravel(phi)[0]) * self.k
+                out = self.c0 + self.ca @ np.cos(arg) + self.cb @ np.sin(arg)
+            else:
+                arg = phi[:, None] * self.k
+                out = (self.c0 + np.einsum("rnk,nk->rn", self.ca, np.cos(arg))
+                       + np.einsum("rnk,nk->rn", self.cb, np.sin(arg)))
+            return out[0], out[1], out[2], out[3]
+        m = self.m
+        return m.inertia(phi), m.inertia.derivative(phi), m.position_moment(phi), m.damping(phi)
+
+    def inertia(self, phi):
+        j, dj, _, _ = self.curves(phi)
+        return j + self.added, dj
+
+    def drive_torque(self, omega):
+        if self.drive is None:
+            return 0.0 * omega, 0.0 * omega
+        if self.torque_slope is not None:
+            return self.torque_slope(omega)
+        return self.drive.torque_at(omega), self.drive.slope(omega)
+
+    def _all(self, phi, omega, parts=None):
+        j, dj, mp, c = self.curves(phi) if parts is None else parts
+        td, dtd = self.drive_torque(omega)
+        m, dm = td + mp - c * omega, dtd - c
+        for law, ratio in self.m.forces:
+            from .equivalent import _force_moment
+
+            f, df = _force_moment(law, ratio, phi, omega, self.m._speed_step)
+            m, dm = m + f, dm + df
+        return j + self.added, dj, m, dm
+
+    def moment(self, phi, omega):
+        """Total moment (drive + loads) and its omega-derivative."""
+        return self._all(phi, omega)[2:]
+
+    def energy_rhs(self, phi, y, with_sensitivity=True):
+        n = self.n
+        q = np.full(n, phi)
+        k = y[:n]
+        parts = self.curves(q)
+        j = parts[0] + self.added
+        omega = np.sqrt(np.maximum(2.0 * k / j, 1e-300))
+        _, _, m, dm = self._all(q, omega, parts)
+        if not with_sensitivity:
+            return np.concatenate([m, 1.0 / omega])
+        s = y[2 * n:]
+        return np.concatenate([m, 1.0 / omega, dm / (j * omega) * s])
+
+    def time_rhs(self, t, y):
+        n = self.n
+        phi, omega = y[:n], y[n:]
+        j, dj, m, _ = self._all(phi, omega)
+        return np.concatenate([omega, (m - 0.5 * dj * omega * omega) / j])
+
+
+@dataclass(frozen=True)
+class SteadyState:
+    """The periodic steady state (arrays designs first for several designs; see :func:`steady_state`).
+
+    phi [rad] over one cycle; omega [rad/s], acceleration [rad/s^2], time [s] since phi[0], drive_torque [N*m] at
+    the crank, load_moment [N*m] (all loads, reduced), inertia [kg*m^2] (with flywheel and rotor) at each phi.
+    delta: (max - min)/mean with mean = (max + min)/2; mean_speed: that mean; time_mean_speed = cycle / period
+    [rad/s]; period_time [s]; energy_per_cycle: the drive's work per cycle [J]; peak and RMS (over time) drive
+    torque [N*m]; residual: |K(end) - K(start)| / K(start) of the last shooting step; iterations.
+    """
+
+    machine: EquivalentMachine
+    drive: object
+    flywheel: np.ndarray
+    phi: np.ndarray
+    omega: np.ndarray
+    acceleration: np.ndarray
+    time: np.ndarray
+    drive_torque: np.ndarray
+    load_moment: np.ndarray
+    inertia: np.ndarray
+    delta: np.ndarray
+    mean_speed: np.ndarray
+    time_mean_speed: np.ndarray
+    period_time: np.ndarray
+    energy_per_cycle: np.ndarray
+    peak_drive_torque: np.ndarray
+    rms_drive_torque: np.ndarray
+    residual: np.ndarray
+    iterations: int
+
+    @property
+    def mean_power(self) -> np.ndarray:
+        """Mean power of the drive [W] = energy per cycle / period."""
+        return self.energy_per_cycle / self.period_time
+
+    def speed_curve(self) -> PeriodicCurve:
+        """omega(phi) [rad/s] as a periodic Hermite curve (slope epsilon/omega)."""
+        w = np.atleast_2d(self.omega)
+        return PeriodicCurve.hermite(self.phi, w, np.atleast_2d(self.acceleration) / w, self.machine.period)
+
+
+def _out(x, single):
+    x = np.asarray(x)
+    return x[0] if single and x.ndim >= 1 and x.shape[0] == 1 else x
+
+
+def balance_speed(machine: EquivalentMachine, drive, n: int, grid: np.ndarray) -> np.ndarray:
+    """The speed [rad/s] at which the drive's torque balances the mean load over a cycle (per design), on the
+    stable branch (the drive's surplus falls as the speed rises)."""
+    base = np.broadcast_to(machine.moment.mean(), (n,))
+
+    def surplus(w):
+        q = np.broadcast_to(grid, (n, grid.size))
+        ms = machine.speed_moment(q, w[:, None] + 0.0 * q)[0].mean(axis=1)
+        return drive.torque_at(w) + base + ms
+
+    hi = np.full(n, 1.0)
+    for _ in range(80):
+        bad = surplus(hi) > 0
+        if not np.any(bad):
+            break
+        hi = np.where(bad, hi * 2.0, hi)
+    else:
+        raise NotSettledError("The drive's torque exceeds the load at every speed up to "
+                              f"{float(np.max(hi)):.3g} rad/s: the machine would run away; there is no steady state.")
+    scan = np.linspace(0.0, 1.0, 65)[:, None] * hi[None, :]
+    values = np.array([surplus(w) for w in scan])
+    lo = np.zeros(n)
+    up = hi.copy()
+    for i in range(n):
+        positive = np.flatnonzero(values[:, i] > 0)
+        if positive.size == 0:
+            lo[i] = np.nan
+            continue
+        last = positive[-1]
+        lo[i], up[i] = scan[last, i], scan[min(last + 1, scan.shape[0] - 1), i]
+    if np.any(np.isnan(lo)):
+        return lo
+    for _ in range(60):
+        mid = 0.5 * (lo + up)
+        pos = surplus(mid) > 0
+        lo, up = np.where(pos, mid, lo), np.where(pos, up, mid)
+    return 0.5 * (lo + up)
+
+
+def _stall_message(machine, drive, n, mean_speed_guess, grid):
+    q = np.broadcast_to(grid, (n, grid.size))
+    w = np.broadcast_to(np.where(np.isfinite(mean_speed_guess), mean_speed_guess, 1.0), (n,))[:, None] + 0.0 * q
+    j = machine.inertia(q)
+    need = -machine.moment_at(q, w) + 0.5 * machine.inertia.derivative(q) * w * w
+    mean_need = -(machine.moment.mean() + machine.speed_moment(q, w)[0].mean(axis=1))
+    del j
+    bd = np.broadcast_to(np.asarray(getattr(drive, "breakdown_torque", np.nan), dtype=float), (n,))
+    return (f"peak load torque {float(np.max(need)):.4g} N*m and mean load torque {float(np.max(mean_need)):.4g} N*m "
+            f"at the crank, against the drive's breakdown torque {float(np.min(bd)):.4g} N*m at the crank")
+
+
+def steady_state(
+    machine: EquivalentMachine,
+    drive,
+    flywheel=0.0,
+    *,
+    mean_speed: float | None = None,
+    tolerance: float = 1e-10,
+    max_iterations: int = 30,
+    rtol: float = RTOL,
+) -> SteadyState:
+    """The periodic steady state of ``machine`` driven by ``drive`` with a ``flywheel`` [kg*m^2] on the crank.
+
+    Parameters
+    ----------
+    machine : :class:`~machdyn.dynamics.equivalent.EquivalentMachine`.
+    drive : a drive of :mod:`machdyn.dynamics.drives`. With :class:`ConstantSpeed` the speed is imposed (the
+        kinetostatic case). With a :class:`ConstantTorque` drive and no speed-dependent load every speed repeats
+        if the work per cycle balances; ``mean_speed`` [rad/s] then picks the one with (max + min)/2 equal to it.
+    flywheel : flywheel inertia [kg*m^2] >= 0 (one per design allowed).
+    tolerance : periodicity |K(end) - K(start)| / K(start) required of the shooting.
+    max_iterations : Newton steps before :class:`NotSettledError`.
+
+    Raises
+    ------
+    InputError : negative inertia; a drive that cannot carry the mean load (naming the peak and mean load torque
+        and the breakdown torque); a machine that stalls in the cycle.
+    NotSettledError : the shooting does not converge.
+    """
+    from scipy.integrate import solve_ivp
+
+    n = _designs(machine, flywheel, *(getattr(drive, f, 0.0) for f in ("torque", "rated_power", "flow")))
+    added = _added_inertia(flywheel, drive, n)
+    if np.any(machine.inertia.y + added.min() <= 0):
+        raise InputError("The reduced moment of inertia with the flywheel must be > 0 kg*m^2 at every crank angle; "
+                         f"got {float(np.min(machine.inertia.y) + added.min()):g} kg*m^2.")
+    period = machine.period
+    grid = np.append(machine.inertia.x, machine.inertia.x[0] + period) if machine.inertia.x.size > 1 else \
+        np.linspace(0.0, period, 721)
+    if machine.moment.x.size > grid.size - 1:
+        grid = np.append(machine.moment.x, machine.moment.x[0] + period)
+    phi0 = float(grid[0])
+    if isinstance(drive, ConstantSpeed):
+        return _constant_speed(machine, drive, added, n, grid)
+    model = _Model(machine, drive, added, n)
+    j0 = model.inertia(np.full(n, phi0))[0]
+
+    if not model.speed_dependent:
+        k0 = _neutral_start(model, machine, drive, n, grid, mean_speed, rtol)
+        iterations = 0
+    else:
+        w_bar = balance_speed(machine, drive, n, grid[:-1])
+        if np.any(~np.isfinite(w_bar)):
+            raise InputError("The drive cannot carry the load of the machine at any speed: "
+                             + _stall_message(machine, drive, n, w_bar, grid[:-1]) + ".")
+        k0 = 0.5 * j0 * w_bar**2
+        iterations = 0
+        for step_number in range(1, max_iterations + 1):
+            iterations = step_number
+            y0 = np.concatenate([k0, np.zeros(n), np.ones(n)])
+            sol = _solve(solve_ivp, lambda p, y: model.energy_rhs(p, y), (phi0, phi0 + period), y0, rtol,
+                         model, n, machine, drive, grid, t_eval=grid)
+            kend, send = sol.y[:n, -1], sol.y[2 * n:, -1]
+            res = kend - k0
+            if np.all(np.abs(res) <= tolerance * k0):
+                break
+            step = -res / (send - 1.0)
+            k0 = np.maximum(k0 + step, 0.05 * k0)
+        else:
+            raise NotSettledError(
+                f"The periodic steady state was not found in {max_iterations} shooting steps: the energy at the start "
+                f"of the cycle still changes by {float(np.max(np.abs(res) / k0)):.3g} (relative) per cycle.")
+    if iterations == 0:
+        y0 = np.concatenate([k0, np.zeros(n)])
+        sol = _solve(solve_ivp, lambda p, y: model.energy_rhs(p, y, False), (phi0, phi0 + period), y0, rtol,
+                     model, n, machine, drive, grid, t_eval=grid)
+    k, time = sol.y[:n], sol.y[n:2 * n]
+    residual = np.abs(k[:, -1] - k[:, 0]) / k[:, 0]
+    period_time = time[:, -1]
+    phi = grid[:-1]
+    k, time = k[:, :-1], time[:, :-1]
+    q = np.broadcast_to(phi, (n, phi.size))
+    j, dj = model.inertia(q)
+    j = np.broadcast_to(j, q.shape)
+    omega = np.sqrt(2.0 * k / j)
+    td = np.broadcast_to(model.drive_torque(omega)[0], q.shape)
+    load = machine.moment_at(q, omega)
+    acc = (td + load - 0.5 * dj * omega**2) / j
+    return _steady_result(machine, drive, added, phi, omega, acc, time, td, load, j, period_time, residual,
+                          iterations)
+
+
+def _solve(solve_ivp, rhs, span, y0, rtol, model, n, machine, drive, grid, t_eval=None):
+    def stall(p, y):
+        return float(np.min(y[:n])) - 1e-12 * float(np.max(np.abs(y0[:n])))
+
+    stall.terminal = True  # type: ignore[attr-defined]
+    stall.direction = -1  # type: ignore[attr-defined]
+    sol = solve_ivp(rhs, span, y0, method="DOP853", rtol=rtol, atol=1e-14 * max(1.0, float(np.max(np.abs(y0)))),
+                    t_eval=t_eval, events=stall)
+    if sol.status == 1 or not sol.success:
+        where = float(sol.t[-1])
+        raise InputError(
+            f"The machine stalls: its speed falls to zero at crank angle {np.degrees(where):.1f}° in the cycle; "
+            + _stall_message(machine, drive, n, np.nan, grid[:-1])
+            + ". Choose a larger motor, a higher gear ratio or a larger flywheel.")
+    return sol
+
+
+def _neutral_start(model, machine, drive, n, grid, mean_speed, rtol):
+    """K at the start for a drive and loads that do not depend on speed: the cycle must balance, and the level
+    is set by ``mean_speed``."""
+    from scipy.optimize import brentq
+
+    phi = grid
+    q = np.broadcast_to(phi, (n, phi.size))
+    work = (machine.moment.integral(q) - machine.moment.integral(np.zeros((n, 1)))
+            - (machine.potential(q) - machine.potential(np.zeros((n, 1))))
+            + np.broadcast_to(np.asarray(drive.torque, dtype=float), (n,))[:, None] * (phi - phi[0]))
+    scale = np.abs(machine.moment.y).mean(axis=1) * machine.period + np.abs(np.asarray(drive.torque)) * machine.period
+    unbalanced = np.abs(work[:, -1]) > 1e-9 * np.maximum(scale, 1e-300)
+    if np.any(unbalanced):
+        i = int(np.flatnonzero(unbalanced)[0])
+        given = float(np.broadcast_to(np.asarray(drive.torque, dtype=float), (n,))[i])
+        balancing = given - work[i, -1] / machine.period
+        raise InputError(
+            f"With a constant drive torque and no speed-dependent load the work per cycle must balance for a steady "
+            f"state; the drive torque {given:.6g} N*m and the loads leave {work[i, -1]:.6g} J per cycle (the "
+            f"balancing drive torque is {balancing:.6g} N*m).")
+    if mean_speed is None or not mean_speed > 0:
+        raise InputError("A constant-torque drive with no speed-dependent load needs the mean speed (mean_speed > 0 "
+                         f"rad/s) to fix its steady state; got {mean_speed!r}.")
+    j = np.broadcast_to(model.inertia(q)[0], q.shape)
+    k0 = np.empty(n)
+    for i in range(n):
+        lowest = max(0.0, float(np.max(-work[i])))
+
+        def mid(k, i=i):
+            w = np.sqrt(2.0 * (k + work[i]) / j[i])
+            return 0.5 * (w.max() + w.min()) - mean_speed
+
+        hi = max(lowest, 1.0) * 2.0
+        while mid(hi) < 0:
+            hi *= 2.0
+        k0[i] = brentq(mid, lowest, hi, xtol=1e-14 * hi, rtol=4 * np.finfo(float).eps)
+    return k0
+
+
+def _constant_speed(machine, drive, added, n, grid):
+    phi = grid[:-1]
+    q = np.broadcast_to(phi, (n, phi.size))
+    w = float(drive.speed)
+    omega = np.full(q.shape, w)
+    j = np.broadcast_to(machine.inertia(q) + added[:, None], q.shape)
+    dj = machine.inertia.derivative(q)
+    load = machine.moment_at(q, omega)
+    td = -load + 0.5 * dj * w * w
+    time = (phi - phi[0]) / w + 0.0 * q
+    return _steady_result(machine, drive, added, phi, omega, np.zeros(q.shape), time, td, load, j,
+                          np.full(n, machine.period / w), np.zeros(n), 0)
+
+
+def _steady_result(machine, drive, added, phi, omega, acc, time, td, load, j, period_time, residual, iterations):
+    period = machine.period
+    h = np.diff(np.append(phi, phi[0] + period))
+    wmax, wmin = omega.max(axis=1), omega.min(axis=1)
+    mid = 0.5 * (wmax + wmin)
+    energy = (td * h).sum(axis=1)
+    rms = np.sqrt((td * td / omega * h).sum(axis=1) / period_time)
+    s = machine.single
+    return SteadyState(
+        machine, drive, _out(added, s), phi, _out(omega, s), _out(acc, s), _out(time, s), _out(td, s),
+        _out(load, s), _out(j, s), _out((wmax - wmin) / mid, s), _out(mid, s), _out(period / period_time, s),
+        _out(period_time, s), _out(energy, s), _out(np.abs(td).max(axis=1), s), _out(rms, s), _out(residual, s),
+        iterations,
+    )
+
+
+@dataclass(frozen=True)
+class Trajectory:
+    """A motion in time: t [s], phi [rad], omega [rad/s] (designs first), the drive torque [N*m] and the
+    kinetic plus potential energy [J] of the machine with its flywheel (from the machine's curves)."""
+
+    t: np.ndarray
+    phi: np.ndarray
+    omega: np.ndarray
+    drive_torque: np.ndarray
+    energy: np.ndarray
+
+
+def simulate(machine: EquivalentMachine, drive, flywheel=0.0, *, duration: float, phi0=0.0, omega0=0.0,
+             samples: int = 400, rtol: float = RTOL) -> Trajectory:
+    """Integrate the machine in time from (phi0 [rad], omega0 [rad/s]) over ``duration`` [s].
+
+    ``drive`` None leaves the machine free (no drive torque, no drive inertia).
+    """
+    from scipy.integrate import solve_ivp
+
+    if not duration > 0:
+        raise InputError(f"The duration of a simulation must be > 0 s; got {duration!r}.")
+    if isinstance(drive, ConstantSpeed):
+        raise InputError("A constant-speed drive imposes the motion; use steady_state for it.")
+    n = _designs(machine, flywheel, phi0, omega0)
+    added = _added_inertia(flywheel, drive, n)
+    model = _Model(machine, drive, added, n)
+    y0 = np.concatenate([np.broadcast_to(phi0, (n,)), np.broadcast_to(omega0, (n,))]).astype(float)
+    t_eval = np.linspace(0.0, duration, samples)
+    sol = solve_ivp(model.time_rhs, (0.0, duration), y0, method="DOP853", rtol=rtol,
+                    atol=1e-12 * max(1.0, float(np.max(np.abs(y0)))), t_eval=t_eval)
+    if not sol.success:
+        raise NotSettledError(f"The time integration failed: {sol.message}")
+    return _trajectory(machine, model, sol.t, sol.y, n)
+
+
+def _trajectory(machine, model, t, y, n):
+    phi, omega = y[:n], y[n:]
+    j = model.inertia(phi)[0]
+    td = np.broadcast_to(model.drive_torque(omega)[0], phi.shape)
+    e = 0.5 * j * omega**2 + machine.potential(phi)
+    s = machine.single
+    return Trajectory(t, _out(phi, s), _out(omega, s), _out(td, s), _out(e, s))
+
+
+@dataclass(frozen=True)
+class StartUp:
+    """A start-up from rest: the trajectory, the steady state it runs into and the time to steady running [s]
+    (the first time after which the speed stays within ``tolerance`` * mean speed of the steady-state speed at
+    the same crank angle)."""
+
+    trajectory: Trajectory
+    steady: SteadyState
+    time_to_steady: np.ndarray
+    tolerance: float
+
+
+def start_up(machine: EquivalentMachine, drive, flywheel=0.0, *, phi0: float = 0.0, tolerance: float = 0.01,
+             max_time: float | None = None, steady: SteadyState | None = None, samples_per_cycle: int = 100,
+             rtol: float = 1e-9) -> StartUp:
+    """Start the machine from rest at crank angle ``phi0`` [rad] and run it until it is in steady running.
+
+    Raises InputError if the drive cannot start it (naming its starting torque and the load's static torque at
+    phi0) or if it rolls back; :class:`NotSettledError` if it is not in steady running after ``max_time`` [s]
+    (default: 500 steady-state periods).
+    """
+    from scipy.integrate import solve_ivp
+
+    if isinstance(drive, ConstantSpeed):
+        raise InputError("A constant-speed drive has no start-up; give a motor (constant torque, induction, table or "
+                         "hydraulic).")
+    if not 0 < tolerance < 1:
+        raise InputError(f"The tolerance of steady running must be in (0, 1); got {tolerance!r}.")
+    steady = steady or steady_state(machine, drive, flywheel)
+    n = _designs(machine, flywheel)
+    added = _added_inertia(flywheel, drive, n)
+    model = _Model(machine, drive, added, n)
+    q0 = np.full(n, float(phi0))
+    static = machine.position_moment(q0)
+    start = np.broadcast_to(drive.torque_at(0.0), (n,))
+    if np.any(start + static <= 0):
+        i = int(np.flatnonzero(start + static <= 0)[0])
+        grid = np.broadcast_to(steady.phi, (n, steady.phi.size))
+        peak = float(np.max(-machine.position_moment(grid)))
+        raise InputError(
+            f"The drive cannot start the machine at crank angle {np.degrees(phi0):.1f}°: its starting torque "
+            f"{start[i]:.4g} N*m at the crank does not exceed the load's static torque {-static[i]:.4g} N*m there "
+            f"(peak static load over the cycle {peak:.4g} N*m; breakdown torque "
+            f"{float(np.min(getattr(drive, 'breakdown_torque', np.nan))):.4g} N*m).")
+    curve = steady.speed_curve()
+    period_t = float(np.max(steady.period_time))
+    limit = max_time if max_time is not None else 500.0 * period_t
+    wm = np.atleast_1d(steady.mean_speed)
+
+    def rollback(t, y):
+        return float(np.min(y[n:])) + 1e-9 * float(np.max(wm))
+
+    rollback.terminal = True  # type: ignore[attr-defined]
+    rollback.direction = -1  # type: ignore[attr-defined]
+    ts, ys = [np.zeros(1)], [np.concatenate([q0, np.zeros(n)])[:, None]]
+    t0, y0 = 0.0, ys[0][:, 0]
+    settled_at = np.full(n, np.nan)
+    chunk = 5.0 * period_t
+    while t0 < limit:
+        t1 = min(t0 + chunk, limit)
+        t_eval = np.linspace(t0, t1, int(samples_per_cycle * (t1 - t0) / period_t) + 2)[1:]
+        sol = solve_ivp(model.time_rhs, (t0, t1), y0, method="DOP853", rtol=rtol, atol=1e-10 * float(np.max(wm)),
+                        t_eval=t_eval, events=rollback)
+        if sol.status == 1:
+            raise InputError(
+                f"The machine rolls back after {sol.t[-1]:.3g} s of start-up: the drive's torque at low speed does not "
+                f"carry it over its peak load ({_stall_message(machine, drive, n, wm, steady.phi)}).")
+        ts.append(sol.t)
+        ys.append(sol.y)
+        t0, y0 = float(sol.t[-1]), sol.y[:, -1]
+        t_all, y_all = np.concatenate(ts), np.concatenate(ys, axis=1)
+        off = np.abs(y_all[n:] - curve(y_all[:n])) > tolerance * wm[:, None]
+        # settled: off nowhere during the last cycle
+        last = t_all >= t0 - period_t
+        if t0 >= period_t and not np.any(off[:, last]):
+            for i in range(n):
+                bad = np.flatnonzero(off[i])
+                settled_at[i] = t_all[bad[-1] + 1] if bad.size else 0.0
+            traj = _trajectory(machine, model, t_all, y_all, n)
+            return StartUp(traj, steady, _out(settled_at, machine.single), tolerance)
+    raise NotSettledError(
+        f"The machine did not reach steady running within {limit:.4g} s ({limit / period_t:.0f} steady-state "
+        f"periods): its speed still differs from the steady state by more than {tolerance:.1%} of the mean speed.")
