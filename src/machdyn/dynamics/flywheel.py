@@ -249,7 +249,7 @@ def disc_flywheel(inertia, max_speed, *, width_ratio: float = 0.2, density=STEEL
     --------
     >>> part = disc_flywheel(10.0, 100.0)
     >>> round(part.diameter, 4), round(part.mass, 2)
-    (0.5685, 247.52)
+    (0.5787, 238.92)
     """
     check_positive("flywheel inertia", inertia, "kg*m^2")
     check_positive("flywheel speed", max_speed, "rad/s")
