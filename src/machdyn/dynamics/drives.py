@@ -256,16 +256,25 @@ class TorqueSpeedTable:
             raise InputError(f"The speeds of a torque-speed table must be >= 0 rad/s; got {s[0]:g} rad/s.")
         _check_gear(self.ratio, self.efficiency, self.rotor_inertia, "torque-speed table motor")
 
+    @cached_property
     def _curve(self):
         from scipy.interpolate import PchipInterpolator
 
-        return PchipInterpolator(_arr(self.speeds), _arr(self.torques), extrapolate=False)
+        curve = PchipInterpolator(_arr(self.speeds), _arr(self.torques), extrapolate=False)
+        return curve, curve.derivative()
 
     def _motor(self, omega):
-        m = np.clip(self.ratio * _arr(omega), self.speeds[0], self.speeds[-1])
-        curve = self._curve()
-        return curve(m), curve.derivative()(m) * ((self.ratio * _arr(omega) > self.speeds[0])
-                                                  & (self.ratio * _arr(omega) < self.speeds[-1]))
+        """Motor torque and slope at crank speed omega: PCHIP inside the table; above its last speed the last
+        slope continues (a motor past synchronous speed generates); below the first speed the first torque."""
+        curve, slope = self._curve
+        lo, hi = self.speeds[0], self.speeds[-1]
+        m = self.ratio * _arr(omega)
+        inside = np.clip(m, lo, hi)
+        t, d = curve(inside), slope(inside)
+        end_slope = float(slope(hi))
+        t = np.where(m > hi, float(curve(hi)) + end_slope * (m - hi), t)
+        d = np.where(m > hi, end_slope, np.where(m < lo, 0.0, d))
+        return t, d
 
     def torque_at(self, omega):
         return _gear(self._motor(omega)[0], self.ratio, self.efficiency)
@@ -281,7 +290,7 @@ class TorqueSpeedTable:
     @property
     def breakdown_torque(self):
         grid = np.linspace(self.speeds[0], self.speeds[-1], 512)
-        return _gear(np.max(self._curve()(grid)), self.ratio, self.efficiency)
+        return _gear(np.max(self._curve[0](grid)), self.ratio, self.efficiency)
 
     @property
     def starting_torque(self):

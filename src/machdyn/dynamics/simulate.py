@@ -99,9 +99,13 @@ class _Model:
         m = self.m
         return m.inertia(phi), m.inertia.derivative(phi), m.position_moment(phi), m.damping(phi)
 
+    def _plus_added(self, j):
+        j = np.asarray(j)
+        return j + self.added.reshape((-1,) + (1,) * (j.ndim - 1)) if j.ndim else j + self.added
+
     def inertia(self, phi):
         j, dj, _, _ = self.curves(phi)
-        return j + self.added, dj
+        return self._plus_added(j), dj
 
     def drive_torque(self, omega):
         if self.drive is None:
