@@ -259,11 +259,15 @@ def energy_fluctuation(curve: Curve, mean=None, samples_per_piece: int = 32) -> 
     return e.max(axis=-1) - e.min(axis=-1)
 
 
-def fine_grid(curve: Curve, samples_per_piece: int = 16) -> np.ndarray:
-    """Angles [rad] over one period with ``samples_per_piece`` points inside every piece (and every node)."""
+def fine_grid(curve: Curve, samples_per_piece: int = 16, min_points: int = 8192) -> np.ndarray:
+    """Angles [rad] over one period with at least ``samples_per_piece`` points inside every piece (and every
+    node), and at least ``min_points`` over the period (long straight pieces get more), where extremes are
+    searched: the error of an extreme found on this grid falls with the square of its spacing."""
     x = np.append(curve.x, curve.x[0] + curve.period)
-    t = np.arange(samples_per_piece) / samples_per_piece
-    return (x[:-1, None] + np.diff(x)[:, None] * t[None, :]).ravel()
+    lengths = np.diff(x)
+    counts = np.maximum(samples_per_piece, np.ceil(min_points * lengths / curve.period)).astype(int)
+    parts = [x[i] + lengths[i] * np.arange(c) / c for i, c in enumerate(counts)]
+    return np.concatenate(parts)
 
 
 def indicator_crank_effort(crank_angle, pressure, piston_area: float, crank: float, rod: float) -> np.ndarray:
