@@ -16,12 +16,12 @@ variants share phi and are integrated together in one call of :func:`scipy.integ
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from ..errors import InputError, MachdynError
-from .drives import ConstantSpeed, ConstantTorque
+from .drives import ConstantSpeed, ConstantTorque, InductionMotor
 from .equivalent import EquivalentMachine
 from .tables import FourierCurve, PeriodicCurve
 
@@ -123,7 +123,7 @@ class _Model:
 
             f, df = _force_moment(law, ratio, phi, omega, self.m._speed_step)
             m, dm = m + f, dm + df
-        return j + self.added, dj, m, dm
+        return self._plus_added(j), dj, m, dm
 
     def moment(self, phi, omega):
         """Total moment (drive + loads) and its omega-derivative."""
@@ -179,6 +179,7 @@ class SteadyState:
     rms_drive_torque: np.ndarray
     residual: np.ndarray
     iterations: int
+    warnings: tuple = ()
 
     @property
     def mean_power(self) -> np.ndarray:
@@ -206,7 +207,8 @@ def balance_speed(machine: EquivalentMachine, drive, n: int, grid: np.ndarray) -
         ms = machine.speed_moment(q, w[:, None] + 0.0 * q)[0].mean(axis=1)
         return drive.torque_at(w) + base + ms
 
-    hi = np.full(n, 1.0)
+    # start above the drive's no-load speed, where its surplus must be negative for a steady state to exist
+    hi = np.broadcast_to(1.01 * np.asarray(getattr(drive, "no_load_speed", 1.0), dtype=float), (n,)).copy()
     for _ in range(80):
         bad = surplus(hi) > 0
         if not np.any(bad):
@@ -215,7 +217,7 @@ def balance_speed(machine: EquivalentMachine, drive, n: int, grid: np.ndarray) -
     else:
         raise NotSettledError("The drive's torque exceeds the load at every speed up to "
                               f"{float(np.max(hi)):.3g} rad/s: the machine would run away; there is no steady state.")
-    scan = np.linspace(0.0, 1.0, 65)[:, None] * hi[None, :]
+    scan = np.linspace(0.0, 1.0, 129)[:, None] * hi[None, :]
     values = np.array([surplus(w) for w in scan])
     lo = np.zeros(n)
     up = hi.copy()
@@ -302,12 +304,18 @@ def steady_state(
             raise InputError("The drive cannot carry the load of the machine at any speed: "
                              + _stall_message(machine, drive, n, w_bar, grid[:-1]) + ".")
         k0 = 0.5 * j0 * w_bar**2
+        # a steep drive characteristic against a light machine makes the equation stiff: an implicit method then
+        q = np.broadcast_to(grid[:-1], (n, grid.size - 1))
+        wq = w_bar[:, None] + 0.0 * q
+        jq, _, _, dm = model._all(q, wq)
+        dm = np.abs(dm)
+        method = "LSODA" if float(np.max(dm / (jq * wq))) * period > 200.0 else "DOP853"
         iterations = 0
         for step_number in range(1, max_iterations + 1):
             iterations = step_number
             y0 = np.concatenate([k0, np.zeros(n), np.ones(n)])
             sol = _solve(solve_ivp, lambda p, y: model.energy_rhs(p, y), (phi0, phi0 + period), y0, rtol,
-                         model, n, machine, drive, grid, t_eval=grid)
+                         model, n, machine, drive, grid, t_eval=grid, method=method)
             kend, send = sol.y[:n, -1], sol.y[2 * n:, -1]
             res = kend - k0
             if np.all(np.abs(res) <= tolerance * k0):
@@ -334,18 +342,36 @@ def steady_state(
     td = np.broadcast_to(model.drive_torque(omega)[0], q.shape)
     load = machine.moment_at(q, omega)
     acc = (td + load - 0.5 * dj * omega**2) / j
-    return _steady_result(machine, drive, added, phi, omega, acc, time, td, load, j, period_time, residual,
-                          iterations)
+    result = _steady_result(machine, drive, added, phi, omega, acc, time, td, load, j, period_time, residual,
+                            iterations)
+    return replace(result, warnings=_overload(drive, omega))
 
 
-def _solve(solve_ivp, rhs, span, y0, rtol, model, n, machine, drive, grid, t_eval=None):
+def _overload(drive, omega) -> tuple[str, ...]:
+    """A warning if an induction motor runs beyond its breakdown slip (on the unstable, overloaded branch)."""
+    if not isinstance(drive, InductionMotor):
+        return ()
+    breakdown_speed = np.asarray(drive.synchronous_speed * (1.0 - drive.breakdown_slip) / drive.ratio)
+    low = np.min(omega, axis=-1)
+    if np.any(low < breakdown_speed):
+        return (f"The induction motor runs beyond its breakdown slip: the crank speed falls to "
+                f"{float(np.min(low)):.4g} rad/s, below the breakdown speed {float(np.max(breakdown_speed)):.4g} rad/s; it is overloaded "
+                "and will overheat. Choose a larger motor.",)
+    return ()
+
+
+def _solve(solve_ivp, rhs, span, y0, rtol, model, n, machine, drive, grid, t_eval=None, method="DOP853"):
     def stall(p, y):
         return float(np.min(y[:n])) - 1e-12 * float(np.max(np.abs(y0[:n])))
 
     stall.terminal = True  # type: ignore[attr-defined]
     stall.direction = -1  # type: ignore[attr-defined]
-    sol = solve_ivp(rhs, span, y0, method="DOP853", rtol=rtol, atol=1e-14 * max(1.0, float(np.max(np.abs(y0)))),
-                    t_eval=t_eval, events=stall)
+    atol = 1e-14 * max(1.0, float(np.max(np.abs(y0))))
+    try:
+        sol = solve_ivp(rhs, span, y0, method=method, rtol=rtol, atol=atol, t_eval=t_eval, events=stall)
+    except ValueError:  # the event's root search fails where the speed collapses within one step
+        sol = solve_ivp(rhs, span, y0, method=method, rtol=rtol, atol=atol, t_eval=t_eval)
+        sol.status = 1 if np.any(sol.y[:n] <= 0) else sol.status
     if sol.status == 1 or not sol.success:
         where = float(sol.t[-1])
         raise InputError(
