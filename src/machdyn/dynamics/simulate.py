@@ -355,8 +355,8 @@ def _overload(drive, omega) -> tuple[str, ...]:
     low = np.min(omega, axis=-1)
     if np.any(low < breakdown_speed):
         return (f"The induction motor runs beyond its breakdown slip: the crank speed falls to "
-                f"{float(np.min(low)):.4g} rad/s, below the breakdown speed {float(np.max(breakdown_speed)):.4g} rad/s; it is overloaded "
-                "and will overheat. Choose a larger motor.",)
+                f"{float(np.min(low)):.4g} rad/s, below the breakdown speed {float(np.max(breakdown_speed)):.4g} "
+                "rad/s; it is overloaded and will overheat. Choose a larger motor.",)
     return ()
 
 
