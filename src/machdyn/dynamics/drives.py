@@ -197,19 +197,27 @@ class InductionMotor:
 
     @cached_property
     def _constants(self):
-        return (_arr(self.ratio), _arr(self.synchronous_speed), self.breakdown_ratio * self.rated_torque,
-                self.breakdown_slip, _arr(self.efficiency))
+        def num(v):
+            a = _arr(v)
+            return float(a) if a.ndim == 0 else a
+
+        i, ns, sb = num(self.ratio), num(self.synchronous_speed), num(self.breakdown_slip)
+        tb = num(self.breakdown_ratio * self.rated_torque)
+        # crank torque = a x / (x^2 + 1) with x = (1 - i omega / ns) / sb; slope = b (1 - x^2) / (x^2 + 1)^2
+        return (i / (ns * sb), 1.0 / sb, 2.0 * tb * i, -2.0 * tb * i * i / (sb * ns), _arr(self.efficiency),
+                bool(np.all(_arr(self.efficiency) == 1.0)))
 
     def torque_slope(self, omega):
         """Crank torque [N*m] and its slope [N*m*s/rad] at crank speed omega, in one call (the simulation's)."""
-        i, ns, tb, sb, eta = self._constants
-        x = (1.0 - i * omega / ns) / sb
-        d = x * x + 1.0
-        tm = 2.0 * tb * x / d
-        dm = -2.0 * tb * (1.0 - x * x) / (d * d) / (sb * ns)
-        drives = tm >= 0.0
-        g = np.where(drives, eta, 1.0 / eta)
-        return i * tm * g, i * i * dm * g
+        p, q, a, b, eta, lossless = self._constants
+        x = q - p * omega
+        x2 = x * x
+        d = 1.0 / (x2 + 1.0)
+        t, s = a * x * d, b * (1.0 - x2) * d * d
+        if lossless:
+            return t, s
+        g = np.where(t >= 0.0, eta, 1.0 / eta)
+        return t * g, s * g
 
     @property
     def inertia(self):
