@@ -23,6 +23,7 @@ KINDS: dict[str, str] = {
 #: optional table -> the :class:`~machdyn.pipeline.Capability`
 CAPABILITIES: dict[str, str] = {
     "sweep": "machdyn.pipelines.sweep:CAPABILITY",
+    "flywheel": "machdyn.dynamics.stage:CAPABILITY",
 }
 
 

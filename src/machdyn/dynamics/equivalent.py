@@ -183,8 +183,10 @@ def equivalent_machine(
     positions : number of crank positions sampled evenly over the revolution (>= 16); the curves between them
         are cubic Hermite pieces through the exact values and slopes (error O(h^4)).
     speed_loads : :class:`LinearDamper`, :class:`RotaryDamper` and :class:`SpeedForce` loads.
-    load_interpolation : "spline", "linear" or "auto" (linear if any force or torque of the mechanism acts over
-        part of the cycle only, where a spline would ring at the switching angles; spline otherwise).
+    load_interpolation : "spline", "linear" or "auto": where a force or torque of the mechanism acts over part of
+        the cycle only, cubic splines between its switching angles and straight pieces across the intervals that
+        hold them (a spline through a jump would ring); the trigonometric interpolant or a periodic spline
+        otherwise.
 
     Returns
     -------
@@ -213,12 +215,15 @@ def equivalent_machine(
     inertia = _smooth(phi, np.broadcast_to(j, shape), np.broadcast_to(dj, shape), period)
     potential = _smooth(phi, np.broadcast_to(en.potential, shape), np.broadcast_to(-en.conservative_power, shape),
                         period)
-    windowed = any(f.active is not None for f in mech.forces) or any(t.active is not None for t in mech.torques)
-    kind = load_interpolation if load_interpolation != "auto" else ("linear" if windowed else "spline")
+    windows = [f.active for f in mech.forces if f.active is not None]
+    windows += [t.active for t in mech.torques if t.active is not None]
+    kind = load_interpolation if load_interpolation != "auto" else ("jumps" if windows else "spline")
     load = np.broadcast_to(en.load_power, shape)
     moment: Curve
     if kind == "linear":
         moment = PeriodicCurve.linear(phi, load, period)
+    elif kind == "jumps":
+        moment = PeriodicCurve.smooth_with_jumps(phi, load, period, _jump_intervals(phi, windows))
     else:
         fourier = FourierCurve.from_samples(load, period)
         moment = fourier if fourier.resolved else PeriodicCurve.spline(phi, load, period)
@@ -230,6 +235,23 @@ def equivalent_machine(
     )
     return EquivalentMachine(inertia, potential, moment, damping, forces, mech, tuple(speed_loads),
                              single=mech.design_count is None)
+
+
+def _jump_intervals(phi, windows) -> np.ndarray:
+    """True for each interval between evenly spaced nodes that holds the start or end of a load window (and its
+    neighbour, where the edge falls on a node)."""
+    m = phi.size
+    h = 2.0 * np.pi / m
+    jumps = np.zeros(m, dtype=bool)
+    for window in windows:
+        if window[1] - window[0] >= 2.0 * np.pi:
+            continue
+        for edge in window:
+            pos = np.mod(edge, 2.0 * np.pi) / h
+            k = int(np.floor(pos + 1e-9)) % m
+            jumps[k] = True
+            jumps[(k - 1) % m] = True
+    return jumps
 
 
 def _smooth(phi, values, slopes, period):

@@ -57,10 +57,14 @@ class _Model:
         self.m, self.drive, self.added, self.n = machine, drive, added, n
         self.speed_dependent = not (isinstance(drive, ConstantTorque) and not machine.forces
                                     and not np.any(machine.damping.y))
-        curves = (machine.inertia, machine.potential, machine.moment, machine.damping)
-        self.fast = all(isinstance(c, FourierCurve) for c in curves) and not machine.forces
+        smooth = (machine.inertia, machine.potential, machine.damping)
+        self.fast = all(isinstance(c, FourierCurve) for c in smooth) and not machine.forces
+        # a moment that is not a Fourier series (a load switched on and off) is evaluated on its own
+        self.extra = None if isinstance(machine.moment, FourierCurve) else machine.moment
         if self.fast:
-            self._stack(*curves)
+            zero = FourierCurve.from_samples(np.zeros((1, 2)), machine.period)
+            self._stack(machine.inertia, machine.potential, machine.moment if self.extra is None else zero,
+                        machine.damping)
         self.torque_slope = getattr(drive, "torque_slope", None)
 
     def _stack(self, j, v, m, c):
@@ -95,6 +99,9 @@ class _Model:
                 arg = phi[:, None] * self.k
                 out = (self.c0 + np.einsum("rnk,nk->rn", self.ca, np.cos(arg))
                        + np.einsum("rnk,nk->rn", self.cb, np.sin(arg)))
+            if self.extra is not None:
+                shape = out[2].shape
+                return out[0], out[1], out[2] + np.broadcast_to(self.extra(phi), shape), out[3]
             return out[0], out[1], out[2], out[3]
         m = self.m
         return m.inertia(phi), m.inertia.derivative(phi), m.position_moment(phi), m.damping(phi)
@@ -134,6 +141,8 @@ class _Model:
         if self.fast:
             arg = phi * self.k
             out = self.c0 + self.ca @ np.cos(arg) + self.cb @ np.sin(arg)
+            if self.extra is not None:
+                return out[0], out[1], out[2] + self.extra(np.full(self.n, phi)), out[3]
             return out[0], out[1], out[2], out[3]
         return self.curves(np.full(self.n, phi))
 

@@ -46,6 +46,14 @@ class PeriodicCurve:
     y: np.ndarray
     slope: np.ndarray | None
     period: float
+    slope_end: np.ndarray | None = None  # slope at the right end of each piece (default: the next node's)
+
+    def _ends(self):
+        """Slopes at the left and right end of every piece, (N, M) each."""
+        s = self.slope
+        if s is None:
+            return None, None
+        return s, (np.roll(s, -1, axis=1) if self.slope_end is None else self.slope_end)
 
     # --- construction -------------------------------------------------------------------------------------
     @classmethod
@@ -73,6 +81,39 @@ class PeriodicCurve:
         """Straight pieces between the nodes (closing from the last node back to the first)."""
         x, y = _nodes(x, y, period)
         return cls(x, y, None, float(period))
+
+    @classmethod
+    def smooth_with_jumps(cls, x, y, period: float, jumps) -> PeriodicCurve:
+        """Cubic splines through the nodes between jumps; straight pieces across the intervals that hold a jump
+        (``jumps``: True for the interval from node k to k+1), e.g. a load switched on and off."""
+        from scipy.interpolate import CubicSpline
+
+        x, y = _nodes(x, y, period)
+        m = x.size
+        jumps = np.asarray(jumps, dtype=bool)
+        if not jumps.any():
+            return cls.spline(x, y, period)
+        xs = np.append(x, x[0] + period)
+        h = np.diff(xs)
+        secant = (np.roll(y, -1, axis=1) - y) / h
+        d0, d1 = secant.copy(), secant.copy()
+        first = int(np.flatnonzero(jumps)[0]) + 1  # a node just after a jump starts a smooth run
+        order = (np.arange(m) + first) % m
+        run: list[int] = []
+        for step, k in enumerate(order):
+            run.append(int(k))
+            ends_run = jumps[k] or step == m - 1
+            if not ends_run:
+                continue
+            nodes = np.array(run)  # nodes of a smooth run; intervals between consecutive ones are smooth
+            if nodes.size >= 3:
+                xr = x[nodes] + period * np.cumsum(np.r_[0, np.diff(x[nodes]) < 0])  # unwrapped through 2 pi
+                spl = CubicSpline(xr, y[:, nodes], axis=1, bc_type="not-a-knot")
+                slopes = spl(xr, 1)
+                d0[:, nodes[:-1]] = slopes[:, :-1]
+                d1[:, nodes[:-1]] = slopes[:, 1:]
+            run = []
+        return cls(x, y, d0, float(period), d1)
 
     @classmethod
     def constant(cls, value, period: float = 2.0 * np.pi) -> PeriodicCurve:
@@ -105,10 +146,11 @@ class PeriodicCurve:
     def _pieces(self, phi):
         k, nxt, h, t, rows, phi = self._locate(phi)
         y0, y1 = self.y[rows, k], self.y[rows, nxt]
-        if self.slope is None:
+        left, right = self._ends()
+        if left is None:
             d0 = d1 = None
         else:
-            d0, d1 = self.slope[rows, k], self.slope[rows, nxt]
+            d0, d1 = left[rows, k], right[rows, k]
         return y0, y1, d0, d1, h, t, phi
 
     def __call__(self, phi) -> np.ndarray:
@@ -128,12 +170,13 @@ class PeriodicCurve:
         return (6 * t2 - 6 * t) * (y0 - y1) / h + (3 * t2 - 4 * t + 1) * d0 + (3 * t2 - 2 * t) * d1
 
     def _piece_integrals(self) -> np.ndarray:
-        x, y, s = self.x, self.y, self.slope
+        x, y = self.x, self.y
         h = np.diff(np.append(x, x[0] + self.period))
         y1 = np.roll(y, -1, axis=1)
         out = h * (y + y1) / 2.0
-        if s is not None:
-            out = out + h * h * (s - np.roll(s, -1, axis=1)) / 12.0
+        left, right = self._ends()
+        if left is not None:
+            out = out + h * h * (left - right) / 12.0
         return out
 
     def cycle_integral(self) -> np.ndarray:
@@ -165,9 +208,9 @@ class PeriodicCurve:
 
     def take(self, index) -> PeriodicCurve:
         """The curve of the designs ``index``."""
-        s = None if self.slope is None else self.slope[index]
-        return PeriodicCurve(self.x, np.atleast_2d(self.y[index]), None if s is None else np.atleast_2d(s),
-                             self.period)
+        s = None if self.slope is None else np.atleast_2d(self.slope[index])
+        e = None if self.slope_end is None else np.atleast_2d(self.slope_end[index])
+        return PeriodicCurve(self.x, np.atleast_2d(self.y[index]), s, self.period, e)
 
 
 def _nodes(x, y, period):
