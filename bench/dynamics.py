@@ -198,7 +198,8 @@ def main() -> None:
     batch = machdyn_batch(args.designs)
     t_batch = timed(lambda: machdyn_batch(args.designs), max(1, repeats // 2))
     single = machdyn_batch(1)
-    batch_check = float(np.max(np.abs(batch.omega[0] - np.atleast_2d(single.omega)[0]) / float(np.ravel(single.mean_speed)[0])))
+    reference = np.atleast_2d(single.omega)[0]
+    batch_check = float(np.max(np.abs(batch.omega[0] - reference)) / float(np.ravel(single.mean_speed)[0]))
     per_design = [t / args.designs for t in t_batch]
     result: dict[str, Any] = {
         "case": "four-bar 40/120/80/100 mm, flywheel 0.04 kg*m^2, rocker damper 0.01 N*m*s/rad, 10 W 4-pole "

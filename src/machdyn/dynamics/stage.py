@@ -14,19 +14,20 @@ import numpy as np
 from pydantic import Field, model_validator
 
 from ..pipeline import Capability, Outcome, StageContext
-from ..problem.fields import AngularVelocity, Inertia, Torque, quantity
+from ..problem.fields import AngularVelocity, Inertia
 from ..problem.schema import Spec
 from ..results.labels import Label
-
-Power = quantity("W", "power", ">0")
-Speed = quantity("m/s", "speed", ">0")
-Density = quantity("kg/m^3", "density", ">0")
-Stress = quantity("Pa", "stress", ">0")
-Displacement = quantity("m^3", "volume", ">0")
-Flow = quantity("m^3/s", "flow", ">0")
-Pressure = quantity("Pa", "pressure", ">0")
-RotaryDamping = quantity("N*m*s/rad", "rotary_damping", ">=0")
-LinearDamping = quantity("N*s/m", "linear_damping", ">=0")
+from .quantities import (
+    Density,
+    Displacement,
+    Flow,
+    LinearDamping,
+    Power,
+    Pressure,
+    RotaryDamping,
+    Speed,
+    Stress,
+)
 
 
 class MotorTable(Spec):
@@ -86,6 +87,7 @@ class FlywheelTable(Spec):
     delta: float | None = Field(None, gt=0.0, lt=1.0)
     inertia: Inertia | None = None
     method: Literal["exact", "classic"] = "exact"
+    speed_ratio: float = Field(1.0, gt=0.0)  # flywheel shaft speed / crank speed (a flywheel on a faster shaft)
     positions: int = Field(720, ge=16, le=100_000, strict=True)
     shape: Literal["disc", "rim"] = "disc"
     width_ratio: float = Field(0.2, gt=0.0)
@@ -93,8 +95,9 @@ class FlywheelTable(Spec):
     density: Density = 7850.0
     allowable_stress: Stress = 100e6
     rim_speed_limit: Speed | None = None
+    rim_speed: Speed | None = None  # mean rim speed of a rim design (default 0.8 x the limit)
     start_up: bool = Field(True, strict=True)
-    motor: MotorTable = MotorTable()
+    motor: MotorTable = MotorTable.model_validate({})
     dampers: list[DamperTable] = []
 
     @model_validator(mode="after")
@@ -105,7 +108,7 @@ class FlywheelTable(Spec):
 
 
 LABELS = {
-    "flywheel.inertia": Label("Flywheel: moment of inertia", "kg*m^2"),
+    "flywheel.inertia": Label("Flywheel: moment of inertia, reduced to the crank", "kg*m^2"),
     "flywheel.inertia_exact": Label("Flywheel sized by the energy-mass (Wittenbauer) method", "kg*m^2"),
     "flywheel.inertia_classic": Label("Flywheel sized by ΔE/(ω²δ) less the mean reduced inertia", "kg*m^2"),
     "flywheel.method_difference": Label("Flywheel: classic / exact − 1", ""),
@@ -123,7 +126,7 @@ LABELS = {
     "flywheel.diameter": Label("Flywheel: outer diameter", "m", "mm"),
     "flywheel.width": Label("Flywheel: width", "m", "mm"),
     "flywheel.mass": Label("Flywheel: mass", "kg"),
-    "flywheel.rim_speed": Label("Flywheel: rim speed at the highest crank speed", "m/s"),
+    "flywheel.rim_speed": Label("Flywheel: rim speed at the highest speed", "m/s"),
     "flywheel.rim_speed_limit": Label("Flywheel: rim speed limit", "m/s"),
     "flywheel.motor_rated_power": Label("Motor: rated power", "W", "kW"),
     "flywheel.motor_breakdown_torque": Label("Motor: breakdown torque at the crank", "N*m"),
@@ -215,8 +218,8 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         flywheel = float(sizing.exact[0] if table.method == "exact" else sizing.classic[0])
     mean_torque = float(sizing.drive_torque[0])
     drive = _drive(table.motor, machine, flywheel, speed, mean_torque)
-    kw = {"mean_speed": speed} if table.motor.kind == "constant_torque" else {}
-    steady = steady_state(machine, drive, flywheel, **kw)
+    steady = steady_state(machine, drive, flywheel,
+                          mean_speed=speed if table.motor.kind == "constant_torque" else None)
     warnings = list(steady.warnings)
     failed: list[str] = [*steady.warnings]
     run = None
@@ -259,12 +262,15 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     part = None
     if flywheel > 0:
         limit = table.rim_speed_limit or rim_speed_limit(table.allowable_stress, table.density, table.shape)
-        wmax = float(np.max(steady.omega))
+        # on a shaft turning i times the crank, the part carries J / i^2 at i times the speed
+        i = table.speed_ratio
+        wmax = float(np.max(steady.omega)) * i
+        own = flywheel / i**2
         if table.shape == "disc":
-            part = disc_flywheel(flywheel, wmax, width_ratio=table.width_ratio, density=table.density,
+            part = disc_flywheel(own, wmax, width_ratio=table.width_ratio, density=table.density,
                                  rim_speed_limit=limit)
         else:
-            part = rim_flywheel(flywheel, float(steady.mean_speed), wmax, rim_speed=0.8 * limit,
+            part = rim_flywheel(own, float(steady.mean_speed) * i, wmax, rim_speed=table.rim_speed or 0.8 * limit,
                                 width_to_thickness=table.width_to_thickness, density=table.density,
                                 rim_speed_limit=limit)
         values |= {"flywheel.diameter": part.diameter, "flywheel.width": part.width, "flywheel.mass": part.mass,

@@ -114,7 +114,9 @@ def flywheel_rows(run: Any) -> list[list[str]]:
              ["simulated δ", format_value(float(np.ravel(run.steady.delta)[0]))]]
     if part is not None:
         rows += [
-            ["shape", "steel disc" if part.shape == "disc" else "rim"],
+            ["flywheel shaft speed / crank speed", format_value(run.table.speed_ratio)],
+            ["inertia of the part on its shaft", f"{format_value(part.inertia)} kg·m²"],
+            ["shape", "solid disc" if part.shape == "disc" else "rim"],
             ["outer diameter", f"{format_value(part.diameter * 1000)} mm"],
             ["width", f"{format_value(part.width * 1000)} mm"],
             ["mass", f"{format_value(part.mass)} kg"],
