@@ -329,12 +329,9 @@ def steady_state(
             raise InputError("The drive cannot carry the load of the machine at any speed: "
                              + _stall_message(machine, drive, n, w_bar, grid[:-1]) + ".")
         k0 = 0.5 * j0 * w_bar**2
-        # a steep drive characteristic against a light machine makes the equation stiff: an implicit method then
-        q = np.broadcast_to(grid[:-1], (n, grid.size - 1))
-        wq = w_bar[:, None] + 0.0 * q
-        jq, _, _, dm = model._all(q, wq)
-        dm = np.abs(dm)
-        method = "LSODA" if float(np.max(dm / (jq * wq))) * period > 200.0 else "DOP853"
+        # LSODA: Adams steps (about half the evaluations of DOP853 at these tolerances on this smooth equation),
+        # switching to BDF by itself where a steep drive characteristic makes the equation stiff
+        method = "LSODA"
         iterations = 0
         # Newton's steps far from the solution need no more accuracy than they deliver: the integration tolerance
         # tightens with the residual, and the cycle is sampled once the next step will be the last
@@ -351,7 +348,7 @@ def steady_state(
                 break
             r = float(np.max(np.abs(res) / k0))
             near = near or r <= 1e-5
-            loose = max(rtol, min(loose, 0.01 * r * r))
+            loose = max(rtol, min(loose, 1e-4 * r * r))
             k0 = np.maximum(k0 - res / (send - 1.0), 0.05 * k0)
         else:
             raise NotSettledError(
@@ -392,19 +389,18 @@ def _overload(drive, omega) -> tuple[str, ...]:
 
 
 def _solve(solve_ivp, rhs, span, y0, rtol, model, n, machine, drive, grid, t_eval=None, method="DOP853"):
-    def stall(p, y):
-        return float(np.min(y[:n])) - 1e-12 * float(np.max(np.abs(y0[:n])))
+    """One cycle of the energy equation; a speed that reaches zero (K <= 0 at a step) is a stall."""
+    import warnings
 
-    stall.terminal = True  # type: ignore[attr-defined]
-    stall.direction = -1  # type: ignore[attr-defined]
     atol = 1e-14 * max(1.0, float(np.max(np.abs(y0))))
-    try:
-        sol = solve_ivp(rhs, span, y0, method=method, rtol=rtol, atol=atol, t_eval=t_eval, events=stall)
-    except ValueError:  # the event's root search fails where the speed collapses within one step
+    with np.errstate(over="ignore"), warnings.catch_warnings():
+        # LSODA warns where it cannot continue past a stall; the stall is reported below
+        warnings.simplefilter("ignore", UserWarning)
         sol = solve_ivp(rhs, span, y0, method=method, rtol=rtol, atol=atol, t_eval=t_eval)
-        sol.status = 1 if np.any(sol.y[:n] <= 0) else sol.status
-    if sol.status == 1 or not sol.success:
-        where = float(sol.t[-1])
+    low = sol.y[:n] <= 1e-12 * np.max(np.abs(y0[:n]))
+    if np.any(low) or not sol.success or not np.all(np.isfinite(sol.y)):
+        cols = np.flatnonzero(low.any(axis=0))
+        where = float(sol.t[cols[0]]) if cols.size else float(sol.t[-1])
         raise InputError(
             f"The machine stalls: its speed falls to zero at crank angle {np.degrees(where):.1f}° in the cycle; "
             + _stall_message(machine, drive, n, np.nan, grid[:-1])
