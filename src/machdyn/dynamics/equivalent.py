@@ -11,7 +11,7 @@ returns at unit crank speed and zero crank acceleration. Hence, with no finite d
 * M(phi) = sum(F_j . u_j + T_j w_j) - dV/dphi         (seed 003 eq 19, each force at its own point)
 
 and the motion obeys J phi'' + J'/2 phi'^2 = M_drive(phi') + M(phi, phi') (Lagrange's equation of the
-one-degree-of-freedom machine; Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th ed., ch. 16;
+one-degree-of-freedom machine; Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, the chapter on flywheels;
 Artobolevsky, *Theory of Mechanisms and Machines*, the dynamic model with reduced quantities).
 
 Loads that depend on speed live here, not in the engine: a linear damper between two points, a rotary damper on

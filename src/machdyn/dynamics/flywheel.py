@@ -1,12 +1,12 @@
 """Flywheel sizing for a coefficient of speed fluctuation, and the flywheel as a steel disc or rim.
 
 delta = (omega_max - omega_min) / omega_mean with omega_mean = (omega_max + omega_min) / 2 (Khurmi & Gupta,
-*Theory of Machines*, ch. 16 §16.7, the coefficient of fluctuation of speed C_s).
+*Theory of Machines*, ch. 16 (Turning Moment Diagrams and Flywheel), the coefficient of fluctuation of speed C_s).
 
 Two sizing methods:
 
 * **classic**: J = ΔE / (omega_mean^2 delta), ΔE the maximum fluctuation of energy of the turning-moment diagram
-  about the mean torque (Khurmi & Gupta §16.8). It treats the whole machine as one constant inertia: the flywheel
+  about the mean torque (Khurmi & Gupta, ch. 16). It treats the whole machine as one constant inertia: the flywheel
   is J less the mean reduced inertia of the linkage.
 * **exact (energy-mass, Wittenbauer)**: with the work excess W(phi) = integral of the total reduced moment and
   the kinetic energy T = T0 + W(phi) = (J_f + J(phi)) omega^2 / 2, the speed stays within omega_min..omega_max
@@ -49,7 +49,7 @@ def check_delta(delta) -> None:
 
 
 def speed_limits(mean_speed, delta):
-    """omega_max, omega_min [rad/s] = omega_mean (1 ± delta/2) (Khurmi & Gupta §16.7).
+    """omega_max, omega_min [rad/s] = omega_mean (1 ± delta/2) (Khurmi & Gupta, ch. 16).
 
     Parameters
     ----------
@@ -75,7 +75,7 @@ def flywheel_inertia_classic(energy_fluctuation, mean_speed, delta):
     mean_speed : mean speed omega [rad/s] > 0.
     delta : coefficient of speed fluctuation C_s, 0 < delta < 1.
 
-    Source: Khurmi & Gupta, *Theory of Machines*, ch. 16 §16.8, ΔE = I omega^2 C_s. Valid for small delta
+    Source: Khurmi & Gupta, *Theory of Machines*, ch. 16, ΔE = I omega^2 C_s (used in its examples 16.3-16.15). Valid for small delta
     (first order in delta; see :func:`size_flywheel` for the exact energy-mass method).
 
     Examples
@@ -188,7 +188,7 @@ def rim_speed_limit(allowable_stress, density=STEEL_DENSITY, shape: str = "rim",
     """Largest rim speed [m/s] for an allowable stress [Pa].
 
     Thin rim (hoop stress of a rotating ring): sigma = rho v^2, v = sqrt(sigma/rho) (Khurmi & Gupta, *Theory of
-    Machines*, ch. 16 §16.11). Solid disc of uniform thickness: the largest stress, at the centre, is
+    Machines*, ch. 16, ex. 16.14). Solid disc of uniform thickness: the largest stress, at the centre, is
     sigma = (3 + nu)/8 rho v^2 (S. Timoshenko, *Strength of Materials*, Part II, rotating discs), so
     v = sqrt(8 sigma / ((3 + nu) rho)).
 
@@ -273,7 +273,7 @@ def rim_flywheel(inertia, mean_speed, max_speed, *, rim_speed: float, width_to_t
     inertia : J [kg*m^2] > 0. mean_speed, max_speed : [rad/s]. rim_speed : mean rim speed v [m/s] chosen for the
     design. width_to_thickness : b/t. density [kg/m^3]. rim_speed_limit [m/s] (default v). rim_share : (0, 1].
 
-    Source: Khurmi & Gupta, *Theory of Machines*, ch. 16 §16.11-16.12 (ex. 16.14: D from the rim speed limit,
+    Source: Khurmi & Gupta, *Theory of Machines*, ch. 16 (ex. 16.14: D from the rim speed limit,
     m = ΔE/(v^2 C_s), t = sqrt(m / (pi D b/t rho))).
 
     Examples

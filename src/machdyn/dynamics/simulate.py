@@ -1,7 +1,7 @@
 """Forward dynamics of the equivalent machine under a real drive: periodic steady state, start-up, free motion.
 
 Equation of motion (Lagrange, one degree of freedom; Uicker, Pennock & Shigley, *Theory of Machines and
-Mechanisms*, 5th ed., ch. 16): J(phi) phi'' + J'(phi)/2 phi'^2 = M_drive(phi') + M(phi, phi'), where J includes
+Mechanisms*, the chapter on flywheels): J(phi) phi'' + J'(phi)/2 phi'^2 = M_drive(phi') + M(phi, phi'), where J includes
 the flywheel and the drive's rotor reduced to the crank.
 
 **Steady state, directly.** With the kinetic energy K = J omega^2 / 2 and phi as the independent variable the

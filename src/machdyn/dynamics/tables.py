@@ -19,7 +19,7 @@ segments. A plain average of the samples of a closed table that repeats its firs
 and dropped. The extremes of the energy excess, which lie between samples where the torque crosses its mean, are
 located on the interpolant, not at the samples (Simpson's rule gives the work only at every second node).
 
-Source of the energy-excess construction: Khurmi & Gupta, *Theory of Machines*, S. Chand, ch. 16 §16.4-16.6
+Source of the energy-excess construction: Khurmi & Gupta, *Theory of Machines*, S. Chand, ch. 16
 (turning-moment diagram, maximum fluctuation of energy).
 """
 
@@ -286,7 +286,7 @@ def energy_fluctuation(curve: Curve, mean=None, samples_per_piece: int = 32) -> 
     """Maximum fluctuation of energy ΔE [J] of a turning-moment diagram about its mean (or ``mean`` [N*m]).
 
     ΔE = max(E) - min(E) with E(phi) = integral of (T - T_mean) dphi over the cycle (Khurmi & Gupta, *Theory of
-    Machines*, ch. 16 §16.5). The extremes are found on the interpolant between the nodes.
+    Machines*, ch. 16). The extremes are found on the interpolant between the nodes.
 
     Examples
     --------
@@ -318,7 +318,7 @@ def indicator_crank_effort(crank_angle, pressure, piston_area: float, crank: flo
 
     T = p A dx/dphi with x the piston's travel from inner dead centre and the exact velocity ratio of a centred
     slider-crank, dx/dphi = r sin(phi) (1 + r cos(phi) / sqrt(l^2 - r^2 sin^2(phi))) (Khurmi &
-    Gupta, *Theory of Machines*, ch. 15 §15.8: crank effort from the piston effort).
+    Gupta, *Theory of Machines*, ch. 15, crank effort from the piston effort).
 
     Parameters
     ----------
