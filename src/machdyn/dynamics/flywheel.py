@@ -75,8 +75,9 @@ def flywheel_inertia_classic(energy_fluctuation, mean_speed, delta):
     mean_speed : mean speed omega [rad/s] > 0.
     delta : coefficient of speed fluctuation C_s, 0 < delta < 1.
 
-    Source: Khurmi & Gupta, *Theory of Machines*, ch. 16, ΔE = I omega^2 C_s (used in its examples 16.3-16.15). Valid for small delta
-    (first order in delta; see :func:`size_flywheel` for the exact energy-mass method).
+    Source: Khurmi & Gupta, *Theory of Machines*, ch. 16, ΔE = I omega^2 C_s (used in its examples 16.3-16.15).
+    Exact for a constant inertia with omega_mean = (omega_max + omega_min)/2; for a linkage whose reduced inertia
+    varies see :func:`size_flywheel` (the energy-mass method).
 
     Examples
     --------

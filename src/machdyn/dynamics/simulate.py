@@ -24,7 +24,7 @@ import numpy as np
 from ..errors import InputError, MachdynError
 from .drives import ConstantSpeed, ConstantTorque, InductionMotor
 from .equivalent import EquivalentMachine
-from .tables import FourierCurve, PeriodicCurve
+from .tables import FourierCurve, PeriodicCurve, fine_grid
 
 RTOL = 1e-11  # the integrator's relative tolerance: periodicity and energy are checked to 1e-9
 
@@ -489,7 +489,15 @@ def _constant_speed(machine, drive, added, n, grid):
 def _steady_result(machine, drive, added, phi, omega, acc, time, td, load, j, period_time, residual, iterations):
     period = machine.period
     h = np.diff(np.append(phi, phi[0] + period))
-    wmax, wmin = omega.max(axis=1), omega.min(axis=1)
+    # the extremes of the speed lie between the nodes: search them on the Hermite curve through omega and its
+    # slope epsilon/omega (error O(h^4))
+    curve = PeriodicCurve.hermite(phi, omega, acc / omega, period)
+    fine = fine_grid(curve, 16, 0)
+    w_fine = curve(np.broadcast_to(fine, (omega.shape[0], fine.size)) if omega.shape[0] > 1 else fine)
+    w_fine = np.atleast_2d(w_fine)
+    wmax, wmin = np.maximum(w_fine.max(axis=1), omega.max(axis=1)), np.minimum(w_fine.min(axis=1), omega.min(axis=1))
+    steady = np.ptp(omega, axis=1) == 0  # an imposed constant speed: no fluctuation at all
+    wmax, wmin = np.where(steady, omega[:, 0], wmax), np.where(steady, omega[:, 0], wmin)
     mid = 0.5 * (wmax + wmin)
     energy = (td * h).sum(axis=1)
     rms = np.sqrt((td * td / omega * h).sum(axis=1) / period_time)
