@@ -24,7 +24,8 @@ from .flywheel import (
     size_flywheel,
     speed_limits,
 )
-from .simulate import NotSettledError, StartUp, SteadyState, Trajectory, simulate, start_up, steady_state
+from .motion import StartUp, Trajectory, simulate, start_up
+from .simulate import NotSettledError, SteadyState, steady_state
 from .tables import PeriodicCurve, energy_fluctuation, indicator_crank_effort, torque_table
 
 __all__ = [

@@ -157,8 +157,9 @@ def _drive(motor: MotorTable, machine, flywheel: float, speed: float, mean_torqu
     """The drive of the table; for "select", the smallest standard motor whose breakdown torque carries the
     steady state's peak torque with a margin of 1.3."""
     from .drives import ConstantTorque, HydraulicMotor, InductionMotor
+    from .motion import start_up
     from .motors import select_motor, standard_ratings
-    from .simulate import NotSettledError, start_up, steady_state
+    from .simulate import NotSettledError, steady_state
 
     if motor.kind == "constant_torque":
         return ConstantTorque(mean_torque)
@@ -200,8 +201,9 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     from ..errors import ProblemFileError
     from .equivalent import equivalent_machine
     from .flywheel import disc_flywheel, rim_flywheel, rim_speed_limit, size_flywheel
+    from .motion import start_up
     from .realspeed import forces_at_speed
-    from .simulate import NotSettledError, start_up, steady_state
+    from .simulate import NotSettledError, steady_state
 
     table: FlywheelTable = ctx.table
     mech = ctx.mechanism
