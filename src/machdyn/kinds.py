@@ -26,6 +26,7 @@ CAPABILITIES: dict[str, str] = {
     "balance": "machdyn.balancing.stage:CAPABILITY",
     "frame": "machdyn.vibration.stage:FRAME",
     "signals": "machdyn.vibration.stage:SIGNALS",
+    "flywheel": "machdyn.dynamics.stage:CAPABILITY",
 }
 
 

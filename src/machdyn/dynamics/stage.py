@@ -1,0 +1,333 @@
+"""The ``[flywheel]`` capability: a flywheel (given, or sized for a coefficient of speed fluctuation), the drive
+(``[flywheel.motor]``), the periodic steady state at the real speed, the start-up and the forces at the real speed.
+
+The crank's nominal speed is the problem's ``[drive] speed`` (the table that also sets the crank positions of the
+constant-speed analysis); ``[flywheel]`` adds the machine's dynamics under a real drive.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Literal
+
+import numpy as np
+from pydantic import Field, model_validator
+
+from ..pipeline import Capability, Outcome, StageContext
+from ..problem.fields import AngularVelocity, Inertia
+from ..problem.schema import Spec
+from ..results.labels import Label
+from .quantities import (
+    Density,
+    Displacement,
+    Flow,
+    LinearDamping,
+    Power,
+    Pressure,
+    RotaryDamping,
+    Speed,
+    Stress,
+)
+
+
+class MotorTable(Spec):
+    """``[flywheel.motor]``: the drive. ``kind`` = "select" picks an induction motor from the IEC 60072-1
+    ratings; "induction" takes its rated data; "constant_torque" balances the mean load at the nominal speed;
+    "hydraulic" a hydraulic motor fed with a constant flow."""
+
+    kind: Literal["select", "induction", "constant_torque", "hydraulic"] = "select"
+    rated_power: Power | None = None
+    rated_speed: AngularVelocity | None = None
+    synchronous_speed: AngularVelocity = 50.0 * np.pi  # 1500 rpm
+    breakdown_ratio: float = Field(2.5, gt=1.0)
+    rated_slip: float = Field(0.04, gt=0.0, lt=1.0)
+    ratio: float | None = Field(None, gt=0.0)
+    efficiency: float = Field(1.0, gt=0.0, le=1.0)
+    rotor_inertia: Inertia = 0.0
+    displacement: Displacement | None = None
+    flow: Flow | None = None
+    pressure_limit: Pressure | None = None
+    volumetric_efficiency: float = Field(0.95, gt=0.0, lt=1.0)
+    mechanical_efficiency: float = Field(0.9, gt=0.0, le=1.0)
+
+    @model_validator(mode="after")
+    def _complete(self):
+        if self.kind == "induction" and (self.rated_power is None or self.rated_speed is None):
+            raise ValueError("an induction motor needs rated_power and rated_speed")
+        if self.kind == "hydraulic" and None in (self.displacement, self.flow, self.pressure_limit):
+            raise ValueError("a hydraulic motor needs displacement, flow and pressure_limit")
+        return self
+
+
+class DamperTable(Spec):
+    """``[[flywheel.dampers]]``: a viscous load. Rotary on ``body`` (coefficient in N*m*s/rad), or linear between
+    ``point_1`` and ``point_2`` (``linear_coefficient`` in N*s/m)."""
+
+    name: str
+    body: str | None = None
+    relative_to: str = "ground"
+    coefficient: RotaryDamping | None = None
+    point_1: str | None = None
+    point_2: str | None = None
+    linear_coefficient: LinearDamping | None = None
+
+    @model_validator(mode="after")
+    def _one_kind(self):
+        rotary = self.body is not None and self.coefficient is not None
+        linear = None not in (self.point_1, self.point_2, self.linear_coefficient)
+        if rotary == linear:
+            raise ValueError("give either body and coefficient (rotary) or point_1, point_2 and linear_coefficient "
+                             "(linear)")
+        return self
+
+
+class FlywheelTable(Spec):
+    """``[flywheel]``: either ``delta`` (the coefficient of speed fluctuation to size for) or ``inertia``."""
+
+    delta: float | None = Field(None, gt=0.0, lt=1.0)
+    inertia: Inertia | None = None
+    method: Literal["exact", "classic"] = "exact"
+    speed_ratio: float = Field(1.0, gt=0.0)  # flywheel shaft speed / crank speed (a flywheel on a faster shaft)
+    positions: int = Field(720, ge=16, le=100_000, strict=True)
+    shape: Literal["disc", "rim"] = "disc"
+    width_ratio: float = Field(0.2, gt=0.0)
+    width_to_thickness: float = Field(2.0, gt=0.0)
+    density: Density = 7850.0
+    allowable_stress: Stress = 100e6
+    rim_speed_limit: Speed | None = None
+    rim_speed: Speed | None = None  # mean rim speed of a rim design (default 0.8 x the limit)
+    start_up: bool = Field(True, strict=True)
+    motor: MotorTable = MotorTable.model_validate({})
+    dampers: list[DamperTable] = []
+
+    @model_validator(mode="after")
+    def _one_of(self):
+        if (self.delta is None) == (self.inertia is None):
+            raise ValueError("give exactly one of delta (to size the flywheel) and inertia")
+        return self
+
+
+LABELS = {
+    "flywheel.inertia": Label("Flywheel: moment of inertia, reduced to the crank", "kg*m^2"),
+    "flywheel.inertia_exact": Label("Flywheel sized by the energy-mass (Wittenbauer) method", "kg*m^2"),
+    "flywheel.inertia_classic": Label("Flywheel sized by ΔE/(ω²δ) less the mean reduced inertia", "kg*m^2"),
+    "flywheel.method_difference": Label("Flywheel: classic / exact − 1", ""),
+    "flywheel.energy_fluctuation": Label("Maximum fluctuation of energy ΔE", "J"),
+    "flywheel.target_delta": Label("Coefficient of speed fluctuation: target", ""),
+    "flywheel.delta": Label("Coefficient of speed fluctuation: simulated", ""),
+    "flywheel.mean_speed": Label("Crank speed: (max + min)/2, steady state", "rad/s", "rpm"),
+    "flywheel.min_speed": Label("Crank speed: minimum, steady state", "rad/s", "rpm"),
+    "flywheel.max_speed": Label("Crank speed: maximum, steady state", "rad/s", "rpm"),
+    "flywheel.peak_drive_torque": Label("Drive torque at the crank: peak", "N*m"),
+    "flywheel.rms_drive_torque": Label("Drive torque at the crank: RMS over time", "N*m"),
+    "flywheel.energy_per_cycle": Label("Drive: energy per cycle", "J"),
+    "flywheel.mean_power": Label("Drive: mean power", "W"),
+    "flywheel.time_to_steady": Label("Start-up: time to steady running (within 1 % of the speed)", "s"),
+    "flywheel.diameter": Label("Flywheel: outer diameter", "m", "mm"),
+    "flywheel.width": Label("Flywheel: width", "m", "mm"),
+    "flywheel.mass": Label("Flywheel: mass", "kg"),
+    "flywheel.rim_speed": Label("Flywheel: rim speed at the highest speed", "m/s"),
+    "flywheel.rim_speed_limit": Label("Flywheel: rim speed limit", "m/s"),
+    "flywheel.motor_rated_power": Label("Motor: rated power", "W", "kW"),
+    "flywheel.motor_breakdown_torque": Label("Motor: breakdown torque at the crank", "N*m"),
+    "flywheel.gear_ratio": Label("Motor: gear ratio (motor / crank speed)", ""),
+    "flywheel.torque_peak_constant_speed": Label("Driving torque into the linkage: peak at constant speed", "N*m"),
+    "flywheel.torque_peak_real_speed": Label("Driving torque into the linkage: peak at the real speed", "N*m"),
+    "flywheel.joint_force_change": Label("Largest change of a joint's peak force at the real speed", ""),
+}
+
+SUMMARY = ("flywheel.inertia", "flywheel.target_delta", "flywheel.delta", "flywheel.method_difference",
+           "flywheel.mean_speed", "flywheel.peak_drive_torque", "flywheel.mean_power", "flywheel.motor_rated_power",
+           "flywheel.time_to_steady", "flywheel.diameter", "flywheel.mass", "flywheel.rim_speed")
+
+
+def speed_loads(table: FlywheelTable) -> tuple:
+    from .equivalent import LinearDamper, RotaryDamper
+
+    out: list[Any] = []
+    for d in table.dampers:
+        if d.body is not None:
+            out.append(RotaryDamper(d.name, d.body, float(d.coefficient or 0.0), d.relative_to))
+        else:
+            out.append(LinearDamper(d.name, str(d.point_1), str(d.point_2), float(d.linear_coefficient or 0.0)))
+    return tuple(out)
+
+
+def _drive(motor: MotorTable, machine, flywheel: float, speed: float, mean_torque: float):
+    """The drive of the table; for "select", the smallest standard motor whose breakdown torque carries the
+    steady state's peak torque with a margin of 1.3."""
+    from .drives import ConstantTorque, HydraulicMotor, InductionMotor
+    from .motion import start_up
+    from .motors import select_motor, standard_ratings
+    from .simulate import NotSettledError, steady_state
+
+    if motor.kind == "constant_torque":
+        return ConstantTorque(mean_torque)
+    if motor.kind == "hydraulic":
+        return HydraulicMotor(float(motor.displacement or 0), float(motor.flow or 0), float(motor.pressure_limit or 0),
+                              motor.volumetric_efficiency, motor.mechanical_efficiency, motor.ratio or 1.0,
+                              motor.rotor_inertia)
+    if motor.kind == "induction":
+        rated = float(motor.rated_speed or 0.0)
+        ratio = motor.ratio or rated / speed
+        return InductionMotor(float(motor.rated_power or 0.0), rated, motor.synchronous_speed, motor.breakdown_ratio,
+                              ratio, motor.efficiency, motor.rotor_inertia)
+    power = max(mean_torque * speed, standard_ratings()[0])
+    choice = select_motor(power, 0.0, speed, synchronous_speed=motor.synchronous_speed,
+                          rated_slip=motor.rated_slip, breakdown_ratio=motor.breakdown_ratio,
+                          gear_efficiency=motor.efficiency, rotor_inertia=motor.rotor_inertia)
+    ratings = [r for r in standard_ratings() if r >= choice.motor.rated_power]
+    for rating in ratings:
+        candidate = InductionMotor(rating, choice.motor.rated_speed, choice.motor.synchronous_speed,
+                                   motor.breakdown_ratio, choice.motor.ratio, motor.efficiency, motor.rotor_inertia)
+        try:
+            ss = steady_state(machine, candidate, flywheel)
+        except ValueError:
+            continue
+        if float(np.max(ss.drive_torque)) * 1.3 <= float(candidate.breakdown_torque) and not ss.warnings:
+            try:
+                start_up(machine, candidate, flywheel, steady=ss)
+            except ValueError:
+                continue  # cannot start the machine from rest
+            except NotSettledError:
+                pass
+            return candidate
+    return InductionMotor(ratings[-1], choice.motor.rated_speed, choice.motor.synchronous_speed,
+                          motor.breakdown_ratio, choice.motor.ratio, motor.efficiency, motor.rotor_inertia)
+
+
+def run_flywheel(ctx: StageContext) -> Outcome:
+    """The stage: size or take the flywheel, choose or take the drive, steady state, start-up, real-speed forces."""
+    from ..errors import ProblemFileError
+    from .equivalent import equivalent_machine
+    from .flywheel import disc_flywheel, rim_flywheel, rim_speed_limit, size_flywheel
+    from .motion import start_up
+    from .realspeed import forces_at_speed
+    from .simulate import NotSettledError, steady_state
+
+    table: FlywheelTable = ctx.table
+    mech = ctx.mechanism
+    speed = float(ctx.problem.drive.speed)
+    if not speed > 0:
+        raise ProblemFileError([("drive.speed", f"must be > 0 for [flywheel] (the crank turns counter-clockwise); "
+                                                f"got {speed:g} rad/s")])
+    machine = equivalent_machine(mech, table.positions, speed_loads=speed_loads(table))
+    target = table.delta if table.delta is not None else 0.02
+    sizing = size_flywheel(machine, speed, target)
+    if table.inertia is not None:
+        flywheel = float(table.inertia)
+    else:
+        flywheel = float(sizing.exact[0] if table.method == "exact" else sizing.classic[0])
+    mean_torque = float(sizing.drive_torque[0])
+    drive = _drive(table.motor, machine, flywheel, speed, mean_torque)
+    steady = steady_state(machine, drive, flywheel,
+                          mean_speed=speed if table.motor.kind == "constant_torque" else None)
+    warnings = list(steady.warnings)
+    failed: list[str] = [*steady.warnings]
+    run = None
+    if table.start_up and table.motor.kind != "constant_torque":
+        try:
+            run = start_up(machine, drive, flywheel, steady=steady)
+        except NotSettledError as exc:
+            warnings.append(str(exc))
+        except ValueError as exc:  # the drive cannot start the machine or it rolls back: a design check fails
+            failed.append(str(exc))
+    real = forces_at_speed(steady)
+    values: dict[str, Any] = {
+        "flywheel.inertia": flywheel,
+        "flywheel.energy_fluctuation": float(sizing.energy_fluctuation[0]),
+        "flywheel.delta": float(steady.delta),
+        "flywheel.mean_speed": float(steady.mean_speed),
+        "flywheel.min_speed": float(np.min(steady.omega)),
+        "flywheel.max_speed": float(np.max(steady.omega)),
+        "flywheel.peak_drive_torque": float(steady.peak_drive_torque),
+        "flywheel.rms_drive_torque": float(steady.rms_drive_torque),
+        "flywheel.energy_per_cycle": float(steady.energy_per_cycle),
+        "flywheel.mean_power": float(steady.mean_power),
+        "flywheel.torque_peak_constant_speed": float(real.torque_peak[1]),
+        "flywheel.torque_peak_real_speed": float(real.torque_peak[0]),
+        "flywheel.joint_force_change": real.largest_change()[1],
+    }
+    if table.delta is not None:
+        values |= {"flywheel.target_delta": table.delta, "flywheel.inertia_exact": float(sizing.exact[0]),
+                   "flywheel.inertia_classic": float(sizing.classic[0]),
+                   "flywheel.method_difference": float(sizing.difference[0])}
+        if steady.delta > table.delta * 1.05:
+            failed.append(f"simulated coefficient of speed fluctuation {float(steady.delta):.4g} exceeds the target "
+                          f"{table.delta:g} by more than 5 %")
+    if run is not None:
+        values["flywheel.time_to_steady"] = float(run.time_to_steady)
+    if hasattr(drive, "breakdown_torque") and drive.name == "induction motor":
+        values |= {"flywheel.motor_rated_power": float(drive.rated_power),
+                   "flywheel.motor_breakdown_torque": float(drive.breakdown_torque),
+                   "flywheel.gear_ratio": float(drive.ratio)}
+    part = None
+    if flywheel > 0:
+        limit = table.rim_speed_limit or rim_speed_limit(table.allowable_stress, table.density, table.shape)
+        # on a shaft turning i times the crank, the part carries J / i^2 at i times the speed
+        i = table.speed_ratio
+        wmax = float(np.max(steady.omega)) * i
+        own = flywheel / i**2
+        if table.shape == "disc":
+            part = disc_flywheel(own, wmax, width_ratio=table.width_ratio, density=table.density,
+                                 rim_speed_limit=limit)
+        else:
+            part = rim_flywheel(own, float(steady.mean_speed) * i, wmax, rim_speed=table.rim_speed or 0.8 * limit,
+                                width_to_thickness=table.width_to_thickness, density=table.density,
+                                rim_speed_limit=limit)
+        values |= {"flywheel.diameter": part.diameter, "flywheel.width": part.width, "flywheel.mass": part.mass,
+                   "flywheel.rim_speed": part.rim_speed, "flywheel.rim_speed_limit": part.rim_speed_limit}
+        if not part.within_limit:
+            failed.append(f"flywheel rim speed {part.rim_speed:.4g} m/s exceeds the limit {part.rim_speed_limit:.4g} "
+                          "m/s")
+    result = FlywheelRun(table, machine, sizing, drive, flywheel, steady, run, real, part)
+    series = {"flywheel_cycle": _cycle_columns(result)}
+    if run is not None:
+        tr = run.trajectory
+        series["start_up"] = {"time": (tr.t, "s"), "crank_angle": (tr.phi, "rad"), "speed": (tr.omega, "rad/s"),
+                              "drive_torque": (tr.drive_torque, "N*m")}
+    present = tuple(k for k in SUMMARY if k in values)
+    return Outcome(results=result, scalars=values, series=series, summary=present, warnings=tuple(warnings),
+                   failed_checks=tuple(failed))
+
+
+def _cycle_columns(r) -> dict[str, tuple[Any, str]]:
+    s = r.steady
+    const = r.real.constant.driving_torque
+    return {
+        "crank_angle": (s.phi, "rad"),
+        "reduced_inertia": (r.machine.inertia(s.phi), "kg*m^2"),
+        "load_moment": (s.load_moment, "N*m"),
+        "speed": (s.omega, "rad/s"),
+        "acceleration": (s.acceleration, "rad/s^2"),
+        "time": (s.time, "s"),
+        "drive_torque": (s.drive_torque, "N*m"),
+        "linkage_torque_real_speed": (r.real.real.driving_torque, "N*m"),
+        "linkage_torque_constant_speed": (const, "N*m"),
+    }
+
+
+@dataclass(frozen=True)
+class FlywheelRun:
+    """Everything the ``[flywheel]`` stage computed (SI), for the report and the Python API."""
+
+    table: Any
+    machine: Any
+    sizing: Any
+    drive: Any
+    flywheel: float
+    steady: Any
+    start_up: Any
+    real: Any
+    part: Any
+
+
+CAPABILITY = Capability(
+    table="flywheel",
+    schema=FlywheelTable,
+    run=run_flywheel,
+    step="flywheel and drive",
+    kinds=("mechanism", "rotary_screen"),
+    labels=LABELS,
+    report="machdyn.report.dynamics:sections",
+)

@@ -1,0 +1,164 @@
+"""Report section and plots of machine dynamics (``[flywheel]``): the energy-mass diagram, reduced inertia and
+moment over the cycle, the speed over the crank angle (steady state) and over time (start-up), the drive torque
+against the load torque, and the flywheel table. Every plot takes an ``ax`` and returns it."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from matplotlib.axes import Axes
+
+from .html import _render, format_value, rows_html
+from .plots import PALETTE
+
+RPM = 30.0 / np.pi
+
+
+def _row(values: Any, design: int = 0) -> np.ndarray:
+    a = np.asarray(values, dtype=float)
+    return a[design] if a.ndim > 1 else a
+
+
+def plot_energy_mass(sizing: Any, ax: Axes, design: int = 0) -> Axes:
+    """Wittenbauer's energy-mass diagram: the work excess W(phi) against the reduced inertia J(phi), with the
+    two tangents of slopes omega_max^2/2 and omega_min^2/2 that fix the flywheel (seed 003, text after eq 19)."""
+    j = _row(sizing.inertia_curve, design)
+    w = _row(sizing.work_curve, design)
+    ax.plot(j, w, color=PALETTE[0], lw=1.2, label="cycle")
+    wm, d = sizing.mean_speed, sizing.delta
+    wmax, wmin = wm * (1 + d / 2), wm * (1 - d / 2)
+    jf = float(np.ravel(sizing.exact)[design])
+    span = np.array([j.min(), j.max()])
+    for slope, colour, name in ((0.5 * wmax**2, PALETTE[1], "ω_max²/2"), (0.5 * wmin**2, PALETTE[2], "ω_min²/2")):
+        k = int(np.argmin(slope * j - w)) if colour == PALETTE[1] else int(np.argmax(slope * j - w))
+        ax.plot(span, w[k] + slope * (span - j[k]), color=colour, lw=0.9, ls="--", label=f"tangent, slope {name}")
+    ax.set_xlabel("reduced moment of inertia of the linkage J(φ) [kg·m²]")
+    ax.set_ylabel("work excess W(φ) [J]")
+    ax.set_title(f"Energy–mass diagram (flywheel {format_value(jf)} kg·m²)")
+    ax.legend(fontsize=7)
+    return ax
+
+
+def plot_reduced_inertia_and_moment(run: Any, ax: Axes) -> Axes:
+    """Reduced moment of inertia (with flywheel and rotor) and the reduced moment of the loads over the cycle."""
+    s = run.steady
+    deg = np.degrees(s.phi)
+    ax.plot(deg, _row(s.inertia), color=PALETTE[0], label="J(φ) with flywheel")
+    ax.set_xlabel("crank angle [°]")
+    ax.set_ylabel("reduced inertia [kg·m²]", color=PALETTE[0])
+    twin = ax.twinx()
+    twin.plot(deg, _row(s.load_moment), color=PALETTE[1], label="M(φ) of the loads")
+    twin.axhline(0.0, color="#999999", lw=0.6)
+    twin.set_ylabel("reduced moment of the loads [N·m]", color=PALETTE[1])
+    ax.set_title("Reduced inertia and reduced moment")
+    return ax
+
+
+def plot_speed_over_angle(steady: Any, ax: Axes) -> Axes:
+    """Crank speed over the crank angle in the periodic steady state, with its mean (max + min)/2."""
+    deg = np.degrees(steady.phi)
+    w = _row(steady.omega)
+    ax.plot(deg, w * RPM, color=PALETTE[0], label="steady state")
+    ax.axhline(float(np.ravel(steady.mean_speed)[0]) * RPM, color="#999999", lw=0.8, ls="--", label="mean")
+    ax.set_xlabel("crank angle [°]")
+    ax.set_ylabel("crank speed [rpm]")
+    ax.set_title(f"Speed at steady state (δ = {format_value(float(np.ravel(steady.delta)[0]))})")
+    ax.legend(fontsize=7)
+    return ax
+
+
+def plot_start_up(start: Any, ax: Axes) -> Axes:
+    """Crank speed over time from rest, with the time to steady running."""
+    tr = start.trajectory
+    ax.plot(tr.t, _row(tr.omega) * RPM, color=PALETTE[0], lw=0.9)
+    t_s = float(np.ravel(start.time_to_steady)[0])
+    ax.axvline(t_s, color=PALETTE[1], lw=0.8, ls="--", label=f"steady running after {format_value(t_s)} s")
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("crank speed [rpm]")
+    ax.set_title("Start-up from rest")
+    ax.legend(fontsize=7)
+    return ax
+
+
+def plot_drive_against_load(run: Any, ax: Axes) -> Axes:
+    """The drive's torque at the crank against the torque the linkage takes (kinetostatics at the real speed)
+    and at constant speed."""
+    s = run.steady
+    deg = np.degrees(s.phi)
+    ax.plot(deg, _row(s.drive_torque), color=PALETTE[0], label=f"drive ({run.drive.name})")
+    ax.plot(deg, _row(run.real.real.driving_torque), color=PALETTE[1], label="linkage, real speed")
+    ax.plot(deg, _row(run.real.constant.driving_torque), color=PALETTE[2], ls="--", lw=0.9,
+            label="linkage, constant speed")
+    ax.axhline(0.0, color="#999999", lw=0.6)
+    ax.set_xlabel("crank angle [°]")
+    ax.set_ylabel("torque at the crank [N·m]")
+    ax.set_title("Drive torque against load torque")
+    ax.legend(fontsize=7)
+    return ax
+
+
+def flywheel_rows(run: Any) -> list[list[str]]:
+    """The flywheel table: sizing, the part, the drive."""
+    sz, part = run.sizing, run.part
+    rows = [["flywheel inertia used", f"{format_value(run.flywheel)} kg·m²"]]
+    if run.table.delta is not None:
+        rows += [
+            ["target δ", format_value(run.table.delta)],
+            ["energy–mass (exact) method", f"{format_value(float(sz.exact[0]))} kg·m²"],
+            ["classic ΔE/(ω²δ) less mean J", f"{format_value(float(sz.classic[0]))} kg·m²"],
+            ["classic / exact − 1", format_value(float(sz.difference[0]))],
+            ["method used", run.table.method],
+        ]
+    rows += [["maximum fluctuation of energy ΔE", f"{format_value(float(sz.energy_fluctuation[0]))} J"],
+             ["simulated δ", format_value(float(np.ravel(run.steady.delta)[0]))]]
+    if part is not None:
+        rows += [
+            ["flywheel shaft speed / crank speed", format_value(run.table.speed_ratio)],
+            ["inertia of the part on its shaft", f"{format_value(part.inertia)} kg·m²"],
+            ["shape", "solid disc" if part.shape == "disc" else "rim"],
+            ["outer diameter", f"{format_value(part.diameter * 1000)} mm"],
+            ["width", f"{format_value(part.width * 1000)} mm"],
+            ["mass", f"{format_value(part.mass)} kg"],
+            ["rim speed / limit", f"{format_value(part.rim_speed)} / {format_value(part.rim_speed_limit)} m/s"],
+        ]
+    d = run.drive
+    if d.name == "induction motor":
+        rows += [["motor", f"{format_value(float(d.rated_power) / 1000)} kW, "
+                           f"{format_value(float(d.rated_speed) * RPM)} rpm, gear {format_value(float(d.ratio))}:1"],
+                 ["breakdown torque at the crank", f"{format_value(float(d.breakdown_torque))} N·m"]]
+    else:
+        rows += [["drive", d.name]]
+    rows += [["peak / RMS drive torque", f"{format_value(float(run.steady.peak_drive_torque))} / "
+                                         f"{format_value(float(run.steady.rms_drive_torque))} N·m"],
+             ["mean power", f"{format_value(float(run.steady.mean_power))} W"]]
+    if run.start_up is not None:
+        rows += [["time to steady running", f"{format_value(float(run.start_up.time_to_steady))} s"]]
+    return rows
+
+
+def sections(outcome: Any) -> list[tuple[str, str]]:
+    """The report section of a ``[flywheel]`` outcome."""
+    run = outcome.results
+
+    def draw(fig):
+        axes = fig.subplots(2, 2)
+        plot_energy_mass(run.sizing, axes[0, 0])
+        plot_reduced_inertia_and_moment(run, axes[0, 1])
+        plot_speed_over_angle(run.steady, axes[1, 0])
+        plot_drive_against_load(run, axes[1, 1])
+
+    figs = [_render("flywheel", "Flywheel and drive", "", (11.0, 8.0), draw, margins=(0.9, 0.9, 0.6, 0.45),
+                    wspace=0.55, hspace=0.5)]
+    if run.start_up is not None:
+        figs.append(_render("start-up", "Start-up", "", (6.0, 3.4), lambda fig: plot_start_up(run.start_up,
+                                                                                             fig.subplots()),
+                            margins=(0.8, 0.25, 0.55, 0.4)))
+    change_joint, change = run.real.largest_change()
+    intro = (f"<p>The machine under its real drive: flywheel {format_value(run.flywheel)} kg·m², simulated "
+             f"coefficient of speed fluctuation {format_value(float(np.ravel(run.steady.delta)[0]))}. At the real "
+             f"speed the peak force of joint {change_joint} changes by {format_value(change * 100)} % against the "
+             "constant-speed analysis.</p>")
+    body = intro + "".join(f"<figure class=\"plot\">{f.svg}</figure>" for f in figs)
+    body += rows_html(flywheel_rows(run), head=("quantity", "value"))
+    return [("Flywheel and drive", body)]
