@@ -14,20 +14,12 @@ import numpy as np
 from pydantic import Field, model_validator
 
 from ..pipeline import Capability, Outcome, StageContext
-from ..problem.fields import AngularVelocity, Inertia
+from ..problem.fields import AngularVelocity, Density, Inertia, LinearDamping, Power, Pressure, RotaryDamping, Stress
+from ..problem.fields import PositiveVelocity as Speed
+from ..problem.fields import Volume as Displacement
+from ..problem.fields import VolumeFlow as Flow
 from ..problem.schema import Spec
 from ..results.labels import Label
-from .quantities import (
-    Density,
-    Displacement,
-    Flow,
-    LinearDamping,
-    Power,
-    Pressure,
-    RotaryDamping,
-    Speed,
-    Stress,
-)
 
 
 class MotorTable(Spec):
