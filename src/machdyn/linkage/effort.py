@@ -30,7 +30,7 @@ import numpy as np
 
 from ..errors import InputError
 from .kinetostatics import Forces
-from .model import split_ref
+from .model import RRP, split_ref
 from .refs import column
 
 
@@ -194,7 +194,7 @@ def piston_effort(forces: Forces, slider: str | None = None) -> PistonEffort:
     if not isinstance(forces, Forces):
         raise InputError(f"piston_effort needs the Forces of kinetostatics; got {type(forces).__name__}.")
     mech = forces.mechanism
-    groups = [d for d in mech.dyads if d.kind == "RRP"]
+    groups = [d for d in mech.dyads if isinstance(d, RRP)]
     if slider is None:
         if len(groups) != 1:
             raise InputError(

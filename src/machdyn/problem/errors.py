@@ -111,7 +111,7 @@ def _member_label(key: Any) -> bool:
     return isinstance(key, str) and ("[" in key or key.startswith("function-"))
 
 
-def _merge_alternatives(errors: list[dict[str, Any]]) -> list[dict[str, Any]]:
+def _merge_alternatives(errors: list[Any]) -> list[dict[str, Any]]:
     """Errors of a value that matches none of a union's members come once per member; keep the members that
     fit the value's type (a list is not a misspelled 'on'), and say the others in one message."""
     groups: dict[tuple, list[dict[str, Any]]] = {}
