@@ -23,10 +23,14 @@ run: $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/ruff check src tests bench
+	$(BIN)/mypy
 	$(BIN)/python -m pytest
 
 bench: $(BENCH_STAMP)
 	$(BIN)/python bench/peers.py
+	$(BIN)/python bench/dynamics.py
+	$(BIN)/python bench/explore.py throughput
+	$(BIN)/python bench/cli.py
 
 lint: $(STAMP)
 	$(BIN)/ruff check src tests bench
