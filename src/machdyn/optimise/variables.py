@@ -252,6 +252,8 @@ class DesignSpace:
         from ..problem.loader import load_problem
 
         candidate = self.problem
+        if "optimise" in type(candidate).model_fields:
+            candidate = candidate.model_copy(update={"optimise": None})  # the design itself, ready to run
         for path, arr in self.values(np.asarray(x, dtype=float)[None, :]).items():
             candidate = assign(candidate, path, float(arr[0]))
         return load_problem(dump_problem(candidate))
@@ -329,8 +331,8 @@ def design_space(problem: Any, spec: OptimiseSpec) -> DesignSpace:
             continue
         lo, hi = bounds
         if not hi > lo:
-            problems.append((f"{where}.upper", f"must be greater than lower ({getattr(v, 'lower')}); "
-                                               f"got {getattr(v, 'upper')}"))
+            problems.append((f"{where}.upper", f"must be greater than lower ({v.lower}); "
+                                               f"got {v.upper}"))
             continue
         if meta.rule == ">0" and not lo > 0 or meta.rule == ">=0" and not lo >= 0:
             problems.append((f"{where}.lower", f"{v.parameter} must be {meta.rule} {meta.unit}; got {v.lower}"))
