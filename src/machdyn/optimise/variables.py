@@ -374,10 +374,13 @@ def _si_unit(unit: str) -> str:
     return f"{q.units:~}".replace(" ", "")
 
 
-def current_values(space: DesignSpace) -> np.ndarray:
-    """The variables' values in the problem as given (free variables: mid-range), clipped to the bounds."""
+def current_values(space: DesignSpace) -> np.ndarray | None:
+    """The variables' values in the problem as given (free variables: mid-range), or None if one lies outside
+    its bounds (the search then starts from its own sample only)."""
     out = []
     for v in space.variables:
         x = _value_at(space.problem, v.path) if v.path is not None else 0.5 * (v.lower + v.upper)
-        out.append(min(max(x, v.lower), v.upper))
+        if not v.lower <= x <= v.upper:
+            return None
+        out.append(x)
     return np.array(out)
