@@ -146,6 +146,9 @@ def _kinematic_results(mech, kin, phi, ok, shape, wanted) -> dict[str, np.ndarra
         out["transmission_angle.worst"] = np.where(good, worst, np.inf).min(axis=(0, 2))
     first = True
     for body, kind in _output_bodies(mech):
+        if f"stroke.{body}" not in wanted and not (first and "time_ratio" in wanted):
+            first = False
+            continue
         if kind == "slide":
             sm = kin.slide(body)
             values, rates = np.broadcast_to(sm.s, shape), np.broadcast_to(sm.v, shape)
@@ -201,11 +204,12 @@ def _compactor_results(mech, kin, phi, ok, shape) -> dict[str, np.ndarray]:
     k2 = np.where((lever > 0) & (u >= 0), length / np.where(lever > 0, lever, 1.0), np.nan)
     theta2 = np.broadcast_to(kin.body(coupler).angle, shape)
     gamma = np.abs(np.mod(theta2 + np.pi, 2 * np.pi) - np.pi)
-    alpha = theta2 - np.broadcast_to(kin.body(mech.crank.body).angle, shape)
-    k1 = 1.0 / np.abs(np.cos(alpha))
     active = next((f.active for f in mech.forces if f.point == f"{coupler}.P"), None)
-    pressing = np.broadcast_to(np.asarray(window(phi, active), dtype=float) > 0, shape) & ok
-    k1_min = np.where(pressing, k1, np.inf).min(axis=1)
+    cols = np.flatnonzero(np.broadcast_to(np.asarray(window(phi, active), dtype=float), phi.shape) > 0)
+    # k1 only where the plate presses (the window's crank angles): alpha = theta2 - phi.
+    alpha = theta2[:, cols] - np.broadcast_to(kin.body(mech.crank.body).angle, shape)[:, cols]
+    k1 = 1.0 / np.abs(np.cos(alpha))
+    k1_min = np.where(ok[:, cols], k1, np.inf).min(axis=1) if cols.size else np.full(shape[0], np.nan)
     return {
         "compactor.plate_angle.max": np.where(ok, gamma, -np.inf).max(axis=1),
         "compactor.k1.min": k1_min,

@@ -46,7 +46,8 @@ def setup(problem: Any, spec: OptimiseSpec) -> Evaluator:
     def unit_of(key):
         return result_unit(key, mech)
 
-    objectives, constraints = (), ()
+    objectives: tuple[Any, ...] = ()
+    constraints: tuple[Any, ...] = ()
     try:
         objectives = parse_objectives(spec.objectives, names, unit_of)
     except ProblemFileError as exc:
