@@ -49,3 +49,17 @@ def test_check_reports_an_unknown_objective_with_exit_code_2(tmp_path):
     res = CliRunner().invoke(app, ["check", str(path)])
     assert res.exit_code == 2
     assert "did you mean 'compactor.force_gain.min'" in res.output
+
+
+def test_constraints_no_design_meets_fail_the_run_with_the_tightest_listed(tmp_path):
+    """A well-formed table that no design satisfies: exit 3 (the design fails its checks), outputs written."""
+    text = EXAMPLE.read_text(encoding="utf-8").replace('max = "20 deg"', 'max = "0.5 deg"')
+    text = text.replace("generations = 300", "generations = 5")
+    path = tmp_path / "tight.toml"
+    path.write_text(text, encoding="utf-8")
+    out = tmp_path / "out"
+    res = CliRunner().invoke(app, ["run", str(path), "--out", str(out)])
+    assert res.exit_code == 3, res.output
+    assert "compactor.plate_angle.max <= 0.5 deg: violated by" in res.output
+    scalars = json.loads((out / "results.json").read_text(encoding="utf-8"))["scalars"]
+    assert scalars["optimise.feasible"]["value"] == 0.0

@@ -36,6 +36,7 @@ LABELS = {
     "optimise.converged": Label("Optimisation: converged (1 yes, 0 no)"),
     "optimise.verified": Label("Optimisation: best design verified feasible (1 yes, 0 no)"),
     "optimise.front_size": Label("Optimisation: designs on the Pareto front"),
+    "optimise.feasible": Label("Optimisation: a feasible design was found (1 yes, 0 no)"),
 }
 
 
@@ -66,11 +67,19 @@ def run(ctx: StageContext) -> Outcome:
     the search's history (``optimise_history.csv``) and, for several objectives, the front
     (``optimise_front.csv``)."""
     from .evaluate import result_unit
+    from .result import NoFeasibleDesign
     from .study import optimise
 
-    result = optimise(ctx.problem, ctx.table)
+    try:
+        result = optimise(ctx.problem, ctx.table)
+    except NoFeasibleDesign as exc:
+        # A well-formed table whose constraints no design within the bounds meets: the design fails its
+        # checks (the rest of the run is still written), with the tightest constraints listed.
+        return Outcome(results=None, scalars={"optimise.feasible": 0.0}, summary=("optimise.feasible",),
+                       failed_checks=(str(exc),))
     mech = ctx.mechanism
     scalars: dict[str, Any] = {
+        "optimise.feasible": 1.0,
         "optimise.evaluations": float(result.evaluations),
         "optimise.generations": float(len(result.history.generation)),
         "optimise.designs_per_second": float(result.designs_per_second),

@@ -56,6 +56,9 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
     from ..optimise.study import show_value
 
     result = outcome.results
+    if result is None:
+        text = "".join(f"<pre>{escape(m)}</pre>" for m in outcome.failed_checks)
+        return [("Design optimisation", "<p>No feasible design was found.</p>" + text)]
     figures = [_render("optimise-history", "Convergence", "Best feasible objective per generation and the share "
                        "of feasible designs.", (7.0, 3.6), lambda fig: plot_convergence(result, fig.subplots()),
                        margins=(0.9, 0.9, 0.55, 0.3))]
