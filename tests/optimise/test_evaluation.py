@@ -95,3 +95,33 @@ def test_compactor_results_agree_with_the_machine_layer(compactor):
     assert got["compactor.k1.min"][0] == pytest.approx(k1, rel=1e-12)
     assert got["compactor.k2"][0] == pytest.approx(0.5 / 0.1, rel=1e-12)
     assert got["compactor.force_gain.min"][0] == pytest.approx(k1 * 5.0, rel=1e-12)
+
+
+def test_a_design_that_closes_at_no_angle_gives_nan_results_and_no_warning():
+    """Warnings are errors in this suite: a population with a design that never closes must evaluate quietly."""
+    from machdyn.linkage import four_bar
+
+    mech = four_bar([0.04, 0.04], [0.12, 0.01], [0.10, 0.01], 0.15)
+    got = evaluate(mech, np.arange(36) * (2 * np.pi / 36), 10.0, 0.0, set(result_names(mech)))
+    assert got["regular"].tolist() == [True, False]
+    assert got["assembled_fraction"][1] == 0.0
+    assert np.isnan(got["driving_torque.max_abs"][1]) and np.isfinite(got["driving_torque.max_abs"][0])
+
+
+def test_the_examples_split_compaction_force_equals_the_force_at_p(compactor):
+    """The example writes Q at P as Q a/l at A plus Q (l - a)/l at B: on a rigid plate the same resultant and
+    moment, so the driving torque and every joint force agree to rounding."""
+    from dataclasses import replace
+
+    from machdyn.linkage import crank_angles, kinetostatics
+    from machdyn.linkage.model import PointForce
+
+    mech = build_mechanism(compactor)
+    phi = crank_angles(360)
+    split = kinetostatics(mech, phi, 10.0)
+    at_p = kinetostatics(replace(mech, forces=(PointForce("Q", "coupler.P", 0.0, 2000.0, mech.forces[0].active),)),
+                         phi, 10.0)
+    scale = np.max(np.abs(at_p.driving_torque))
+    np.testing.assert_allclose(split.driving_torque, at_p.driving_torque, rtol=0, atol=1e-12 * scale)
+    for name in ("O", "D"):
+        np.testing.assert_allclose(split.joint(name).magnitude, at_p.joint(name).magnitude, rtol=1e-12)

@@ -14,12 +14,13 @@ coupler, compaction force at P):
 - ``compactor.k1.min`` = min over the pressing window of k1 = 1/|cos alpha|, alpha = theta2 - phi (eq 1, eq 8);
 - ``compactor.k2`` = l / a, a = l - u the distance of P from B along the plate (eq 1);
 - ``compactor.force_gain.min`` = min over the pressing window of k1 k2, the force gain Q/P (eq 1) the design
-  guarantees over the whole pressing stroke. The window is the ``active`` range of the force acting at
-  ``coupler.P`` (the whole cycle without one).
+  guarantees over the whole pressing stroke. The window is the ``active`` range of the first force on the
+  coupler that has one (the whole cycle without one).
 """
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Iterable
 
 import numpy as np
@@ -115,7 +116,11 @@ def evaluate(mech: Mechanism, phi, speed, acceleration, wanted: Iterable[str],
         }
         out.update(_kinematic_results(mech, kin, phi, ok, shape, wanted))
         if wanted & (set(FORCE_RESULTS) | {k for k in wanted if k.startswith("joint.")}):
-            res = sweep(mech, phi, speed, acceleration, shaking_about=shaking_about)
+            with warnings.catch_warnings():
+                # Designs that close at no crank angle give all-NaN rows, whose peaks the sweep reports as
+                # NaN (and flags not regular) after NumPy warns about them.
+                warnings.simplefilter("ignore", RuntimeWarning)
+                res = sweep(mech, phi, speed, acceleration, shaking_about=shaking_about)
             out["regular"] = out["regular"] & np.asarray(res.regular, dtype=bool)
             for key, attr in (("driving_torque.max_abs", "max_driving_torque"),
                               ("driving_torque.rms", "rms_driving_torque"),
@@ -204,7 +209,7 @@ def _compactor_results(mech, kin, phi, ok, shape) -> dict[str, np.ndarray]:
     k2 = np.where((lever > 0) & (u >= 0), length / np.where(lever > 0, lever, 1.0), np.nan)
     theta2 = np.broadcast_to(kin.body(coupler).angle, shape)
     gamma = np.abs(np.mod(theta2 + np.pi, 2 * np.pi) - np.pi)
-    active = next((f.active for f in mech.forces if f.point == f"{coupler}.P"), None)
+    active = next((f.active for f in mech.forces if f.point.split(".")[0] == coupler and f.active), None)
     cols = np.flatnonzero(np.broadcast_to(np.asarray(window(phi, active), dtype=float), phi.shape) > 0)
     # k1 only where the plate presses (the window's crank angles): alpha = theta2 - phi.
     alpha = theta2[:, cols] - np.broadcast_to(kin.body(mech.crank.body).angle, shape)[:, cols]

@@ -48,7 +48,11 @@ class Objective:
 
 def unknown_result(name: str, names: list[str]) -> str:
     """The message for a result name that is not one of ``names``."""
-    return (f"'{name}' names no result of this mechanism{did_you_mean(name, names)} "
+    why = ""
+    if name.startswith("compactor.") and not any(n.startswith("compactor.") for n in names):
+        why = ("; the compactor results need a four-bar with a coupler point (mechanism.coupler_point), the "
+               "point of the plate where the material is pressed")
+    return (f"'{name}' names no result of this mechanism{why}{did_you_mean(name, names)} "
             f"(results: {', '.join(names)})")
 
 
