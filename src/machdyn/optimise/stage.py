@@ -51,7 +51,7 @@ def _text(key: str) -> str:
     return key
 
 
-def check(problem: Any, table: OptimiseSpec) -> list[tuple[str, str]]:
+def check(problem: Any, table: OptimiseSpec, source: str | None = None) -> list[tuple[str, str]]:
     """The table's mistakes that need the problem: unknown quantities and results, bounds in wrong units."""
     from .study import setup
 
