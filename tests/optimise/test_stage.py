@@ -63,3 +63,33 @@ def test_constraints_no_design_meets_fail_the_run_with_the_tightest_listed(tmp_p
     assert "compactor.plate_angle.max <= 0.5 deg: violated by" in res.output
     scalars = json.loads((out / "results.json").read_text(encoding="utf-8"))["scalars"]
     assert scalars["optimise.feasible"]["value"] == 0.0
+
+
+def test_two_objectives_write_the_pareto_front(tmp_path):
+    from .conftest import FOUR_BAR
+
+    text = FOUR_BAR + """
+[optimise]
+population = 12
+generations = 5
+positions = 60
+[[optimise.variables]]
+parameter = "mechanism.crank.length"
+lower = "20 mm"
+upper = "55 mm"
+[[optimise.objectives]]
+result = "driving_torque.max_abs"
+[[optimise.objectives]]
+result = "stroke.rocker"
+sense = "maximise"
+"""
+    path = tmp_path / "front.toml"
+    path.write_text(text, encoding="utf-8")
+    out = tmp_path / "out"
+    res = CliRunner().invoke(app, ["run", str(path), "--out", str(out)])
+    assert res.exit_code == 0, res.output
+    with open(out / "optimise_front.csv", encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    scalars = json.loads((out / "results.json").read_text(encoding="utf-8"))["scalars"]
+    assert len(rows) == scalars["optimise.front_size"]["value"] >= 2
+    assert "optimise-pareto" in (out / "report.html").read_text(encoding="utf-8")
