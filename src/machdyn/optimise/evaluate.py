@@ -57,7 +57,6 @@ def _sliders(mech: Mechanism) -> set[str]:
 
 def result_names(mech: Mechanism) -> list[str]:
     """Every result key the optimiser can evaluate for a mechanism of this structure."""
-    from ..linkage.kinetostatics import Joint  # noqa: F401 - documents where joint names come from
     from ..linkage.model import joints
 
     names = list(FORCE_RESULTS) + [f"joint.{j[0]}.max_force" for j in joints(mech)]
