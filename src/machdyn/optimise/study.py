@@ -59,9 +59,9 @@ def setup(problem: Any, spec: OptimiseSpec) -> Evaluator:
     if problems:
         raise ProblemFileError(problems)
     if spec.positions is not None:
-        phi = np.arange(spec.positions) * (2 * np.pi / spec.positions)
-    else:
-        phi = crank_angles(problem)
+        # The drive's own crank range, sampled at the search's number of positions.
+        problem = problem.model_copy(update={"drive": problem.drive.model_copy(update={"positions": spec.positions})})
+    phi = crank_angles(problem)
     return Evaluator(space, objectives, constraints, phi, tuple(problem.output.shaking_moment_about))
 
 
