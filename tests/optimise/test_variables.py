@@ -119,3 +119,19 @@ def test_best_design_problem_is_validated_and_has_no_optimise_table():
     best = design_space(problem, spec).problem_at(np.array([0.0325]))
     assert best.mechanism.crank.length == 0.0325 and best.optimise is None
     assert FOUR_BAR.count("[mechanism") == 5
+
+
+def test_the_compactor_examples_population_is_built_in_one_go(monkeypatch, compactor):
+    """Free variables, derived link lengths, a derived coupler-point coordinate and derived loads: one build."""
+    from machdyn.optimise import setup
+    from machdyn.optimise.variables import DesignSpace
+
+    def no_fallback(*_args):
+        raise AssertionError("the population was built design by design, not in one build")
+
+    monkeypatch.setattr(DesignSpace, "_build_each", no_fallback)
+    ev = setup(compactor, compactor.optimise)
+    x = ev.space.lower + np.random.default_rng(1).random((20, 4)) * (ev.space.upper - ev.space.lower)
+    pop = ev.space.population(x)
+    assert pop.mechanism.design_count == 20 and pop.buildable.all()
+    np.testing.assert_allclose(pop.mechanism.forces[1].fy, 2000 * (x[:, 1] - 0.1) / x[:, 1], rtol=1e-15)
