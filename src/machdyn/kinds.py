@@ -27,6 +27,7 @@ CAPABILITIES: dict[str, str] = {
     "frame": "machdyn.vibration.stage:FRAME",
     "signals": "machdyn.vibration.stage:SIGNALS",
     "flywheel": "machdyn.dynamics.stage:CAPABILITY",
+    "optimise": "machdyn.optimise.stage:CAPABILITY",
 }
 
 

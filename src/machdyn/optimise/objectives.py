@@ -1,0 +1,85 @@
+"""Objectives: a per-design result to minimise, maximise or bring to a target value.
+
+Any result of :func:`machdyn.optimise.evaluate.result_names` may be named; a name that is none of them is
+refused with a did-you-mean. Every objective is turned into a value to *minimise*: the result itself
+(minimise), its negative (maximise) or its distance from the target, relative to the target when that is not
+zero (target).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import ProblemFileError
+from ..problem.errors import did_you_mean
+from ..problem.fields import FieldError, Unit, to_si
+from .schema import ObjectiveSpec
+
+SENSES = {"minimise": "minimise", "minimize": "minimise", "maximise": "maximise", "maximize": "maximise"}
+
+
+@dataclass(frozen=True)
+class Objective:
+    """``result`` [its SI ``unit``] to ``sense`` ('minimise', 'maximise' or 'target'); ``target`` in SI."""
+
+    result: str
+    sense: str
+    unit: str
+    target: float | None = None
+
+    def cost(self, results: dict[str, np.ndarray]) -> np.ndarray:
+        """The value to minimise for each design (NaN where the result is NaN)."""
+        r = np.asarray(results[self.result], dtype=float)
+        if self.sense == "maximise":
+            return -r
+        if self.sense == "target":
+            assert self.target is not None
+            scale = abs(self.target) if self.target != 0.0 else 1.0
+            return np.abs(r - self.target) / scale
+        return r
+
+    def describe(self) -> str:
+        if self.sense == "target":
+            return f"bring {self.result} to {self.target:g} {self.unit}".rstrip()
+        return f"{self.sense} {self.result}"
+
+
+def unknown_result(name: str, names: list[str]) -> str:
+    """The message for a result name that is not one of ``names``."""
+    why = ""
+    if name.startswith("compactor.") and not any(n.startswith("compactor.") for n in names):
+        why = ("; the compactor results need a four-bar with a coupler point (mechanism.coupler_point), the "
+               "point of the plate where the material is pressed")
+    return (f"'{name}' names no result of this mechanism{why}{did_you_mean(name, names)} "
+            f"(results: {', '.join(names)})")
+
+
+def parse_objectives(specs: list[ObjectiveSpec], names: list[str], unit_of) -> tuple[Objective, ...]:
+    """Objectives from the table; unknown results and targets in the wrong unit are reported together.
+
+    ``unit_of(result)`` gives the result's SI unit."""
+    problems: list[tuple[str, str]] = []
+    out = []
+    for i, spec in enumerate(specs):
+        where = f"optimise.objectives[{i}]"
+        if spec.result not in names:
+            problems.append((f"{where}.result", unknown_result(spec.result, names)))
+            continue
+        unit = unit_of(spec.result)
+        if spec.target is None:
+            out.append(Objective(spec.result, SENSES[spec.sense], unit))
+            continue
+        if "sense" in spec.model_fields_set:
+            problems.append((f"{where}.sense", "give either sense or target, not both"))
+            continue
+        try:
+            target = to_si(spec.target, Unit(unit, "result"))
+        except FieldError as exc:
+            problems.append((f"{where}.target", f"{exc} (for {spec.result}, in {unit or 'no unit'})"))
+            continue
+        out.append(Objective(spec.result, "target", unit, target))
+    if problems:
+        raise ProblemFileError(problems)
+    return tuple(out)

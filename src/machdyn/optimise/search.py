@@ -1,0 +1,139 @@
+"""Single-objective search: :func:`scipy.optimize.differential_evolution` with ``vectorized=True``, so that
+each generation — the whole population — is one call of the engine.
+
+Constraints follow Deb's feasibility rules (K. Deb, *An efficient constraint handling method for genetic
+algorithms*, Comput. Methods Appl. Mech. Engrg. 186 (2000) 311-338): differential evolution compares a trial
+with its target only, so the cost of an infeasible design is ``INFEASIBLE * (1 + total violation)``, above
+every feasible cost: a feasible design beats an infeasible one, two feasible ones compare by objective, two
+infeasible ones by violation.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .constraints import CLOSES, violations
+from .evaluate import evaluate
+from .result import History, NoFeasibleDesign
+
+#: Cost floor of infeasible designs; feasible objective values must stay far below it in magnitude.
+INFEASIBLE = 1e30
+
+
+@dataclass
+class Evaluator:
+    """Evaluates populations (N x V, SI) of a design space: results, objective costs, violations; keeps the
+    count of designs evaluated, the least-violating design seen and each constraint's smallest violation."""
+
+    space: Any
+    objectives: tuple
+    constraints: tuple
+    phi: np.ndarray
+    about: tuple = (0.0, 0.0)
+    evaluations: int = 0
+    least_violation: np.ndarray | None = None
+    closest: tuple | None = None
+    wanted: set = field(default_factory=set)
+
+    def __post_init__(self) -> None:
+        self.wanted = {o.result for o in self.objectives} | {c.result for c in self.constraints}
+
+    def __call__(self, population) -> tuple[dict, np.ndarray, np.ndarray]:
+        """(results, costs N x K, violations N x (1 + C)) of a population."""
+        x = np.atleast_2d(np.asarray(population, dtype=float))
+        pop = self.space.population(x)
+        results = evaluate(pop.mechanism, self.phi, pop.speed, pop.acceleration, self.wanted, self.about)
+        costs = np.stack([o.cost(results) for o in self.objectives], axis=1)
+        viol = violations(self.constraints, results, pop.buildable)
+        viol[:, 0] += np.where(np.isfinite(costs).all(axis=1), 0.0, 1.0)
+        self.evaluations += x.shape[0]
+        self._track(x, results, viol)
+        return results, costs, viol
+
+    def _track(self, x, results, viol) -> None:
+        low = viol.min(axis=0)
+        self.least_violation = low if self.least_violation is None else np.minimum(self.least_violation, low)
+        i = int(np.argmin(viol.sum(axis=1)))
+        total = float(viol[i].sum())
+        if self.closest is None or total < self.closest[0]:
+            self.closest = (total, x[i].copy(), {k: float(np.asarray(v)[i]) for k, v in results.items()})
+
+    def scalar_cost(self, population) -> np.ndarray:
+        """Deb-rule cost of each design for a single objective."""
+        _results, costs, viol = self(population)
+        total = viol.sum(axis=1)
+        return np.where(total > 0, INFEASIBLE * (1.0 + total), costs[:, 0])
+
+    def infeasible_message(self, show) -> str:
+        """Why no design is feasible: every constraint with the smallest violation any design reached,
+        tightest first, and the values of the design that came closest."""
+        assert self.least_violation is not None and self.closest is not None
+        labels = [CLOSES] + [c.describe(show(c)) for c in self.constraints]
+        order = np.argsort(-self.least_violation)
+        best = self.closest[2]
+        lines = [f"No design within the bounds meets every constraint ({self.evaluations} designs evaluated). "
+                 "Constraints, tightest first (smallest relative violation any design reached):"]
+        for k in order:
+            if self.least_violation[k] <= 0:
+                continue
+            label = labels[k]
+            reached = ""
+            if k == 0:
+                reached = f"; the closest design closes at {100 * best['assembled_fraction']:.0f} % of the angles"
+            else:
+                c = self.constraints[k - 1]
+                value = best.get(c.result, math.nan)
+                reached = f"; the closest design has {show(c)(value)}" if math.isfinite(value) else ""
+            lines.append(f"  {label}: violated by {self.least_violation[k]:.3g}{reached}")
+        lines.append("Widen the variables' bounds or relax the tightest constraint.")
+        return "\n".join(lines)
+
+
+def differential_evolution(evaluator: Evaluator, *, population: int, generations: int, tolerance: float,
+                           seed: int | None, x0=None, show=None):
+    """Run scipy's differential evolution on ``evaluator``; returns (x, converged, message, history, seconds).
+
+    Raises :class:`NoFeasibleDesign` when no design evaluated meets the constraints."""
+    from scipy.optimize import differential_evolution as scipy_de
+
+    space = evaluator.space
+    bounds = list(zip(space.lower, space.upper, strict=True))
+    dims = len(bounds)
+    multiplier = max(1, math.ceil(population / dims))
+    history: dict[str, list] = {"evaluations": [], "best": [], "feasible": []}
+
+    def func(xt):  # scipy hands the population as (V, S)
+        costs = evaluator.scalar_cost(np.asarray(xt).T)
+        history["feasible"].append(float(np.mean(costs < INFEASIBLE)))
+        return costs
+
+    def callback(intermediate_result):
+        fun = float(intermediate_result.fun)
+        history["evaluations"].append(evaluator.evaluations)
+        history["best"].append(fun if fun < INFEASIBLE else math.nan)
+
+    start = time.perf_counter()
+    res = scipy_de(
+        func, bounds, maxiter=generations, popsize=multiplier, tol=tolerance, seed=seed, polish=False,
+        vectorized=True, updating="deferred", callback=callback, init="latinhypercube", x0=x0,
+    )
+    seconds = time.perf_counter() - start
+    if not float(res.fun) < INFEASIBLE:
+        raise NoFeasibleDesign(evaluator.infeasible_message(show or _plain))
+    gens = np.arange(1, len(history["best"]) + 1)
+    feasible_share = np.asarray(history["feasible"][1:len(gens) + 1] or [math.nan] * len(gens), dtype=float)
+    if feasible_share.size < gens.size:
+        feasible_share = np.pad(feasible_share, (0, gens.size - feasible_share.size), constant_values=np.nan)
+    hist = History(gens, np.asarray(history["evaluations"]), np.asarray(history["best"]), feasible_share)
+    converged = bool(res.success)
+    message = str(res.message)
+    return np.asarray(res.x, dtype=float), converged, message, hist, seconds
+
+
+def _plain(constraint):
+    return lambda v: f"{v:g} {constraint.unit}".rstrip()

@@ -1,0 +1,143 @@
+"""The ``[optimise]`` capability: the stage function, its labels and its check."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from ..errors import ProblemFileError
+from ..pipeline import Capability, Outcome, StageContext
+from ..results.labels import Label
+from .schema import OptimiseSpec
+
+#: Texts of the per-design results an objective or constraint may name (SI units in evaluate.RESULT_UNITS).
+RESULT_TEXTS = {
+    "driving_torque.max_abs": "driving torque, max |T|",
+    "driving_torque.rms": "driving torque, RMS",
+    "input_power.mean": "input power, mean",
+    "shaking_force.max": "shaking force, max",
+    "shaking_moment.max_abs": "shaking moment, max |M|",
+    "transmission_angle.min": "transmission angle, min",
+    "transmission_angle.max": "transmission angle, max",
+    "transmission_angle.worst": "transmission angle, worst (closest to 0 or 180 deg)",
+    "time_ratio": "time ratio (advance / return)",
+    "compactor.plate_angle.max": "compactor: plate angle to the horizontal, max |gamma|",
+    "compactor.k1.min": "compactor: crank force gain k1 = 1/cos alpha, min over the pressing window",
+    "compactor.k2": "compactor: lever force gain k2 = l/a",
+    "compactor.force_gain.min": "compactor: force gain k1 k2, min over the pressing window",
+}
+
+LABELS = {
+    "optimise.evaluations": Label("Optimisation: designs evaluated"),
+    "optimise.generations": Label("Optimisation: generations"),
+    "optimise.designs_per_second": Label("Optimisation: designs evaluated per second", "1/s"),
+    "optimise.converged": Label("Optimisation: converged (1 yes, 0 no)"),
+    "optimise.verified": Label("Optimisation: best design verified feasible (1 yes, 0 no)"),
+    "optimise.front_size": Label("Optimisation: designs on the Pareto front"),
+    "optimise.feasible": Label("Optimisation: a feasible design was found (1 yes, 0 no)"),
+}
+
+
+def _text(key: str) -> str:
+    if key in RESULT_TEXTS:
+        return RESULT_TEXTS[key]
+    parts = key.split(".")
+    if parts[0] == "joint":
+        return f"joint {parts[1]}, max force"
+    if parts[0] == "stroke":
+        return f"stroke of {parts[1]}"
+    return key
+
+
+def check(problem: Any, table: OptimiseSpec, source: str | None = None) -> list[tuple[str, str]]:
+    """The table's mistakes that need the problem: unknown quantities and results, bounds in wrong units."""
+    from .study import setup
+
+    try:
+        setup(problem, table)
+    except ProblemFileError as exc:
+        return list(exc.problems)
+    return []
+
+
+def run(ctx: StageContext) -> Outcome:
+    """Optimise the problem's design as its ``[optimise]`` table says; the best design's variables and results,
+    the search's history (``optimise_history.csv``) and, for several objectives, the front
+    (``optimise_front.csv``)."""
+    from .evaluate import result_unit
+    from .result import NoFeasibleDesign
+    from .study import optimise
+
+    try:
+        result = optimise(ctx.problem, ctx.table)
+    except NoFeasibleDesign as exc:
+        # A well-formed table whose constraints no design within the bounds meets: the design fails its
+        # checks (the rest of the run is still written), with the tightest constraints listed.
+        return Outcome(results=None, scalars={"optimise.feasible": 0.0}, summary=("optimise.feasible",),
+                       failed_checks=(str(exc),))
+    mech = ctx.mechanism
+    scalars: dict[str, Any] = {
+        "optimise.feasible": 1.0,
+        "optimise.evaluations": float(result.evaluations),
+        "optimise.generations": float(len(result.history.generation)),
+        "optimise.designs_per_second": float(result.designs_per_second),
+        "optimise.converged": 1.0 if result.converged else 0.0,
+        "optimise.verified": 1.0 if result.verified else 0.0,
+    }
+    labels: dict[str, Label] = {}
+    summary: list[str] = []
+    for name, value, unit, shown in zip(result.names, result.x, result.units, result.display_units, strict=True):
+        key = f"optimise.best.variable.{name}"
+        scalars[key] = float(value)
+        labels[key] = Label(f"Best design: {name}", unit, shown)
+        summary.append(key)
+    asked = [o.result for o in result.objectives] + [c.result for c in result.constraints]
+    for res_key in dict.fromkeys(asked):
+        key = f"optimise.best.{res_key}"
+        scalars[key] = float(result.results.get(res_key, math.nan))
+        labels[key] = Label(f"Best design: {_text(res_key)}", result_unit(res_key, mech))
+        summary.append(key)
+    summary += ["optimise.evaluations", "optimise.converged", "optimise.verified"]
+    h = result.history
+    series: dict[str, Any] = {"optimise_history": {
+        "generation": (h.generation.astype(float), ""),
+        "evaluations": (h.evaluations.astype(float), ""),
+        "best_cost": (h.best, ""),
+        "feasible_share": (h.feasible_share, ""),
+    }}
+    if result.front_x is not None and result.front_f is not None:
+        scalars["optimise.front_size"] = float(len(result.front_x))
+        summary.append("optimise.front_size")
+        columns: dict[str, Any] = {}
+        for i, (name, unit) in enumerate(zip(result.names, result.units, strict=True)):
+            columns[name] = (result.front_x[:, i], unit)
+        for j, o in enumerate(result.objectives):
+            columns[o.result] = (result.front_f[:, j], "" if o.sense == "target" else o.unit)
+        series["optimise_front"] = columns
+    failed = () if result.verified else (
+        "The best design, rebuilt from its own problem file, breaks a constraint.",)
+    return Outcome(results=result, scalars=scalars, labels=labels, series=series, summary=tuple(summary),
+                   warnings=tuple(result.warnings), failed_checks=failed)
+
+
+CAPABILITY = Capability(
+    table="optimise",
+    schema=OptimiseSpec,
+    run=run,
+    step="design optimisation",
+    labels=LABELS,
+    report="machdyn.report.optimise:sections",
+    check=check,
+)
+
+
+def best_design_text(outcome: Outcome) -> str:
+    """The best design of an ``[optimise]`` outcome as a problem file ready to run."""
+    return str(outcome.results.problem_text)
+
+
+def front_array(outcome: Outcome) -> np.ndarray | None:
+    """The Pareto front's objective values (designs x objectives, SI), or None for one objective."""
+    return outcome.results.front_f

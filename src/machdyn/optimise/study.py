@@ -1,0 +1,140 @@
+"""Design optimisation of a problem: :func:`optimise` ties the variables, the objectives and constraints, the
+search and the verification of the best design together."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from ..errors import ProblemFileError
+from .constraints import parse_constraints, violations
+from .evaluate import evaluate, result_names, result_unit
+from .objectives import parse_objectives
+from .result import OptimiseResult
+from .schema import OptimiseSpec
+from .search import Evaluator, differential_evolution
+from .variables import current_values, design_space
+
+#: A verified design may break a constraint by this much (relative): the population and the single-design
+#: evaluations of one design agree to rounding, not bit for bit.
+VERIFY_TOLERANCE = 1e-9
+
+
+def show_value(unit: str):
+    """Format an SI value for a message: angles in degrees, others in their SI unit."""
+    if unit == "rad":
+        return lambda v: f"{math.degrees(v):.4g} deg"
+    return lambda v: f"{v:.4g} {unit}".rstrip()
+
+
+def setup(problem: Any, spec: OptimiseSpec) -> Evaluator:
+    """The :class:`~machdyn.optimise.search.Evaluator` of a problem and its ``[optimise]`` table; every
+    mistake of the table is reported at once (:class:`~machdyn.errors.ProblemFileError`)."""
+    from ..problem.build import build_mechanism, crank_angles
+
+    problems: list[tuple[str, str]] = []
+    space = None
+    try:
+        space = design_space(problem, spec)
+    except ProblemFileError as exc:
+        problems += exc.problems
+    mech = build_mechanism(problem)
+    names = result_names(mech)
+
+    def unit_of(key):
+        return result_unit(key, mech)
+
+    objectives: tuple[Any, ...] = ()
+    constraints: tuple[Any, ...] = ()
+    try:
+        objectives = parse_objectives(spec.objectives, names, unit_of)
+    except ProblemFileError as exc:
+        problems += exc.problems
+    try:
+        constraints = parse_constraints(spec.constraints, names, unit_of)
+    except ProblemFileError as exc:
+        problems += exc.problems
+    if problems:
+        raise ProblemFileError(problems)
+    if spec.positions is not None:
+        # The drive's own crank range, sampled at the search's number of positions.
+        problem = problem.model_copy(update={"drive": problem.drive.model_copy(update={"positions": spec.positions})})
+    phi = crank_angles(problem)
+    return Evaluator(space, objectives, constraints, phi, tuple(problem.output.shaking_moment_about))
+
+
+def _show(constraint):
+    return show_value(constraint.unit)
+
+
+def optimise(problem: Any, spec: OptimiseSpec) -> OptimiseResult:
+    """Optimise ``problem`` (a validated linkage problem) as ``spec`` (its ``[optimise]`` table) says.
+
+    One objective: differential evolution (:mod:`machdyn.optimise.search`); several: the Pareto front by
+    NSGA-II (:mod:`machdyn.optimise.pareto`), whose member best in the first objective is reported as the
+    best design. Raises :class:`~machdyn.optimise.result.NoFeasibleDesign` listing the tightest constraints
+    when no design meets them all. A search that stops without converging is reported in ``converged``,
+    ``message`` and ``warnings``.
+    """
+    from ..problem.dumper import dump_problem
+
+    ev = setup(problem, spec)
+    space = ev.space
+    warnings: list[str] = []
+    front_x = front_f = None
+    if len(ev.objectives) == 1:
+        x, converged, message, history, seconds = differential_evolution(
+            ev, population=spec.population, generations=spec.generations, tolerance=spec.tolerance,
+            seed=spec.seed, x0=current_values(space), show=_show,
+        )
+        method = "differential_evolution"
+    else:
+        from .pareto import nsga2
+
+        front_x, front_f, history, seconds = nsga2(ev, population=spec.population, generations=spec.generations,
+                                                   seed=spec.seed, show=_show)
+        x = front_x[0]
+        converged, method = True, "nsga2"
+        message = f"NSGA-II ran {spec.generations} generations; {len(front_x)} designs on the front"
+    if not converged:
+        warnings.append(
+            f"The search did not converge within {spec.generations} generations ({message}); the best design "
+            "found is reported but may not be the optimum: raise optimise.generations or optimise.population."
+        )
+    best_problem = space.problem_at(x)
+    results, verified = verify(best_problem, ev)
+    if not verified:
+        warnings.append("The best design, rebuilt from its problem file, does not meet every constraint.")
+    objective = np.array([results.get(o.result, math.nan) for o in ev.objectives])
+    if front_f is not None:
+        signs = np.array([-1.0 if o.sense == "maximise" else 1.0 for o in ev.objectives])
+        front_f = front_f * signs  # back from costs to the results themselves (targets stay distances)
+    return OptimiseResult(
+        method=method, names=tuple(space.names), units=tuple(v.unit for v in space.variables),
+        display_units=tuple(v.display_unit for v in space.variables), lower=space.lower, upper=space.upper,
+        x=x, results=results, objectives=ev.objectives, constraints=ev.constraints, objective=objective,
+        converged=converged, message=message, evaluations=ev.evaluations, seconds=seconds, verified=verified,
+        history=history, problem=best_problem, problem_text=dump_problem(best_problem),
+        front_x=front_x, front_f=front_f, warnings=tuple(warnings),
+    )
+
+
+def verify(problem: Any, ev: Evaluator) -> tuple[dict[str, float], bool]:
+    """The results of one design built alone from its validated problem, and whether it meets every
+    constraint (and closes at every crank angle)."""
+    from ..problem.build import build_mechanism
+
+    mech = build_mechanism(problem)
+    wanted = set(result_names(mech)) & (ev.wanted | _all_cheap(mech))
+    res = evaluate(mech, ev.phi, problem.drive.speed, problem.drive.acceleration, wanted, ev.about)
+    viol = violations(ev.constraints, res, np.array([True]))
+    results = {k: float(np.asarray(v)[0]) for k, v in res.items()}
+    return results, bool(np.all(viol <= VERIFY_TOLERANCE))
+
+
+def _all_cheap(mech) -> set[str]:
+    """The kinematic results, reported for the best design whether asked for or not."""
+    return {k for k in result_names(mech) if k.startswith(("stroke.", "transmission_angle", "time_ratio",
+                                                            "compactor."))}

@@ -1,0 +1,386 @@
+"""Design variables addressed by their key path in a problem file, and the population -> engine model map.
+
+A variable is any quantity of the file (``mechanism.crank.length``, ``mechanism.coupler_point[0]``,
+``loads.forces[0].fy``, ``drive.speed``) with a lower and an upper bound in its own unit; ``derived`` sets
+further quantities from the variables by a formula in SI units (e.g. the compactor's plate length tied to the
+horizontal pivot distance, seed 003 eq 6). A population (N designs x V variables, SI) becomes **one** stacked
+engine model with arrays of N values: for the standard mechanisms by handing the arrays straight to the
+builders, otherwise by building each variant and stacking them (:func:`machdyn.linkage.stack_designs`).
+"""
+
+from __future__ import annotations
+
+import ast
+import math
+import re
+import typing
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from pydantic import BaseModel
+
+from ..errors import InputError, ProblemFileError
+from ..problem.errors import did_you_mean
+from ..problem.fields import FieldError, Unit, to_si
+from .schema import OptimiseSpec
+
+#: Functions a derived formula may call (numpy, so that they act on a whole population at once).
+FORMULA_FUNCTIONS = {
+    "sqrt": np.sqrt, "sin": np.sin, "cos": np.cos, "tan": np.tan, "atan2": np.arctan2, "atan": np.arctan,
+    "asin": np.arcsin, "acos": np.arccos, "hypot": np.hypot, "abs": np.abs, "min": np.minimum, "max": np.maximum,
+}
+FORMULA_CONSTANTS = {"pi": math.pi}
+_ALLOWED_NODES = (ast.Expression, ast.BinOp, ast.UnaryOp, ast.Name, ast.Load, ast.Call, ast.Constant,
+                  ast.Add, ast.Sub, ast.Mult, ast.Div, ast.Pow, ast.USub, ast.UAdd)
+
+
+def segments(path: str) -> list[tuple[str, int | None]]:
+    """``"loads.forces[0].fx"`` -> [("loads", None), ("forces", 0), ("fx", None)]."""
+    out = []
+    for part in path.split("."):
+        match = re.fullmatch(r"([A-Za-z_][A-Za-z0-9_]*)(?:\[(\d+)\])?", part)
+        if not match:
+            raise FieldError(f"'{path}' is not a key path like 'mechanism.crank.length' or 'loads.forces[0].fx'")
+        out.append((match.group(1), None if match.group(2) is None else int(match.group(2))))
+    return out
+
+
+def _unit_in(annotation: Any, index: int | None) -> Unit | None:
+    """The :class:`Unit` of an annotation (or of item ``index`` of a tuple/list annotation)."""
+    stack = [annotation]
+    while stack:
+        kind = stack.pop()
+        found = next((m for m in getattr(kind, "__metadata__", ()) if isinstance(m, Unit)), None)
+        if found is not None and index is None:
+            return found
+        args = [a for a in typing.get_args(kind) if a is not type(None) and a is not Ellipsis]
+        if index is not None and typing.get_origin(kind) in (tuple, list):
+            item = args[index] if len(args) > index else (args[0] if args else None)
+            return _unit_in(item, None) if item is not None else None
+        stack += args
+    return None
+
+
+def quantity_unit(problem: BaseModel, path: str) -> Unit:
+    """The unit and sign rule of the quantity at ``path``; a :class:`FieldError` with a did-you-mean if the
+    path names no quantity of the file."""
+    parts = segments(path)
+    node: Any = problem
+    for i, (name, index) in enumerate(parts):
+        fields = type(node).model_fields if isinstance(node, BaseModel) else {}
+        if name not in fields:
+            where = ".".join(p for p, _ in parts[:i]) or "the file"
+            raise FieldError(f"'{path}' is not a quantity of this file: {where} has no key '{name}'"
+                             f"{did_you_mean(name, list(fields))}")
+        value = getattr(node, name)
+        if value is None:
+            raise FieldError(f"'{path}' is not set in this file; give it a value first")
+        if index is not None and (not isinstance(value, list | tuple) or index >= len(value)):
+            size = len(value) if isinstance(value, list | tuple) else 0
+            raise FieldError(f"'{path}' refers to item {index} of '{name}', which has {size} item(s)")
+        last = i == len(parts) - 1
+        if last:
+            annotation = fields[name].annotation
+            unit = _unit_in(annotation, index) if index is not None else (
+                next((m for m in fields[name].metadata if isinstance(m, Unit)), None) or _unit_in(annotation, None))
+            if unit is None or isinstance(value if index is None else value[index], BaseModel):
+                raise FieldError(f"'{path}' is not a quantity with a unit, so it cannot be a design variable")
+            return unit
+        node = value if index is None else value[index]
+    raise FieldError(f"'{path}' is not a quantity of this file")
+
+
+def assign(model: BaseModel, path: str, value: Any) -> BaseModel:
+    """A copy of ``model`` with the quantity at ``path`` replaced by ``value`` (a float or an array of
+    designs; not re-validated, so the caller checks the rules)."""
+    return _assign(model, segments(path), value)
+
+
+def _assign(model: BaseModel, parts: list[tuple[str, int | None]], value: Any) -> BaseModel:
+    name, index = parts[0]
+    child = getattr(model, name)
+    if len(parts) == 1:
+        if index is None:
+            return model.model_copy(update={name: value})
+        items = list(child)
+        items[index] = value
+        if np.ndim(value):
+            # A point (x, y) with one coordinate per design: the other coordinate as an array too, so that the
+            # point converts to one (2, N) array.
+            items = [np.broadcast_to(np.asarray(v, dtype=float), np.shape(value)) for v in items]
+        return model.model_copy(update={name: type(child)(items)})
+    if index is None:
+        return model.model_copy(update={name: _assign(child, parts[1:], value)})
+    items = list(child)
+    items[index] = _assign(items[index], parts[1:], value)
+    return model.model_copy(update={name: type(child)(items)})
+
+
+def _value_at(model: Any, path: str) -> float:
+    node = model
+    for name, index in segments(path):
+        node = getattr(node, name)
+        if index is not None:
+            node = node[index]
+    return float(node)
+
+
+@dataclass(frozen=True)
+class Formula:
+    """A derived quantity: ``path`` = ``expression`` of the variables (SI)."""
+
+    path: str
+    expression: str
+    unit: Unit
+    code: Any = field(repr=False, compare=False)
+
+    def __call__(self, values: dict[str, np.ndarray]) -> np.ndarray:
+        scope = {**FORMULA_FUNCTIONS, **FORMULA_CONSTANTS, **values}
+        with np.errstate(all="ignore"):
+            return np.asarray(eval(self.code, {"__builtins__": {}}, scope), dtype=float)  # noqa: S307 - checked AST
+
+
+def compile_formula(path: str, text: str, names: list[str], unit: Unit) -> Formula:
+    """Check that ``text`` is arithmetic of the variables, numbers, ``pi`` and :data:`FORMULA_FUNCTIONS`."""
+    try:
+        tree = ast.parse(text, mode="eval")
+    except SyntaxError:
+        raise FieldError(f"'{text}' is not a formula (e.g. \"hypot(l, h)\")") from None
+    known = set(names) | set(FORMULA_FUNCTIONS) | set(FORMULA_CONSTANTS)
+    for node in ast.walk(tree):
+        if not isinstance(node, _ALLOWED_NODES):
+            raise FieldError(f"'{text}' uses {type(node).__name__}; a formula may use + - * / **, numbers, "
+                             f"the variables and {', '.join(FORMULA_FUNCTIONS)}")
+        if isinstance(node, ast.Name) and node.id not in known:
+            raise FieldError(f"'{text}' uses '{node.id}', which is no variable{did_you_mean(node.id, names)} "
+                             f"(variables: {', '.join(names)})")
+        if isinstance(node, ast.Call) and not (isinstance(node.func, ast.Name) and node.func.id in FORMULA_FUNCTIONS):
+            raise FieldError(f"'{text}' calls something that is not one of {', '.join(FORMULA_FUNCTIONS)}")
+    return Formula(path, text, unit, compile(tree, "<formula>", "eval"))
+
+
+@dataclass(frozen=True)
+class Variable:
+    """A design variable: ``name`` (used in formulas), the ``path`` it sets (None for a free variable),
+    bounds in SI, its SI unit and the unit its bounds were written in."""
+
+    name: str
+    path: str | None
+    lower: float
+    upper: float
+    unit: str
+    display_unit: str
+
+
+def _default_name(path: str) -> str:
+    return re.sub(r"\W+", "_", path.replace("mechanism.", "")).strip("_")
+
+
+def _display(text: Any, meta: Unit) -> str:
+    from ..units import Q_
+
+    try:
+        return f"{Q_(str(text)).units:~}" or meta.unit
+    except Exception:  # noqa: BLE001 - the value's own error is reported by to_si
+        return meta.unit
+
+
+@dataclass(frozen=True)
+class Population:
+    """One stacked engine model of N designs and what goes with it: the crank speed and acceleration (a
+    float or (N,) array each) and, per design, whether it could be built and why not."""
+
+    mechanism: Any
+    speed: Any
+    acceleration: Any
+    buildable: np.ndarray
+    reasons: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class DesignSpace:
+    """The variables and derived quantities of an ``[optimise]`` table over a validated problem."""
+
+    problem: Any
+    variables: tuple[Variable, ...]
+    formulas: tuple[Formula, ...]
+    rules: dict = field(default_factory=dict)
+
+    @property
+    def lower(self) -> np.ndarray:
+        return np.array([v.lower for v in self.variables])
+
+    @property
+    def upper(self) -> np.ndarray:
+        return np.array([v.upper for v in self.variables])
+
+    @property
+    def names(self) -> list[str]:
+        return [v.name for v in self.variables]
+
+    def values(self, population) -> dict[str, np.ndarray]:
+        """The quantity arrays a population (N x V, SI) sets, keyed by path (variables, then formulas)."""
+        x = np.atleast_2d(np.asarray(population, dtype=float))
+        by_name = {v.name: x[:, i] for i, v in enumerate(self.variables)}
+        out = {v.path: x[:, i] for i, v in enumerate(self.variables) if v.path is not None}
+        for f in self.formulas:
+            out[f.path] = np.broadcast_to(f(by_name), (x.shape[0],)).astype(float)
+        return out
+
+    def _broken(self, values: dict[str, np.ndarray]) -> tuple[np.ndarray, list[str]]:
+        """Designs whose derived quantities break their field's rule (or are not finite), with the reason."""
+        n = len(next(iter(values.values())))
+        bad = np.zeros(n, dtype=bool)
+        reasons = [""] * n
+        for path, arr in values.items():
+            rule = self.rules[path]
+            wrong = ~np.isfinite(arr)
+            if rule == ">0":
+                wrong |= ~(arr > 0)
+            elif rule == ">=0":
+                wrong |= ~(arr >= 0)
+            for i in np.flatnonzero(wrong & ~bad):
+                reasons[i] = f"{path} = {arr[i]:g} breaks its rule ({rule or 'finite'})"
+            bad |= wrong
+        return bad, reasons
+
+    def problem_at(self, x) -> Any:
+        """The validated problem of one design (a vector of V values, SI): written out and read back, so
+        every field's rule is checked as for a file."""
+        from ..problem.dumper import dump_problem
+        from ..problem.loader import load_problem
+
+        candidate = self.problem
+        if "optimise" in type(candidate).model_fields:
+            candidate = candidate.model_copy(update={"optimise": None})  # the design itself, ready to run
+        for path, arr in self.values(np.asarray(x, dtype=float)[None, :]).items():
+            candidate = assign(candidate, path, float(arr[0]))
+        return load_problem(dump_problem(candidate))
+
+    def population(self, population) -> Population:
+        """The stacked engine model of a population (N x V, SI): one build for the standard mechanisms, a
+        build per design and :func:`~machdyn.linkage.stack_designs` otherwise."""
+        from ..problem.build import build_mechanism
+
+        values = self.values(population)
+        bad, reasons = self._broken(values)
+        if bad.all():
+            raise InputError("No design of the population can be built: " + reasons[0] + ".")
+        if bad.any():
+            # Designs that break a rule are replaced by the first good one and marked unbuildable.
+            good = int(np.flatnonzero(~bad)[0])
+            values = {p: np.where(bad, a[good], a) for p, a in values.items()}
+        stacked = self.problem
+        for path, arr in values.items():
+            stacked = assign(stacked, path, arr)
+        try:
+            mech = build_mechanism(stacked)
+            mech.take_designs(slice(0, 1))  # every parameter array has the population's length
+        except (TypeError, ValueError, ProblemFileError, AttributeError):
+            mech, bad, reasons = self._build_each(values, bad, reasons)
+        speed = values.get("drive.speed", self.problem.drive.speed)
+        accel = values.get("drive.acceleration", self.problem.drive.acceleration)
+        return Population(mech, speed, accel, ~bad, tuple(reasons))
+
+    def _build_each(self, values, bad, reasons):
+        from ..linkage import stack_designs
+        from ..problem.build import build_mechanism
+
+        n = len(bad)
+        mechs: list[Any] = [None] * n
+        for i in range(n):
+            variant = self.problem
+            for path, arr in values.items():
+                variant = assign(variant, path, float(arr[i]))
+            try:
+                mechs[i] = build_mechanism(variant)
+            except (ValueError, ProblemFileError) as exc:
+                bad[i] = True
+                reasons[i] = str(exc).replace("\n", " ")
+        good = [m for m in mechs if m is not None]
+        if not good:
+            raise InputError("No design of the population can be built: " + reasons[0] + ".")
+        mechs = [m if m is not None else good[0] for m in mechs]
+        return stack_designs(mechs), bad, reasons
+
+
+def design_space(problem: Any, spec: OptimiseSpec) -> DesignSpace:
+    """The :class:`DesignSpace` of ``spec`` over ``problem``; every mistake reported at once with its path
+    (unknown quantities with a did-you-mean, bounds in the wrong unit, empty or reversed ranges)."""
+    problems: list[tuple[str, str]] = []
+    variables: list[Variable] = []
+    rules: dict[str, str] = {}
+    for i, v in enumerate(spec.variables):
+        where = f"optimise.variables[{i}]"
+        if v.parameter is not None:
+            try:
+                meta = quantity_unit(problem, v.parameter)
+            except FieldError as exc:
+                problems.append((f"{where}.parameter", str(exc)))
+                continue
+        else:
+            meta = Unit(_si_unit(v.unit or ""), "free")
+        bounds = []
+        for key in ("lower", "upper"):
+            try:
+                bounds.append(to_si(getattr(v, key), meta))
+            except FieldError as exc:
+                problems.append((f"{where}.{key}", f"{exc} (for {v.parameter or v.name})"))
+        if len(bounds) < 2:
+            continue
+        lo, hi = bounds
+        if not hi > lo:
+            problems.append((f"{where}.upper", f"must be greater than lower ({v.lower}); "
+                                               f"got {v.upper}"))
+            continue
+        if meta.rule == ">0" and not lo > 0 or meta.rule == ">=0" and not lo >= 0:
+            problems.append((f"{where}.lower", f"{v.parameter} must be {meta.rule} {meta.unit}; got {v.lower}"))
+            continue
+        name = v.name or _default_name(v.parameter or "")
+        variables.append(Variable(name, v.parameter, lo, hi, meta.unit, _display(v.lower, meta)))
+        if v.parameter is not None:
+            rules[v.parameter] = meta.rule
+    names = [v.name for v in variables]
+    paths = [v.path for v in variables if v.path is not None]
+    for dupe in sorted({n for n in names if names.count(n) > 1}):
+        problems.append(("optimise.variables", f"two variables are named '{dupe}'; give one a name"))
+    for dupe in sorted({p for p in paths if paths.count(p) > 1}):
+        problems.append(("optimise.variables", f"'{dupe}' is varied twice"))
+    formulas = []
+    for path, text in spec.derived.items():
+        where = f"optimise.derived.{path}"
+        try:
+            meta = quantity_unit(problem, path)
+            if path in paths:
+                raise FieldError(f"'{path}' is already a design variable")
+            formulas.append(compile_formula(path, text, names, meta))
+            rules[path] = meta.rule
+        except FieldError as exc:
+            problems.append((where, str(exc)))
+    if problems:
+        raise ProblemFileError(problems)
+    return DesignSpace(problem, tuple(variables), tuple(formulas), rules)
+
+
+def _si_unit(unit: str) -> str:
+    """The SI unit of a free variable's unit (``"mm"`` -> ``"m"``)."""
+    from ..units import ureg
+
+    try:
+        q = ureg.Quantity(1.0, unit).to_base_units()
+    except Exception:  # noqa: BLE001 - reported as a field error by the caller
+        raise ProblemFileError([("optimise.variables", f"unknown unit {unit!r}")]) from None
+    return f"{q.units:~}".replace(" ", "")
+
+
+def current_values(space: DesignSpace) -> np.ndarray | None:
+    """The variables' values in the problem as given (free variables: mid-range), or None if one lies outside
+    its bounds (the search then starts from its own sample only)."""
+    out = []
+    for v in space.variables:
+        x = _value_at(space.problem, v.path) if v.path is not None else 0.5 * (v.lower + v.upper)
+        if not v.lower <= x <= v.upper:
+            return None
+        out.append(x)
+    return np.array(out)
