@@ -41,6 +41,7 @@ class Outcome:
     units : SI unit of keys whose unit the labels do not know (keys made at run time).
     labels : labels of keys made at run time (they take precedence over the stage's registered labels).
     series : name -> columns, each written as ``<name>.csv`` (the unit in every header).
+    files : file name -> text, written beside the other outputs (an optimised design as a problem file).
     summary : the keys shown in the summary table, in order.
     warnings : messages for the user, each said once.
     failed_checks : design checks the result fails, each said once; any makes the command line exit with 3.
@@ -52,6 +53,7 @@ class Outcome:
     units: Mapping[str, str] = field(default_factory=dict)
     labels: Mapping[str, Label] = field(default_factory=dict)
     series: Mapping[str, Series] = field(default_factory=dict)
+    files: Mapping[str, str] = field(default_factory=dict)
     summary: Sequence[str] = ()
     warnings: Sequence[str] = ()
     failed_checks: Sequence[str] = ()

@@ -142,6 +142,9 @@ class RunResult:
             step("tables")
             for name, frame in self.frames.items():
                 outputs.frame(f"{name}.csv", frame)
+            for outcome in self.outcomes.values():
+                for name, text in outcome.files.items():
+                    outputs.text(name, text)
             step("report")
             outputs.text("report.html", self.report_html())
         except BaseException:

@@ -119,6 +119,7 @@ def run(ctx: StageContext) -> Outcome:
     failed = () if result.verified else (
         "The best design, rebuilt from its own problem file, breaks a constraint.",)
     return Outcome(results=result, scalars=scalars, labels=labels, series=series, summary=tuple(summary),
+                   files={"best_design.toml": str(result.problem_text)},
                    warnings=tuple(result.warnings), failed_checks=failed)
 
 
