@@ -187,7 +187,7 @@ def _slots(table: BalanceSpec):
 def state_problems(problem: Any, table: BalanceSpec) -> list[tuple[Any, Any]]:
     """(state spec, varied problem) for each ``[[balance.states]]``; every mistake at once with its path."""
     from ..problem.fields import FieldError, to_si
-    from ..problem.sweep import _replace_at, _segments, _target
+    from ..problem.paths import assign, quantity_unit
 
     out, problems = [], []
     for i, state in enumerate(table.states):
@@ -195,8 +195,8 @@ def state_problems(problem: Any, table: BalanceSpec) -> list[tuple[Any, Any]]:
         for path, value in state.set.items():
             where = f"balance.states[{i}].set.{path}"
             try:
-                meta = _target(problem, path)
-                varied = _replace_at(varied, _segments(path), float(to_si(value, meta)))
+                meta = quantity_unit(problem, path)
+                varied = assign(varied, path, float(to_si(value, meta)))
             except FieldError as exc:
                 problems.append((where, str(exc)))
         out.append((state, varied))

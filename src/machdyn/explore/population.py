@@ -21,7 +21,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
-from ..problem.sweep import OBJECTIVES, QuantityRange, quantity_unit
+from ..problem.sweep import OBJECTIVES, QuantityRange, sweep_unit
 from .evaluate import ExplorePlan, check_vectorised_build, evaluate_designs
 from .execution import run_tasks
 from .sampling import DEFAULT_PARTITION, DesignSpace
@@ -39,7 +39,7 @@ def _checked(problem: Any, parameters: Sequence[str], values: Any) -> tuple[np.n
         raise InputError(f"parameters must differ from each other; got {list(parameters)}.")
     quantities = []
     for k, path in enumerate(parameters):
-        meta = quantity_unit(problem, path)
+        meta = sweep_unit(problem, path)
         column = data[:, k]
         bad = ~np.isfinite(column)
         if meta.rule == ">0":

@@ -1,4 +1,5 @@
-"""The ``[sweep]`` capability: design variants of a linkage problem, analysed together in one vectorised call."""
+"""A ``[sweep]`` of one quantity: its design variants analysed together in one vectorised call. The ``[sweep]``
+capability (:mod:`machdyn.explore.stage`) runs it for one-quantity tables and an exploration for several."""
 
 from __future__ import annotations
 
@@ -8,8 +9,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import ProblemFileError
-from ..pipeline import Capability, Outcome, StageContext
-from ..problem.sweep import SweepSpec
+from ..pipeline import Outcome, StageContext
 from ..results.labels import Label
 
 #: Per-design summaries of a sweep: (attribute of SweepResult, label, SI unit).
@@ -140,14 +140,3 @@ def run(ctx: StageContext) -> Outcome:
         columns[f"joint.{joint}.max_force"] = (data, "N")
     return Outcome(results=done, scalars=values, labels=labels, series={"sweep": columns}, summary=tuple(summary),
                    warnings=tuple(warnings))
-
-
-CAPABILITY = Capability(
-    table="sweep",
-    schema=SweepSpec,
-    run=run,
-    step="design sweep",
-    labels=LABELS,
-    report="machdyn.report.sweep:sections",
-    check=check,
-)

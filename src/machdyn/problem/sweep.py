@@ -28,7 +28,6 @@ evaluated in bounded memory, written to Parquet, optionally on a Dask cluster.
 from __future__ import annotations
 
 import re
-import typing
 from dataclasses import dataclass
 from typing import Any, Literal
 
@@ -38,6 +37,7 @@ from pydantic import BaseModel, Field, field_validator, model_validator
 from ..errors import ProblemFileError
 from .errors import did_you_mean
 from .fields import FieldError, Unit, to_si
+from .paths import assign, quantity_unit
 
 #: At most this many designs in one sweep (grids and samples alike).
 MAX_DESIGNS = 100_000_000
@@ -164,66 +164,11 @@ class SweepPlan:
     problems: tuple
 
 
-def _segments(path: str) -> list[tuple[str, int | None]]:
-    """``"loads.forces[0].fx"`` -> [("loads", None), ("forces", 0), ("fx", None)]."""
-    out = []
-    for part in path.split("."):
-        match = re.fullmatch(r"([A-Za-z_][A-Za-z0-9_]*)(?:\[(\d+)\])?", part)
-        if not match:
-            raise FieldError(f"'{path}' is not a key path like 'mechanism.crank.length' or 'loads.forces[0].fx'")
-        out.append((match.group(1), None if match.group(2) is None else int(match.group(2))))
-    return out
-
-
 def _target(problem: BaseModel, path: str) -> Unit:
     """The unit metadata of the quantity at ``path`` (e.g. ``mechanism.crank.length``)."""
     if path.split(".")[0] == "drive" and path.split(".")[-1] in ("start", "stop"):
         raise FieldError(f"'{path}' sets the crank angles, which every variant of a sweep shares")
-    segments = _segments(path)
-    node: Any = problem
-    for i, (name, index) in enumerate(segments):
-        fields = type(node).model_fields if isinstance(node, BaseModel) else {}
-        if name not in fields:
-            where = ".".join(p for p, _ in segments[:i]) or "the file"
-            hint = did_you_mean(name, list(fields))
-            raise FieldError(f"'{path}' is not a quantity of this file: {where} has no key '{name}'{hint}")
-        value = getattr(node, name)
-        if index is not None:
-            if not isinstance(value, list | tuple) or index >= len(value):
-                size = len(value) if isinstance(value, list | tuple) else 0
-                raise FieldError(f"'{path}' refers to item {index} of '{name}', which has {size} item(s)")
-        if i == len(segments) - 1:
-            unit = _unit_of(fields[name])
-            if unit is None or index is not None or isinstance(value, list | tuple):
-                raise FieldError(f"'{path}' is not a quantity with a unit, so it cannot be swept")
-            return unit
-        node = value if index is None else value[index]
-        if node is None:
-            raise FieldError(f"'{path}' is not set in this file; give it a value first")
-    raise FieldError(f"'{path}' is not a quantity of this file")
-
-
-def _unit_of(field) -> Unit | None:
-    """The :class:`Unit` of a quantity field, also when it is optional (``Mass | None``)."""
-    found = next((m for m in field.metadata if isinstance(m, Unit)), None)
-    stack = [field.annotation]
-    while found is None and stack:
-        kind = stack.pop()
-        found = next((m for m in getattr(kind, "__metadata__", ()) if isinstance(m, Unit)), None)
-        stack += [a for a in typing.get_args(kind) if a is not type(None)]
-    return found
-
-
-def _replace_at(model: BaseModel, segments: list[tuple[str, int | None]], value: float) -> BaseModel:
-    name, index = segments[0]
-    if len(segments) == 1:
-        return model.model_copy(update={name: value})
-    child = getattr(model, name)
-    if index is None:
-        return model.model_copy(update={name: _replace_at(child, segments[1:], value)})
-    items = list(child)
-    items[index] = _replace_at(items[index], segments[1:], value)
-    return model.model_copy(update={name: type(child)(items)})
+    return quantity_unit(problem, path)
 
 
 def _display_unit(text: Any, meta: Unit) -> str:
@@ -285,8 +230,7 @@ def expand_sweep(problem: Any) -> SweepPlan:
     if problems:
         raise ProblemFileError(problems)
     values_si = np.asarray(si, dtype=float)
-    segments = _segments(parameter)
-    variants = tuple(_replace_at(problem, segments, float(v)) for v in values_si)
+    variants = tuple(assign(problem, parameter, float(v)) for v in values_si)
     shown = np.array([convert(v, meta.unit, display) for v in values_si]) if display != meta.unit else values_si
     return SweepPlan(parameter, meta.unit, display, values_si, shown, variants)
 
@@ -358,7 +302,7 @@ def explore_quantities(problem: Any) -> tuple[QuantityRange, ...]:
     return tuple(out)
 
 
-def quantity_unit(problem: BaseModel, path: str) -> Unit:
+def sweep_unit(problem: BaseModel, path: str) -> Unit:
     """The unit and sign rule of the quantity at ``path`` of a problem; raises
     :class:`~machdyn.errors.ProblemFileError` naming the path if it is not a quantity that can vary."""
     try:
@@ -371,5 +315,5 @@ def substitute(problem: BaseModel, values: dict[str, Any]) -> Any:
     """``problem`` with the quantity at each path replaced by the value given (a float, or an array of one value
     per design), without validation: the values must have been checked (see :func:`explore_quantities`)."""
     for path, value in values.items():
-        problem = _replace_at(problem, _segments(path), value)
+        problem = assign(problem, path, value)
     return problem
