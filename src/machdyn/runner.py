@@ -223,7 +223,10 @@ def run_problem(problem: Any, *, text: str | None = None, step: Step = no_step) 
     summary: list[str] = []
     warnings: list[str] = []
     failed: list[str] = []
-    for outcome in outcomes.values():
+    for name, outcome in outcomes.items():
+        clash = sorted(set(values) & set(outcome.scalars))
+        if clash:  # two stages naming one result would overwrite each other silently
+            raise RuntimeError(f"the stage '{name}' reports results another stage already reported: {clash}")
         values |= outcome.scalars
         units |= outcome.units
         known |= outcome.labels

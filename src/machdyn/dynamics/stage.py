@@ -104,7 +104,7 @@ LABELS = {
     "flywheel.inertia_exact": Label("Flywheel sized by the energy-mass (Wittenbauer) method", "kg*m^2"),
     "flywheel.inertia_classic": Label("Flywheel sized by ΔE/(ω²δ) less the mean reduced inertia", "kg*m^2"),
     "flywheel.method_difference": Label("Flywheel: classic / exact − 1", ""),
-    "flywheel.energy_fluctuation": Label("Maximum fluctuation of energy ΔE", "J"),
+    "flywheel.sizing_energy_fluctuation": Label("Flywheel sizing: maximum fluctuation of energy ΔE", "J"),
     "flywheel.target_delta": Label("Coefficient of speed fluctuation: target", ""),
     "flywheel.delta": Label("Coefficient of speed fluctuation: simulated", ""),
     "flywheel.mean_speed": Label("Crank speed: (max + min)/2, steady state", "rad/s", "rpm"),
@@ -227,7 +227,7 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     real = forces_at_speed(steady)
     values: dict[str, Any] = {
         "flywheel.inertia": flywheel,
-        "flywheel.energy_fluctuation": float(sizing.energy_fluctuation[0]),
+        "flywheel.sizing_energy_fluctuation": float(sizing.energy_fluctuation[0]),
         "flywheel.delta": float(steady.delta),
         "flywheel.mean_speed": float(steady.mean_speed),
         "flywheel.min_speed": float(np.min(steady.omega)),
