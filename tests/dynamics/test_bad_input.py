@@ -111,3 +111,13 @@ def test_overloaded_induction_motor_is_warned(bench_mech):
                           breakdown_ratio=2.0, ratio=15.0)
     ss = steady_state(machine, tiny, 0.05)  # it turns, slowly, far beyond its breakdown slip
     assert ss.warnings and "beyond its breakdown slip" in ss.warnings[0]
+
+
+def test_constant_torque_mean_speed_too_low_to_pass_the_cycle(bench_machine):
+    """Too little flywheel for the mean speed: the machine would stop in the cycle; a clear error, not a root
+    finder's failure."""
+    from machdyn.dynamics import ConstantTorque, size_flywheel, steady_state
+
+    drive = ConstantTorque(float(size_flywheel(bench_machine, 10.0, 0.05).drive_torque[0]))
+    with pytest.raises(InputError, match="mean_speed.*cannot turn through its cycle"):
+        steady_state(bench_machine, drive, 1e-6, mean_speed=10.0)

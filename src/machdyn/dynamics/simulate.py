@@ -465,6 +465,13 @@ def _neutral_start(model, machine, drive, n, grid, mean_speed, rtol):
             w = np.sqrt(2.0 * (k + work[i]) / j[i])
             return 0.5 * (w.max() + w.min()) - mean_speed
 
+        if mid(lowest) > 0:
+            # even the least energy that keeps the crank turning gives a faster mean: the machine cannot run
+            # through the cycle at mean_speed (it would stop and swing back)
+            raise InputError(
+                f"mean_speed: the machine cannot turn through its cycle at a mean speed of {mean_speed:g} rad/s; "
+                f"at that speed it stops at some crank angle (the lowest mean speed that passes the cycle is "
+                f"{mid(lowest) + mean_speed:.6g} rad/s). Add a flywheel or raise the mean speed.")
         hi = max(lowest, 1.0) * 2.0
         while mid(hi) < 0:
             hi *= 2.0
