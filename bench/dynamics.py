@@ -248,7 +248,8 @@ def main() -> None:
                              "agreement_met": one["speed_max_rel"] <= TARGET_AGREEMENT}
     md = result["machdyn"]
     print(f"machdyn steady state: mean speed {md['mean_speed']:.6f} rad/s, delta {md['delta']:.6f}, "
-          f"period {md['period']:.6f} s, {md['iterations']} shooting steps, periodicity {md['periodicity']:.1e}")
+          f"period {md['period']:.6f} s, {md['iterations']} shooting steps (0: Fourier collocation), "
+          f"periodicity or truncation {md['periodicity']:.1e}")
     ms = {k: v * 1e3 for k, v in md["time_s"].items()}
     print(f"  one design: time min/median/max {ms['min']:.1f} / {ms['median']:.1f} / {ms['max']:.1f} ms")
     b = md["batch"]

@@ -111,3 +111,22 @@ def test_overloaded_induction_motor_is_warned(bench_mech):
                           breakdown_ratio=2.0, ratio=15.0)
     ss = steady_state(machine, tiny, 0.05)  # it turns, slowly, far beyond its breakdown slip
     assert ss.warnings and "beyond its breakdown slip" in ss.warnings[0]
+
+
+def test_constant_torque_mean_speed_too_low_to_pass_the_cycle(bench_machine):
+    """Too little flywheel for the mean speed: the machine would stop in the cycle; a clear error, not a root
+    finder's failure."""
+    from machdyn.dynamics import ConstantTorque, size_flywheel, steady_state
+
+    drive = ConstantTorque(float(size_flywheel(bench_machine, 10.0, 0.05).drive_torque[0]))
+    with pytest.raises(InputError, match="mean_speed.*cannot turn through its cycle"):
+        steady_state(bench_machine, drive, 1e-6, mean_speed=10.0)
+
+
+def test_torque_speed_table_with_non_increasing_speeds_names_the_entry():
+    from machdyn.dynamics import TorqueSpeedTable, torque_table
+
+    with pytest.raises(InputError, match=r"speeds\[2\] = 100 rad/s after speeds\[1\] = 120 rad/s"):
+        TorqueSpeedTable((0.0, 120.0, 100.0), (10.0, 8.0, 0.0))
+    with pytest.raises(InputError, match="angles of a torque table must increase strictly; got 90°"):
+        torque_table(np.radians([0.0, 120.0, 90.0]), [1.0, 2.0, 3.0])

@@ -70,3 +70,16 @@ def test_sizing_in_a_problem_file_meets_its_target(tmp_path):
     s = res.outcomes["flywheel"].scalars
     assert s["flywheel.delta"] == pytest.approx(0.02, rel=1e-3)
     assert np.isfinite(s["flywheel.method_difference"])
+
+
+@pytest.mark.parametrize("delta, rule", [("0", "must be > 0"), ("1", "must be < 1"), ("nan", "finite"),
+                                         ("inf", "finite")])
+def test_bad_target_delta_through_the_command_line(tmp_path, delta, rule):
+    """A target coefficient of speed fluctuation of 0, 1 or NaN: exit code 2 and a message naming the field and
+    the rule (NaN was reported as 'must be < 1')."""
+    path = _problem(tmp_path, f"[flywheel]\ndelta = {delta}\n")
+    result = CliRunner().invoke(app, ["run", str(path), "--out", str(tmp_path / "out")])
+    assert result.exit_code == 2, result.output
+    text = " ".join(result.output.split())
+    assert "flywheel.delta" in text
+    assert rule in text

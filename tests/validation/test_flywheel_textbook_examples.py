@@ -111,3 +111,54 @@ def test_khurmi_16_14_flywheel_rim_from_the_rim_speed_limit():
     assert 84.0 <= part.thickness * 1000 < 85.0
     assert 424.0 <= part.width * 1000 < 425.0
     assert part.within_limit is False or part.rim_speed > v  # at the highest speed the rim runs above v
+
+
+def test_khurmi_16_1_speeds_from_the_flywheel_and_the_energy_fluctuation():
+    """Ex. 16.1 (p. 573): flywheel of 6.5 t, radius of gyration 1.8 m, maximum fluctuation of energy 56 kN*m,
+    mean speed 120 rpm; printed: N1 = 121 rpm, N2 = 119 rpm (rounded to whole rpm). Simulated here: a turning
+    moment 28 sin(theta) kN*m (its energy swings by 2 x 28 = 56 kN*m) on the constant inertia m k^2."""
+    inertia = 6500.0 * 1.8**2
+    phi = np.linspace(0.0, 2 * np.pi, 361)
+    machine = EquivalentMachine.from_tables(torque_table(phi, 28e3 * np.sin(phi)), inertia)
+    assert float(energy_fluctuation(machine.moment)[0]) == pytest.approx(56e3, rel=1e-6)  # spline through 1° steps
+    ss = steady_state(machine, ConstantTorque(0.0), 0.0, mean_speed=120 * RPM)
+    n1, n2 = float(np.max(ss.omega)) / RPM, float(np.min(ss.omega)) / RPM
+    assert abs(n1 - 121) < 0.5 and abs(n2 - 119) < 0.5  # the book's whole rpm
+    # for a constant inertia the classic formula is exact: delta = dE / (I w^2)
+    assert float(ss.delta) == pytest.approx(56e3 / (inertia * (120 * RPM) ** 2), rel=1e-5)
+
+
+def test_khurmi_16_3_flywheel_mass_from_the_coefficient_of_fluctuation_of_energy():
+    """Ex. 16.3 (p. 574): steam engine 300 kW at 90 rpm, coefficient of fluctuation of energy 0.1, speed within
+    ±0.5 % of the mean, radius of gyration 2 m; printed: m = 5628 kg (the companion prints the integer part)."""
+    w = 90 * RPM
+    work_per_cycle = 300e3 * 2 * np.pi / w
+    inertia = flywheel_inertia_classic(0.1 * work_per_cycle, w, 0.01)
+    assert 5628.0 <= inertia / 2.0**2 < 5629.0
+
+
+@pytest.mark.parametrize("return_apex_deg", [250.0, 270.0, 290.0])
+def test_khurmi_16_7_double_acting_steam_engine_triangles(return_apex_deg):
+    """Ex. 16.7 (p. 578): turning moment on the outward stroke a triangle 0-180° of height 2000 N*m with its apex at
+    80° (4 pi/9), on the return stroke a triangle 180-360° of height 1500 N*m; 100 rpm, speed within ±0.75 %,
+    radius of gyration 1.75 m. Printed: coefficient of fluctuation of energy 18 % (integer part), m = 197.3 kg,
+    minimum speed at 35° and maximum at 136° from the inner dead centre (whole degrees). The companion gives the
+    return triangle's height, not its apex: the answer does not depend on it (three apex positions are checked)."""
+    angles = np.radians([0.0, 80.0, 180.0, return_apex_deg, 360.0])
+    torque = [0.0, 2000.0, 0.0, 1500.0, 0.0]
+    engine = torque_table(angles, torque, interpolation="linear")
+    mean = float(engine.mean()[0])
+    assert mean == pytest.approx(875.0, rel=1e-12)
+    machine = EquivalentMachine.from_tables(torque_table(angles, np.array(torque) - mean, interpolation="linear"))
+    w = 100 * RPM
+    sizing = size_flywheel(machine, w, 0.015)
+    de = float(sizing.energy_fluctuation[0])
+    assert int(100 * de / (mean * 2 * np.pi)) == 18
+    mass = float(sizing.exact[0]) / 1.75**2
+    assert mass == pytest.approx(197.3, abs=0.05)  # printed to 0.1 kg
+    ss = steady_state(machine, ConstantTorque(0.0), float(sizing.exact[0]), mean_speed=w)
+    assert float(ss.delta) == pytest.approx(0.015, rel=1e-4)
+    slow = np.degrees(ss.phi[np.argmin(ss.omega)])
+    fast = np.degrees(ss.phi[np.argmax(ss.omega)])
+    # exactly 80 - 45 = 35° and 80 + 56.25 = 136.25° (printed 35 and 136); the simulation's nodes are 1/2° apart
+    assert abs(slow - 35.0) <= 0.5 and abs(fast - 136.25) <= 0.5

@@ -259,7 +259,9 @@ class TorqueSpeedTable:
             raise InputError(f"A torque-speed table needs at least 2 speeds and one torque per speed; got {s.size} "
                              f"speeds and {t.size} torques.")
         if np.any(np.diff(s) <= 0):
-            raise InputError("The speeds of a torque-speed table must increase strictly.")
+            i = int(np.flatnonzero(np.diff(s) <= 0)[0]) + 1
+            raise InputError(f"The speeds of a torque-speed table must increase strictly; got speeds[{i}] = "
+                             f"{s[i]:g} rad/s after speeds[{i - 1}] = {s[i - 1]:g} rad/s.")
         if s[0] < 0:
             raise InputError(f"The speeds of a torque-speed table must be >= 0 rad/s; got {s[0]:g} rad/s.")
         _check_gear(self.ratio, self.efficiency, self.rotor_inertia, "torque-speed table motor")

@@ -92,6 +92,11 @@ class _Model:
 
     def curves(self, phi):
         """J (without the added inertia), J', position moment and reduced damping at phi (N,)."""
+        m = self.m
+        if self.fast and self.extra is None and all(c._on_nodes(phi) for c in (m.inertia, m.potential, m.moment,
+                                                                                m.damping)):
+            # the sample nodes themselves: one inverse FFT per curve
+            return m.inertia(phi), m.inertia.derivative(phi), m.position_moment(phi), m.damping(phi)
         if self.fast:
             phi = np.asarray(phi, dtype=float)
             if phi.ndim == 2:
@@ -109,7 +114,6 @@ class _Model:
                 shape = out[2].shape
                 return out[0], out[1], out[2] + np.broadcast_to(self.extra(phi), shape), out[3]
             return out[0], out[1], out[2], out[3]
-        m = self.m
         return m.inertia(phi), m.inertia.derivative(phi), m.position_moment(phi), m.damping(phi)
 
     def _plus_added(self, j):
@@ -201,7 +205,9 @@ class SteadyState:
     the crank, load_moment [N*m] (all loads, reduced), inertia [kg*m^2] (with flywheel and rotor) at each phi.
     delta: (max - min)/mean with mean = (max + min)/2; mean_speed: that mean; time_mean_speed = cycle / period
     [rad/s]; period_time [s]; energy_per_cycle: the drive's work per cycle [J]; peak and RMS (over time) drive
-    torque [N*m]; residual: |K(end) - K(start)| / K(start) of the last shooting step; iterations.
+    torque [N*m]; residual: |K(end) - K(start)| / K(start) of the last shooting step, or for a machine solved by
+    Fourier collocation (:mod:`machdyn.dynamics.periodic`) the relative amplitude of the upper half of the
+    resolved spectrum of K (its truncation error); iterations: shooting steps (0 for collocation).
     """
 
     machine: EquivalentMachine
@@ -268,7 +274,8 @@ def balance_speed(machine: EquivalentMachine, drive, n: int, grid: np.ndarray) -
         raise NotSettledError("The drive's torque exceeds the load at every speed up to "
                               f"{float(np.max(hi)):.3g} rad/s: the machine would run away; there is no steady state.")
     scan = np.linspace(0.0, 1.0, 129)[:, None] * hi[None, :]
-    values = np.array([surplus(w) for w in scan])
+    # without speed-dependent point forces the surplus is elementwise in the speed: the whole scan in one call
+    values = surplus(scan) if not machine.forces else np.array([surplus(w) for w in scan])
     lo = np.zeros(n)
     up = hi.copy()
     for i in range(n):
@@ -347,13 +354,18 @@ def steady_state(
 
     if not model.speed_dependent:
         k0 = _neutral_start(model, machine, drive, n, grid, mean_speed, rtol)
-        iterations = 0
+        iterations, spectral = 0, None
     else:
         w_bar = balance_speed(machine, drive, n, grid[:-1])
         if np.any(~np.isfinite(w_bar)):
             raise InputError("The drive cannot carry the load of the machine at any speed: "
                              + _stall_message(machine, drive, n, w_bar, grid[:-1]) + ".")
         k0 = 0.5 * j0 * w_bar**2
+        spectral = None
+        if model.fast and model.extra is None and grid.size - 1 == machine.inertia.x.size:
+            from .periodic import collocation_steady
+
+            spectral = collocation_steady(model, n, grid[:-1], w_bar, tolerance)
         # LSODA: Adams steps (about half the evaluations of DOP853 at these tolerances on this smooth equation),
         # switching to BDF by itself where a steep drive characteristic makes the equation stiff
         method = "LSODA"
@@ -362,6 +374,8 @@ def steady_state(
         # tightens with the residual, and the cycle is sampled once the next step will be the last
         near, loose = False, 1e-7
         for step_number in range(1, max_iterations + 1):
+            if spectral is not None:
+                break
             iterations = step_number
             y0 = np.concatenate([k0, np.zeros(n), np.ones(n)])
             sol = _solve(solve_ivp, lambda p, y: model.energy_rhs(p, y), (phi0, phi0 + period), y0,
@@ -379,15 +393,18 @@ def steady_state(
             raise NotSettledError(
                 f"The periodic steady state was not found in {max_iterations} shooting steps: the energy at the start "
                 f"of the cycle still changes by {float(np.max(np.abs(res) / k0)):.3g} (relative) per cycle.")
-    if iterations == 0:
-        y0 = np.concatenate([k0, np.zeros(n)])
-        sol = _solve(solve_ivp, lambda p, y: model.energy_rhs(p, y, False), (phi0, phi0 + period), y0, rtol,
-                     model, n, machine, drive, grid, t_eval=grid)
-    k, time = sol.y[:n], sol.y[n:2 * n]
-    residual = np.abs(k[:, -1] - k[:, 0]) / k[:, 0]
-    period_time = time[:, -1]
     phi = grid[:-1]
-    k, time = k[:, :-1], time[:, :-1]
+    if spectral is not None:
+        k, time, period_time, residual = spectral
+    else:
+        if iterations == 0:
+            y0 = np.concatenate([k0, np.zeros(n)])
+            sol = _solve(solve_ivp, lambda p, y: model.energy_rhs(p, y, False), (phi0, phi0 + period), y0, rtol,
+                         model, n, machine, drive, grid, t_eval=grid)
+        k, time = sol.y[:n], sol.y[n:2 * n]
+        residual = np.abs(k[:, -1] - k[:, 0]) / k[:, 0]
+        period_time = time[:, -1]
+        k, time = k[:, :-1], time[:, :-1]
     q = np.broadcast_to(phi, (n, phi.size))
     j, dj = model.inertia(q)
     j = np.broadcast_to(j, q.shape)
@@ -465,6 +482,13 @@ def _neutral_start(model, machine, drive, n, grid, mean_speed, rtol):
             w = np.sqrt(2.0 * (k + work[i]) / j[i])
             return 0.5 * (w.max() + w.min()) - mean_speed
 
+        if mid(lowest) > 0:
+            # even the least energy that keeps the crank turning gives a faster mean: the machine cannot run
+            # through the cycle at mean_speed (it would stop and swing back)
+            raise InputError(
+                f"mean_speed: the machine cannot turn through its cycle at a mean speed of {mean_speed:g} rad/s; "
+                f"at that speed it stops at some crank angle (the lowest mean speed that passes the cycle is "
+                f"{mid(lowest) + mean_speed:.6g} rad/s). Add a flywheel or raise the mean speed.")
         hi = max(lowest, 1.0) * 2.0
         while mid(hi) < 0:
             hi *= 2.0

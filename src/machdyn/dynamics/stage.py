@@ -31,16 +31,16 @@ class MotorTable(Spec):
     rated_power: Power | None = None
     rated_speed: AngularVelocity | None = None
     synchronous_speed: AngularVelocity = 50.0 * np.pi  # 1500 rpm
-    breakdown_ratio: float = Field(2.5, gt=1.0)
-    rated_slip: float = Field(0.04, gt=0.0, lt=1.0)
-    ratio: float | None = Field(None, gt=0.0)
-    efficiency: float = Field(1.0, gt=0.0, le=1.0)
+    breakdown_ratio: float = Field(2.5, gt=1.0, allow_inf_nan=False)
+    rated_slip: float = Field(0.04, gt=0.0, lt=1.0, allow_inf_nan=False)
+    ratio: float | None = Field(None, gt=0.0, allow_inf_nan=False)
+    efficiency: float = Field(1.0, gt=0.0, le=1.0, allow_inf_nan=False)
     rotor_inertia: Inertia = 0.0
     displacement: Displacement | None = None
     flow: Flow | None = None
     pressure_limit: Pressure | None = None
-    volumetric_efficiency: float = Field(0.95, gt=0.0, lt=1.0)
-    mechanical_efficiency: float = Field(0.9, gt=0.0, le=1.0)
+    volumetric_efficiency: float = Field(0.95, gt=0.0, lt=1.0, allow_inf_nan=False)
+    mechanical_efficiency: float = Field(0.9, gt=0.0, le=1.0, allow_inf_nan=False)
 
     @model_validator(mode="after")
     def _complete(self):
@@ -76,14 +76,15 @@ class DamperTable(Spec):
 class FlywheelTable(Spec):
     """``[flywheel]``: either ``delta`` (the coefficient of speed fluctuation to size for) or ``inertia``."""
 
-    delta: float | None = Field(None, gt=0.0, lt=1.0)
+    delta: float | None = Field(None, gt=0.0, lt=1.0, allow_inf_nan=False)
     inertia: Inertia | None = None
     method: Literal["exact", "classic"] = "exact"
-    speed_ratio: float = Field(1.0, gt=0.0)  # flywheel shaft speed / crank speed (a flywheel on a faster shaft)
+    # flywheel shaft speed / crank speed (a flywheel on a faster shaft)
+    speed_ratio: float = Field(1.0, gt=0.0, allow_inf_nan=False)
     positions: int = Field(720, ge=16, le=100_000, strict=True)
     shape: Literal["disc", "rim"] = "disc"
-    width_ratio: float = Field(0.2, gt=0.0)
-    width_to_thickness: float = Field(2.0, gt=0.0)
+    width_ratio: float = Field(0.2, gt=0.0, allow_inf_nan=False)
+    width_to_thickness: float = Field(2.0, gt=0.0, allow_inf_nan=False)
     density: Density = 7850.0
     allowable_stress: Stress = 100e6
     rim_speed_limit: Speed | None = None
