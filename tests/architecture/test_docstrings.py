@@ -12,6 +12,7 @@ import pytest
 
 COVERED_MODULES = (
     "machdyn.linkage.averages",
+    "machdyn.linkage.dyads",
     "machdyn.linkage.effort",
     "machdyn.linkage.energy",
     "machdyn.linkage.extremes",
@@ -22,6 +23,8 @@ COVERED_MODULES = (
     "machdyn.linkage.mass_centre",
     "machdyn.machines.compactor",
     "machdyn.machines.rotary_screen.formulas",
+    "machdyn.machines.rotary_screen.ratio",
+    "machdyn.machines.rotary_screen.slider",
     "machdyn.units",
 )
 
