@@ -73,7 +73,33 @@ def parse_quantity(value: str | float | int, unit: str, *, field: str = "value")
     """Convert ``value`` (a string such as ``"45 mm"`` or a bare number already in ``unit``) to a float in ``unit``.
 
     Raises :class:`~machdyn.errors.InputError` naming ``field`` when the text is not a quantity, when its
-    dimension does not match ``unit`` (a mass given in mm), or when it is NaN or infinite.
+    dimension does not match ``unit`` (a mass given in mm), or when it is NaN or infinite. Conversion factors are
+    pint's (SI brochure, BIPM, 9th edition).
+
+    Parameters
+    ----------
+    value : str or float or int
+        A quantity with its unit, e.g. ``"45 mm"``; a bare number only where ``unit`` is dimensionless.
+    unit : str
+        Target unit, e.g. ``"m"`` (``""`` for a pure number).
+    field : str
+        Name of the input, used in error messages.
+
+    Returns
+    -------
+    float
+        The magnitude in ``unit``, finite and within ``MAX_MAGNITUDE``.
+
+    Examples
+    --------
+    >>> parse_quantity("45 mm", "m")
+    0.045
+    >>> round(parse_quantity("300 rpm", "rad/s"), 6)
+    31.415927
+    >>> parse_quantity("45 kg", "m", field="crank radius")
+    Traceback (most recent call last):
+        ...
+    machdyn.errors.InputError: The crank radius must be in units of [length] (like m); got '45 kg', which is [mass].
     """
     target = _unit(unit) if unit else ureg.dimensionless
     if isinstance(value, bool):
@@ -125,11 +151,51 @@ def _describe(unit) -> str:
 
 
 def convert(value: float, from_unit: str, to_unit: str) -> float:
-    """Convert a float between two units (used by reports to show SI results in the user's units)."""
+    """Convert a float between two units (used by reports to show SI results in the user's units).
+
+    Parameters
+    ----------
+    value : float
+        Magnitude in ``from_unit``.
+    from_unit : str
+        Unit of ``value``, e.g. ``"rad/s"``.
+    to_unit : str
+        Target unit of the same dimension, e.g. ``"rpm"``.
+
+    Returns
+    -------
+    float
+        The magnitude in ``to_unit``.
+
+    Examples
+    --------
+    >>> round(convert(31.41592653589793, "rad/s", "rpm"), 6)
+    300.0
+    """
     return float(Q_(value, from_unit).to(to_unit).magnitude)
 
 
 def format_quantity(value: float, unit: str, digits: int = 4) -> str:
-    """Format ``value`` (already in ``unit``) with ``digits`` significant digits and its unit symbol."""
+    """Format ``value`` (already in ``unit``) with ``digits`` significant digits and its unit symbol.
+
+    Parameters
+    ----------
+    value : float
+        Magnitude in ``unit``.
+    unit : str
+        Unit of ``value`` (``""`` for a pure number).
+    digits : int
+        Significant digits [-].
+
+    Returns
+    -------
+    str
+        The value and its unit symbol.
+
+    Examples
+    --------
+    >>> format_quantity(0.045, "m")
+    '0.045 m'
+    """
     symbol = f"{_unit(unit):~P}" if unit else ""
     return f"{value:.{digits}g} {symbol}".strip()

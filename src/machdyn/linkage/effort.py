@@ -177,6 +177,12 @@ def piston_effort(forces: Forces, slider: str | None = None) -> PistonEffort:
     slider : str, optional
         The slider body; needed only when the mechanism has several link-and-slider (RRP) groups.
 
+    Returns
+    -------
+    PistonEffort
+        The slider's name; along_stroke F_P [N] (positive towards the crank side), normal side thrust F_N [N]
+        and rod_thrust F_Q [N], shaped like the crank angles.
+
     Raises
     ------
     InputError

@@ -36,9 +36,32 @@ def _four_bar_lengths(mech: Mechanism):
 
 
 def grashof_type(mech: Mechanism):
-    """Grashof type of a four-bar: 'crank-rocker', 'double-crank', 'rocker-crank', 'Grashof double-rocker',
-    'change-point' or 'non-Grashof triple-rocker' (Norton, §2.12: s + l vs p + q, and which link is shortest).
-    None if ``mech`` is not a four-bar; an array of names for design variants."""
+    """Grashof type of a four-bar (Norton, *Design of Machinery*, 5th ed., §2.12).
+
+    With s the shortest, l the longest and p, q the other links: s + l < p + q is a Grashof linkage whose type
+    follows from which link is shortest (crank: crank-rocker; ground: double-crank; coupler: Grashof
+    double-rocker; rocker: rocker-crank), s + l = p + q a change-point linkage, s + l > p + q a non-Grashof
+    triple-rocker.
+
+    Parameters
+    ----------
+    mech : Mechanism
+        A mechanism [link lengths in m]; only a four-bar (one RRR group from the crank to the ground) is classed.
+
+    Returns
+    -------
+    str or numpy.ndarray or None
+        'crank-rocker', 'double-crank', 'rocker-crank', 'Grashof double-rocker', 'change-point' or
+        'non-Grashof triple-rocker'; an array of names for design variants; None if ``mech`` is not a four-bar.
+
+    Examples
+    --------
+    >>> from machdyn.linkage import four_bar
+    >>> grashof_type(four_bar(0.02, 0.08, 0.07, 0.09))
+    'crank-rocker'
+    >>> grashof_type(four_bar(0.05, 0.05, 0.05, 0.05))
+    'change-point'
+    """
     lengths = _four_bar_lengths(mech)
     if lengths is None:
         return None

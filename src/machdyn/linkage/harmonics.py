@@ -25,10 +25,35 @@ class Harmonics:
 
 
 def harmonics(values, crank_angle, orders: int = 6) -> Harmonics:
-    """Harmonic orders 1..``orders`` of ``values`` sampled at ``crank_angle`` [rad] (the last axis).
+    """Harmonic orders 1..``orders`` of ``values`` sampled at ``crank_angle`` (the last axis).
 
-    The crank angles must be evenly spaced over exactly one revolution without repeating the first angle
-    (as :func:`~machdyn.linkage.kinematics.crank_angles` makes them), and ``orders`` < N/2.
+    value(φ) = mean + Σ_k A_k cos(kφ + ψ_k), from the discrete Fourier transform of N samples evenly spaced over
+    one revolution, exact for trigonometric polynomials of degree < N/2 (Oppenheim & Schafer,
+    *Discrete-Time Signal Processing*, 3rd ed., §8.1).
+
+    Parameters
+    ----------
+    values : array
+        Samples, the last axis along the crank angles [any unit].
+    crank_angle : array
+        Crank angles [rad], evenly spaced over exactly one revolution without repeating the first angle
+        (as :func:`~machdyn.linkage.kinematics.crank_angles` makes them); at least 4.
+    orders : int
+        Highest order [-], 1 ≤ orders < N/2.
+
+    Returns
+    -------
+    Harmonics
+        orders [-], mean and amplitude A_k [unit of values], phase ψ_k [rad].
+
+    Examples
+    --------
+    >>> phi = np.arange(360) * (2.0 * np.pi / 360)
+    >>> h = harmonics(3.0 + 2.0 * np.cos(2.0 * phi + 0.5), phi, orders=3)
+    >>> h.orders, float(h.mean)
+    (array([1, 2, 3]), 3.0)
+    >>> np.round(h.amplitude, 12), np.round(h.phase, 12)
+    (array([0., 2., 0.]), array([0. , 0.5, 0. ]))
     """
     phi = np.asarray(crank_angle, dtype=float)
     y = np.asarray(values, dtype=float)

@@ -58,6 +58,12 @@ def mass_centre(kin: Kinematics) -> MassCentre:
     kin : Kinematics
         The result of :func:`~machdyn.linkage.kinematics.kinematics` (one design or many).
 
+    Returns
+    -------
+    MassCentre
+        Total mass M [kg]; position x, y [m], velocity vx, vy [m/s] and acceleration ax, ay [m/s²] of the
+        centre of mass, shaped like the crank angles (designs first).
+
     Raises
     ------
     InputError

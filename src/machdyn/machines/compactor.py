@@ -59,17 +59,44 @@ def _check_geometry(r, l, h, R):
 def closed_form(phi, r, l, h, R, omega1=1.0, branch=-1):
     """Exact position, velocity and acceleration of the compactor four-bar (repro 003.2; seed 003 eqs 2-12).
 
-    Position (solution of eq 7): d = C - A, a = (l^2 - R^2 + d^2) / (2 d), eta = sqrt(l^2 - a^2),
-    B = A + a u + sigma eta n (u = d/|d|, n = u turned +90 deg). Velocities (omega1 constant):
-    omega2 = -r omega1 sin(phi - theta3) / (l sin(theta2 - theta3)),
-    omega3 = r omega1 sin(phi - theta2) / (R sin(theta3 - theta2)); accelerations
-    eps2 = [R omega3^2 - r omega1^2 cos(phi - theta3) - l omega2^2 cos(theta2 - theta3)] / (l sin(theta2 - theta3)),
-    eps3 = [r omega1^2 cos(phi - theta2) + l omega2^2 - R omega3^2 cos(theta3 - theta2)] / (R sin(theta3 - theta2)).
+    Position (solution of eq 7): d = C − A, a = (l² − R² + d²) / (2d), η = √(l² − a²),
+    B = A + a u + σ η n (u = d/|d|, n = u turned +90°). Velocities (ω1 constant):
+    ω2 = −r ω1 sin(φ − θ3) / (l sin(θ2 − θ3)), ω3 = r ω1 sin(φ − θ2) / (R sin(θ3 − θ2)); accelerations
+    ε2 = [R ω3² − r ω1² cos(φ − θ3) − l ω2² cos(θ2 − θ3)] / (l sin(θ2 − θ3)),
+    ε3 = [r ω1² cos(φ − θ2) + l ω2² − R ω3² cos(θ3 − θ2)] / (R sin(θ3 − θ2)).
 
-    Parameters: phi crank angle [rad]; r crank radius [m] > 0; l plate length = horizontal pivot distance [m]
-    > 0; h pivot height [m]; R pendulum length [m] > 0; omega1 crank speed [rad/s]; branch sigma = +1 or -1.
-    Valid where |l - R| <= |C - A| <= l + R (assembly) and away from sin(theta2 - theta3) = 0 (dead positions).
-    Returns a dict of arrays: xA, yA, xB, yB, theta2, theta3, omega2, omega3, eps2, eps3.
+    Parameters
+    ----------
+    phi : float or array
+        Crank angle φ [rad].
+    r : float
+        Crank radius [m], > 0.
+    l : float
+        Plate length = horizontal pivot distance [m], > 0.
+    h : float
+        Pivot height [m].
+    R : float
+        Pendulum length [m], > 0.
+    omega1 : float
+        Constant crank speed ω1 [rad/s].
+    branch : int
+        Assembly branch σ [-], +1 or −1.
+
+    Returns
+    -------
+    dict of arrays
+        xA, yA, xB, yB [m]; theta2, theta3 [rad]; omega2, omega3 [rad/s]; eps2, eps3 [rad/s²].
+        Valid where |l − R| ≤ |C − A| ≤ l + R (assembly) and away from sin(θ2 − θ3) = 0 (dead positions).
+
+    Examples
+    --------
+    The illustrative geometry of repro 003.2 at φ = 60°:
+
+    >>> k = closed_form(np.radians(60.0), 0.03, 0.5, 0.25, 0.25, omega1=10.0)
+    >>> round(float(k["theta2"]), 6), round(float(k["theta3"]), 6)
+    (-0.05116, -1.513382)
+    >>> round(float(k["omega2"]), 6), round(float(k["eps3"]), 6)
+    (-0.331274, -5.587902)
     """
     _check_geometry(r, l, h, R)
     if branch not in (1, -1):
@@ -101,15 +128,33 @@ def closed_form(phi, r, l, h, R, omega1=1.0, branch=-1):
 
 
 def plate_angles(phi, theta2, theta3):
-    """Corrected seed 003 eqs 8-10: (alpha, beta, gamma) [rad] from the link directions (repro 003.3).
+    """Corrected seed 003 eqs 8-10: (α, β, γ) from the link directions (repro 003.3).
 
-    alpha = theta2 - phi (crank to plate), beta = theta3 - theta2 (plate to pendulum), both reduced to
-    (-pi, pi]; gamma = theta2 reduced to (-pi, pi] (plate to the horizontal, positive when B is above A).
+    α = θ2 − φ (crank to plate), β = θ3 − θ2 (plate to pendulum), both reduced to (−π, π];
+    γ = θ2 reduced to (−π, π] (plate to the horizontal, positive when B is above A).
     The printed eqs 8-9 put the *product* of the two slopes in the numerator (the angle between two lines is
-    arctan|(m1 - m2)/(1 + m1 m2)|, :func:`line_angle`), and even corrected they return only acute angles, lose
-    the orientation and divide by zero at phi = 90 deg, 270 deg and at alpha = 90 deg; atan2 has none of this.
+    arctan|(m1 − m2)/(1 + m1 m2)|, :func:`line_angle`), and even corrected they return only acute angles, lose
+    the orientation and divide by zero at φ = 90°, 270° and at α = 90°; atan2 has none of this.
 
-    Parameters: phi crank angle [rad]; theta2 plate direction A->B [rad]; theta3 pendulum direction C->B [rad].
+    Parameters
+    ----------
+    phi : float or array
+        Crank angle φ [rad].
+    theta2 : float or array
+        Plate direction A→B [rad].
+    theta3 : float or array
+        Pendulum direction C→B [rad].
+
+    Returns
+    -------
+    tuple of arrays
+        (α, β, γ) [rad], each in (−π, π].
+
+    Examples
+    --------
+    >>> k = closed_form(np.radians(60.0), 0.03, 0.5, 0.25, 0.25)
+    >>> [round(float(np.degrees(x)), 2) for x in plate_angles(np.radians(60.0), k["theta2"], k["theta3"])]
+    [-62.93, -83.78, -2.93]
     """
     for label, v in (("phi", phi), ("theta2", theta2), ("theta3", theta3)):
         check_finite(f"angle {label}", v, "rad")
@@ -117,28 +162,70 @@ def plate_angles(phi, theta2, theta3):
 
 
 def line_angle(m1, m2):
-    """Acute angle [rad] between two lines of slopes m1, m2: arctan|(m1 - m2) / (1 + m1 m2)|.
+    """Acute angle between two lines of slopes m1, m2: arctan|(m1 − m2) / (1 + m1 m2)|.
 
-    The textbook form that seed 003 eqs 8-9 intend. Undefined for vertical lines and at 1 + m1 m2 = 0.
+    The analytic-geometry form that seed 003 eqs 8-9 intend.
+
+    Parameters
+    ----------
+    m1, m2 : float or array
+        Slopes of the two lines [-]; undefined for vertical lines and at 1 + m1 m2 = 0.
+
+    Returns
+    -------
+    float or array
+        The acute angle [rad], in [0, π/2).
+
+    Examples
+    --------
+    >>> round(float(np.degrees(line_angle(1.0, 0.0))), 6)
+    45.0
     """
     m1, m2 = np.asarray(m1, dtype=float), np.asarray(m2, dtype=float)
     return np.arctan(np.abs((m1 - m2) / (1.0 + m1 * m2)))
 
 
 def line_angle_printed(m1, m2):
-    """Seed 003 eqs 8-9 as extracted (wrong): arctan|m1 m2 / (1 + m1 m2)| [rad]. Kept to document the error;
-    at the illustrative geometry and phi = 60 deg it gives 5.56 deg where the crank-plate angle is 62.93 deg."""
+    """Seed 003 eqs 8-9 as extracted (wrong): arctan|m1 m2 / (1 + m1 m2)|.
+
+    Kept to document the error; at the illustrative geometry and φ = 60° it gives 5.56° where the crank-plate
+    angle is 62.93°.
+
+    Parameters
+    ----------
+    m1, m2 : float or array
+        Slopes of the two lines [-].
+
+    Returns
+    -------
+    float or array
+        The printed expression [rad].
+
+    Examples
+    --------
+    >>> round(float(np.degrees(line_angle_printed(1.0, 0.5))), 6)
+    18.434949
+    """
     m1, m2 = np.asarray(m1, dtype=float), np.asarray(m2, dtype=float)
     return np.arctan(np.abs(m1 * m2 / (1.0 + m1 * m2)))
 
 
 def force_gain_crank(alpha):
-    """Seed 003 force gain k1 = 1 / cos alpha [-] (eq 1 and Fig. 3b).
+    """Seed 003 force gain k1 = 1 / cos α (eq 1 and Fig. 3b).
 
     Exact meaning (repro 003.3): by virtual work, a crank force P tangential at A (P = driving torque / r)
-    balances a force P / cos alpha **normal to the plate at A** (V_A . n_plate = r omega1 cos alpha). It is not
-    the force along the plate (that would be P / sin alpha). alpha [rad], |alpha| != 90 deg.
-    Returns 1/cos alpha (negative when the plate's normal opposes the crank's tangent).
+    balances a force P / cos α **normal to the plate at A** (V_A · n_plate = r ω1 cos α). It is not
+    the force along the plate (that would be P / sin α).
+
+    Parameters
+    ----------
+    alpha : float or array
+        Crank-plate angle α [rad], |α| ≠ 90°.
+
+    Returns
+    -------
+    float or array
+        k1 [-], negative when the plate's normal opposes the crank's tangent.
 
     Examples
     --------
@@ -150,11 +237,22 @@ def force_gain_crank(alpha):
 
 
 def force_gain_lever(l, a):
-    """Seed 003 force gain k2 = l / a [-] of the "Archimedes lever" (eq 1).
+    """Seed 003 force gain k2 = l / a of the "Archimedes lever" (eq 1).
 
     The plate is a lever with its fulcrum at B (supported by the near-vertical pendulum): a force at A
-    (distance l from B) gives l/a times that force at a particle a distance a from B. Parameters: l plate length
-    [m] > 0; a distance of the particle from B along the plate [m], 0 < a <= l.
+    (distance l from B) gives l/a times that force at a particle a distance a from B.
+
+    Parameters
+    ----------
+    l : float
+        Plate length [m], > 0.
+    a : float or array
+        Distance of the particle from B along the plate [m], 0 < a ≤ l.
+
+    Returns
+    -------
+    float or array
+        k2 [-], ≥ 1.
 
     Examples
     --------
@@ -169,10 +267,23 @@ def force_gain_lever(l, a):
 
 
 def plate_normal_force(driving_torque, r, alpha):
-    """Force normal to the plate at A [N] that a driving torque balances: F_n = (M / r) k1 = M / (r cos alpha).
+    """Force normal to the plate at A that a driving torque balances: F_n = (M / r) k1 = M / (r cos α).
 
-    Virtual work on a massless mechanism (repro 003.3). Parameters: driving torque M [N m]; r crank radius [m]
-    > 0; alpha crank-plate angle [rad].
+    Virtual work on a massless mechanism (seed 003 eq 1, repro 003.3).
+
+    Parameters
+    ----------
+    driving_torque : float or array
+        Driving torque M [N m].
+    r : float
+        Crank radius [m], > 0.
+    alpha : float or array
+        Crank-plate angle α [rad], |α| ≠ 90°.
+
+    Returns
+    -------
+    float or array
+        F_n [N].
 
     Examples
     --------
@@ -184,9 +295,21 @@ def plate_normal_force(driving_torque, r, alpha):
 
 
 def transmission_angle(theta2, theta3):
-    """Transmission angle [rad] between plate and pendulum, |theta2 - theta3| folded into 0 ... pi.
+    """Transmission angle between plate and pendulum, |θ2 − θ3| folded into 0 … π.
 
-    theta2, theta3 [rad]. For the illustrative geometry it stays within 82.5 ... 97.9 deg (repro 003.2).
+    For the illustrative geometry it stays within 82.5 … 97.9° (repro 003.2).
+
+    Parameters
+    ----------
+    theta2 : float or array
+        Plate direction A→B [rad].
+    theta3 : float or array
+        Pendulum direction C→B [rad].
+
+    Returns
+    -------
+    float or array
+        Transmission angle [rad], in [0, π].
 
     Examples
     --------
@@ -197,12 +320,43 @@ def transmission_angle(theta2, theta3):
 
 
 def reduced_inertia_eq18(omega1, I1, m2, v2, I2, omega2, m3, v3, I3, omega3):
-    """Seed 003 eq 18: I_red = I1 + m2 (V2/w1)^2 + I2 (w2/w1)^2 + m3 (V3/w1)^2 + I3 (w3/w1)^2 [kg m^2].
+    """Seed 003 eq 18: I_red = I1 + m2 (V2/ω1)² + I2 (ω2/ω1)² + m3 (V3/ω1)² + I3 (ω3/ω1)².
 
     Correct if I1 is about the crank pivot O, I2, I3 are centroidal and V2, V3 are centroid speeds (repro 003.3;
-    it equals 2 KE / omega1^2). The paper writes G2/g, G3/g: G are weights there, although listed as "mass".
-    Parameters: omega1 [rad/s] != 0; I1, I2, I3 [kg m^2] >= 0; m2, m3 [kg] >= 0; v2, v3 centroid speeds [m/s];
-    omega2, omega3 [rad/s].
+    it equals 2 KE / ω1²). The paper writes G2/g, G3/g: G are weights there, although listed as "mass".
+
+    Parameters
+    ----------
+    omega1 : float or array
+        Crank speed [rad/s], ≠ 0.
+    I1 : float
+        Crank inertia about O [kg m²], ≥ 0.
+    m2 : float
+        Plate mass [kg], ≥ 0.
+    v2 : float or array
+        Plate centroid speed [m/s].
+    I2 : float
+        Plate centroidal inertia [kg m²], ≥ 0.
+    omega2 : float or array
+        Plate angular velocity [rad/s].
+    m3 : float
+        Pendulum mass [kg], ≥ 0.
+    v3 : float or array
+        Pendulum centroid speed [m/s].
+    I3 : float
+        Pendulum centroidal inertia [kg m²], ≥ 0.
+    omega3 : float or array
+        Pendulum angular velocity [rad/s].
+
+    Returns
+    -------
+    float or array
+        I_red [kg m²].
+
+    Examples
+    --------
+    >>> round(float(reduced_inertia_eq18(10.0, 0.01, 5.0, 0.2, 0.1, -0.5, 3.0, 0.1, 0.05, 0.8)), 6)
+    0.01287
     """
     if np.any(np.asarray(omega1) == 0):
         raise InputError("The crank speed omega1 must be non-zero for a reduced inertia; got 0 rad/s.")
@@ -211,14 +365,28 @@ def reduced_inertia_eq18(omega1, I1, m2, v2, I2, omega2, m3, v3, I3, omega3):
 
 
 def reduced_moment(omega1, loads):
-    """Corrected seed 003 eq 19: M_red = sum(F . V_F) / omega1 [N m] (repro 003.3).
+    """Corrected seed 003 eq 19: M_red = Σ(F · V_F) / ω1 (repro 003.3).
 
     Every force is taken with the velocity of **its own point of application**: the compaction force Q with
     the velocity of the plate point where it acts, each weight G_i with its centroid's velocity, the crank's
     weight G1 included (eq 19 omits it, which is right only if the crank's centroid is at O).
 
-    Parameters: omega1 crank speed [rad/s] != 0; loads: iterable of ((Fx, Fy) [N], (Vx, Vy) [m/s]) pairs.
-    Positive M_red = the loads drive the crank.
+    Parameters
+    ----------
+    omega1 : float or array
+        Crank speed [rad/s], ≠ 0.
+    loads : iterable
+        ((Fx, Fy) [N], (Vx, Vy) [m/s]) pairs: each force with the velocity of its point of application.
+
+    Returns
+    -------
+    float or array
+        M_red [N m]; positive when the loads drive the crank.
+
+    Examples
+    --------
+    >>> round(float(reduced_moment(10.0, [((0.0, -49.0), (0.1, -0.2)), ((0.0, -2000.0), (0.05, 0.03))])), 6)
+    -5.02
     """
     if np.any(np.asarray(omega1) == 0):
         raise InputError("The crank speed omega1 must be non-zero for a reduced moment; got 0 rad/s.")
@@ -229,12 +397,31 @@ def reduced_moment(omega1, loads):
 
 
 def reduced_moment_eq19_printed(omega1, g2, v2, q, g3, v3):
-    """Seed 003 eq 19 as printed (wrong): M = (G2 . V2 + Q . V2 + G3 . V3) / omega1 [N m].
+    """Seed 003 eq 19 as printed (wrong): M = (G2 · V2 + Q · V2 + G3 · V3) / ω1.
 
     It takes the compaction force Q with the plate-centroid velocity V2 instead of the velocity of Q's point of
     application and omits the crank weight G1. With the assumed data of repro 003.3 (Q = 2000 N vertical at
-    0.10 m from B) it gives 24.01 N m at phi = 0 where the correct value is 6.02 N m.
-    Parameters: omega1 [rad/s]; g2, q, g3 force vectors (Fx, Fy) [N]; v2, v3 centroid velocities (Vx, Vy) [m/s].
+    0.10 m from B) it gives 24.01 N m at φ = 0 where the correct value is 6.02 N m.
+
+    Parameters
+    ----------
+    omega1 : float
+        Crank speed [rad/s], ≠ 0.
+    g2, q, g3 : tuple of float
+        Plate weight, compaction force, pendulum weight (Fx, Fy) [N].
+    v2, v3 : tuple of float
+        Plate and pendulum centroid velocities (Vx, Vy) [m/s].
+
+    Returns
+    -------
+    float or array
+        The printed M [N m]; kept to document the error, use :func:`reduced_moment`.
+
+    Examples
+    --------
+    >>> round(float(reduced_moment_eq19_printed(10.0, (0.0, -49.0), (0.1, -0.2), (0.0, -2000.0),
+    ...                                         (0.0, -29.4), (0.05, 0.03))), 6)
+    40.8918
     """
     return reduced_moment(omega1, [(g2, v2), (q, v2), (g3, v3)])
 
