@@ -9,6 +9,7 @@ from hypothesis import strategies as st
 
 from machdyn.errors import InputError
 from machdyn.vibration import (
+    Record,
     analyse_record,
     band_limit,
     compare_records,
@@ -151,3 +152,11 @@ def test_record_file_errors(tmp_path):
         read_record(p, max_bytes=10)
     with pytest.raises(InputError, match="band must satisfy"):
         band_limit(np.zeros(100), 100.0, (20.0, 10.0))
+
+
+def test_a_constant_channel_is_refused_not_judged_as_zero_vibration():
+    # A dead or saturated sensor gives a constant channel; band-limited it reads 0 mm/s (zone A "good").
+    t = np.arange(N) / FS
+    record = Record(t, {"front": np.full(N, 9.81)}, {"front": "acceleration"}, FS, "dead.csv")
+    with pytest.raises(InputError, match=r"channel 'front' of dead.csv is constant"):
+        analyse_record(record)

@@ -422,6 +422,10 @@ def analyse_record(record: Record, band=DEFAULT_BAND, *, crank_speed: float | No
         if name not in record.channels:
             raise InputError(f"No channel '{name}' in {record.source}; channels: {', '.join(record.channels)}.")
         x = record.channels[name]
+        # A constant channel (a disconnected, dead or saturated sensor) would read 0 mm/s, i.e. zone A "good".
+        if np.ptp(x) == 0:
+            raise InputError(f"The channel '{name}' of {record.source} is constant ({x[0]:g} in SI units) over "
+                             f"all {x.size} samples; a dead, disconnected or saturated sensor cannot be judged.")
         if record.quantities[name] == "acceleration":
             measured = band_limit(x, fs, band)
             velocity = integrate_to_velocity(x, fs, band)
