@@ -191,3 +191,12 @@ def test_welch_spectrum_integrates_to_the_variance():
     x = _periodic_band_random(30.0, 600.0, FS, 8 * N, 5) + 0.3  # the offset is not vibration
     f, p = welch_spectrum(x, FS)
     assert np.trapezoid(p, f) == pytest.approx(np.var(x), rel=2e-2)
+
+
+def test_duplicate_time_stamps_are_named_with_their_row(tmp_path):
+    t = np.arange(N) / FS
+    t = np.insert(t, 10, t[9])  # the sample at row 10 written twice
+    path = tmp_path / "dup.csv"
+    path.write_text("time [s],front [m/s^2]\n" + "\n".join(f"{a:.10g},{np.sin(a):.10g}" for a in t))
+    with pytest.raises(InputError, match=r"must increase strictly: row 11 .* does not follow row 10 .*duplicate"):
+        read_record(path)
