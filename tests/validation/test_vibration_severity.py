@@ -57,3 +57,16 @@ def test_seed_002_reduction_from_two_records(tmp_path):
     after = analyse_record(read_record(tmp_path / "after.csv"))
     assert before.mean_velocity_rms == pytest.approx(5.129e-3, rel=1e-9)
     assert compare_records(before, after)["mean"] == pytest.approx(30.8637, abs=5e-5)
+
+
+@pytest.mark.parametrize(("machine_class", "published"), [
+    ("I", (0.71, 1.80, 4.5)), ("II", (1.12, 2.80, 7.10)), ("III", (1.80, 4.50, 11.20)), ("IV", (2.80, 7.10, 18.00)),
+])
+def test_class_boundaries_match_a_second_public_transcription(machine_class, published):
+    # Extech 407860 vibration meter, Product Manual V2.3 (7/09), Appendix A "Machinery Classification", p. 10
+    # (https://www.manualshelf.com/manual/extech/407860/product-manual-english/page-10.html): the ISO 2372 /
+    # VDI 2056 groups K, M, G, T (= classes I-IV) with the limits good / acceptable / permissible / dangerous in
+    # mm/s. The numbers are exact R10-series values, so they are compared to 1e-12.
+    for standard in ("ISO 2372", "ISO 10816-1"):
+        mm_s = [b * 1e3 for b in zone_boundaries(machine_class, standard)]
+        assert mm_s == pytest.approx(published, rel=1e-12)

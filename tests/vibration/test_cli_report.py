@@ -141,3 +141,18 @@ def test_variant_on_a_rotary_screen_is_checked_too(tmp_path):
     result = CliRunner().invoke(app, ["check", str(path)])
     assert result.exit_code == 2
     assert "frame.after.counterweights[0].body" in result.output and "no body 'flywheel'" in result.output
+
+
+def test_records_with_different_channels_before_and_after_run_and_report(tmp_path):
+    # A before record with only one of the after record's channels: the zone chart places each level by its
+    # channel name instead of assuming the same channels in the same order.
+    src = ROOT / "examples" / "signals" / "tamper_before.csv"
+    lines = [ln for ln in src.read_text().splitlines() if not ln.startswith("#")]
+    (tmp_path / "centre_only.csv").write_text("\n".join(",".join(ln.split(",")[:2]) for ln in lines) + "\n")
+    path = _variant(tmp_path, 'record = "machdyn:examples/signals/tamper_before.csv"',
+                    f'record = "{(tmp_path / "centre_only.csv").as_posix()}"')
+    result = CliRunner().invoke(app, ["run", str(path), "--out", str(tmp_path / "o")])
+    assert result.exit_code == 0, result.output
+    scalars = json.loads((tmp_path / "o" / "results.json").read_text())["scalars"]
+    assert "signals.mean_reduction" in scalars
+    assert "Measured vibration" in (tmp_path / "o" / "report.html").read_text()

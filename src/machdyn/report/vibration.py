@@ -75,10 +75,12 @@ def plot_rms_comparison(study, ax=None, quantity: str = "acceleration"):
     return ax
 
 
-def plot_severity_zones(severities, ax=None, names=None, markers=None):
+def plot_severity_zones(severities, ax=None, names=None, markers=None, series_names=None):
     """Zone chart: the zone bands of the standard (log velocity axis) and each judged level as a marker.
 
     ``severities`` : a list of (label, [Severity, ...]) series drawn side by side; ``names`` the tick labels.
+    ``series_names`` : for each series, the tick name of each of its levels (records before and after may
+    hold different channels); without it the levels of every series follow ``names`` in order.
     """
     ax = _axes(ax)
     first = severities[0][1][0]
@@ -92,9 +94,11 @@ def plot_severity_zones(severities, ax=None, names=None, markers=None):
         ax.axhspan(edges[k], edges[k + 1], color=_ZONE_COLOURS[k], zorder=0)
         ax.text(1.0, np.sqrt(edges[k] * edges[k + 1]), f" {labels[k]}", transform=ax.get_yaxis_transform(),
                 va="center", ha="left", fontsize=8)
-    count = len(severities[0][1])
+    count = len(names) if names is not None else max(len(sev) for _, sev in severities)
     for i, (label, sev) in enumerate(severities):
-        x = np.arange(count) + (i - (len(severities) - 1) / 2) * 0.25
+        slots = (np.array([list(names).index(n) for n in series_names[i]]) if series_names is not None
+                 and names is not None else np.arange(len(sev)))
+        x = slots + (i - (len(severities) - 1) / 2) * 0.25
         colour = _COLOURS.get("after" if i else "before", None)
         ax.plot(x, [s.velocity_rms * 1e3 for s in sev], markers[i] if markers else "o", color=colour, label=label,
                 linestyle="none")
@@ -264,8 +268,10 @@ def signal_sections(outcome: Any) -> list[tuple[str, str]]:
 
     def draw_zones(fig):
         a1, a2 = fig.subplots(1, 2)
-        plot_severity_zones([(label, list(sev)) for _, _, sev, label in runs], a1,
-                            [c.name for c in study.before.channels])
+        names = [c.name for c in study.before.channels]
+        names += [c.name for _, analysis, _, _ in runs for c in analysis.channels if c.name not in names]
+        plot_severity_zones([(label, list(sev)) for _, _, sev, label in runs], a1, names,
+                            series_names=[[c.name for c in analysis.channels] for _, analysis, _, _ in runs])
         plot_velocity_psd(study.before, a2, study.before.channels[0].band)
 
     sections = [("Measured vibration", intro + table + _figure("signals", "Zones and spectra", (10.0, 3.8),

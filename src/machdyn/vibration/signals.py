@@ -340,6 +340,12 @@ def read_record(path, *, max_bytes: int = MAX_BYTES) -> Record:
     if t.size < 2 or not np.all(np.isfinite(t)):
         raise InputError(f"The time column of {p} must hold at least two finite values.")
     dt = np.diff(t)
+    repeated = np.flatnonzero(dt <= 0)
+    if repeated.size:
+        i = int(repeated[0])
+        raise InputError(f"The time column of {p} must increase strictly: row {i + 2} ({t[i + 1]:.6g} s) does not "
+                         f"follow row {i + 1} ({t[i]:.6g} s); {repeated.size} such step(s) (duplicate or "
+                         f"out-of-order time stamps).")
     step = float((t[-1] - t[0]) / (t.size - 1))
     # Even steps up to the rounding of the printed times: every time within 1 % of a step of a uniform grid.
     off_grid = np.abs(t - (t[0] + step * np.arange(t.size)))
@@ -422,6 +428,10 @@ def analyse_record(record: Record, band=DEFAULT_BAND, *, crank_speed: float | No
         if name not in record.channels:
             raise InputError(f"No channel '{name}' in {record.source}; channels: {', '.join(record.channels)}.")
         x = record.channels[name]
+        # A constant channel (a disconnected, dead or saturated sensor) would read 0 mm/s, i.e. zone A "good".
+        if np.ptp(x) == 0:
+            raise InputError(f"The channel '{name}' of {record.source} is constant ({x[0]:g} in SI units) over "
+                             f"all {x.size} samples; a dead, disconnected or saturated sensor cannot be judged.")
         if record.quantities[name] == "acceleration":
             measured = band_limit(x, fs, band)
             velocity = integrate_to_velocity(x, fs, band)
