@@ -64,3 +64,16 @@ def test_property_any_crank_rocker_is_fully_force_balanced(crank, coupler, rocke
     result = berkof_lowen(mech, 0.05, 0.05, np.linspace(0, 2 * np.pi, 48, endpoint=False), speed=10.0)
     assert result.after.com_spread < 1e-12
     assert result.after.peak_force <= 1e-10 * max(result.before.peak_force, 1.0)
+
+
+@pytest.mark.parametrize("args", [(2.0, complex("nan"), 0.1, 0.3), (2.0, 0.5, float("inf"), 0.3),
+                                  (2.0, 0.5, 0.1, complex(0.3, float("nan")))])
+def test_required_first_moments_rejects_non_finite_input(args):
+    with pytest.raises(InputError, match="must be a finite complex number"):
+        required_first_moments(*args)
+
+
+@pytest.mark.parametrize("angles", [np.array([]), np.zeros((3, 4))])
+def test_empty_or_2d_crank_angles_are_an_input_error(fourbar, angles):
+    with pytest.raises(InputError, match="crank_angle must be a non-empty 1-D array"):
+        berkof_lowen(fourbar, 0.08, 0.1, crank_angle=angles)

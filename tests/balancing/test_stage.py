@@ -121,3 +121,14 @@ def test_bad_balance_tables_exit_2_with_a_message(tmp_path, table, expected):
     assert result.exit_code == 2, result.output
     assert expected in result.output
     assert "Traceback" not in result.output
+
+
+def test_misspelled_counterweight_body_is_reported_once_under_its_field(tmp_path):
+    table = ('method = "counterweights"\n[[balance.counterweights]]\nbody = "crnk"\nradius = "5 cm"\n'
+             '[[balance.states]]\nname = "a"\nset = { "mechanism.crank.length" = "40 mm" }\n'
+             '[[balance.states]]\nname = "b"\nset = { "mechanism.crank.length" = "45 mm" }')
+    result = _run(tmp_path, ENGINE + "\n[balance]\n" + table + "\n")
+    assert result.exit_code == 2, result.output
+    assert "balance.counterweights[0].body" in result.output
+    assert result.output.count("no body 'crnk'") == 1
+    assert "Traceback" not in result.output

@@ -109,6 +109,10 @@ def required_first_moments(coupler_mass, coupler_ratio, crank_vector, rocker_vec
     """
     check_positive("coupler mass", coupler_mass, "kg", allow_zero=True)
     c = complex(coupler_ratio)
+    for name, value in (("coupler_ratio", c), ("crank_vector", complex(crank_vector)),
+                        ("rocker_vector", complex(rocker_vector))):
+        if not np.isfinite(value):
+            raise InputError(f"{name} must be a finite complex number; got {value!r}.")
     return -coupler_mass * (1.0 - c) * complex(crank_vector), -coupler_mass * c * complex(rocker_vector)
 
 

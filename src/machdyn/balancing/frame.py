@@ -103,6 +103,8 @@ def frame_loads(mech: Mechanism, crank_angle=None, speed: float = 1.0) -> FrameL
     if not speed > 0:
         raise InputError(f"The crank speed must be > 0 rad/s; got {speed:g} rad/s.")
     phi = cycle() if crank_angle is None else np.asarray(crank_angle, dtype=float)
+    if phi.ndim != 1 or phi.size == 0:
+        raise InputError(f"crank_angle must be a non-empty 1-D array of crank angles [rad]; got shape {phi.shape}.")
     quiet = replace(mech, gravity=(0.0, 0.0))
     kin = kinematics(quiet, phi, speed, 0.0)
     forces = kinetostatics(quiet, kinematics_result=kin)

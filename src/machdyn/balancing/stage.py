@@ -234,6 +234,17 @@ def check(problem: Any, table: BalanceSpec, source: str | None = None) -> list[t
     except (ProblemFileError, InputError):
         return []  # the kind reports the model's own problems
     found: list[tuple[str, str]] = []
+    # a misspelled body is reported once, under its own field, not again for the method and every state
+    bodies = {b.name for b in mech.bodies}
+    named = [(f"balance.counterweights[{i}].body", s.body) for i, s in enumerate(table.counterweights)]
+    if table.spring is not None:
+        named.append(("balance.spring.body", table.spring.body))
+    for field, body in named:
+        if body not in bodies:
+            found.append((field, f"mechanism '{mech.name}' has no body '{body}'; bodies: "
+                                 f"{', '.join(b.name for b in mech.bodies)}"))
+    if found:
+        return found
     try:
         _check_method(mech, table, abs(float(problem.drive.speed)))
     except InputError as exc:
