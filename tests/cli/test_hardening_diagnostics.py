@@ -51,3 +51,14 @@ def test_double_slider_crank_names_each_slider(tmp_path):
     report = (out / "report.html").read_text(encoding="utf-8")
     for key in per_slider:
         assert f"of {key.split('.')[1]}" in report
+
+
+def test_model_mistakes_are_said_with_the_schema_mistakes(tmp_path):
+    # A bad [drive] value (schema) and a load on a body that does not exist (found building the model).
+    text = FOUR_BAR.replace('body = "rocker"', 'body = "rockr"').replace("positions = 360", "positions = -5")
+    path = tmp_path / "p.toml"
+    path.write_text(text, encoding="utf-8")
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 2, result.output
+    assert "drive.positions" in result.output
+    assert "rockr" in result.output
