@@ -27,10 +27,13 @@ class Analysis:
 
     @cached_property
     def diagnostics(self) -> Diagnostics | None:
-        """The revolution diagnostics of a single design (see :func:`~machdyn.linkage.diagnostics.diagnose`),
-        computed on first access and kept with the mechanism."""
+        """The diagnostics of a single design over the analysed crank range (the full turn when the analysis
+        covers one; see :func:`~machdyn.linkage.diagnostics.diagnose`), computed on first access and kept with
+        the mechanism."""
         mech = self.mechanism
-        return diagnose(mech) if self.with_diagnostics and mech.design_count is None else None
+        if not self.with_diagnostics or mech.design_count is not None:
+            return None
+        return diagnose(mech, crank_range=analysed_range(self.kinematics.crank_angle))
 
     @property
     def mechanism(self) -> Mechanism:
@@ -42,6 +45,19 @@ class Analysis:
         res = np.abs(self.energy.power_residual())
         scale = max(float(np.max(np.abs(self.forces.input_power))), float(np.max(np.abs(self.energy.energy_rate))))
         return float(np.max(res)) / scale if scale > 0 else float(np.max(res))
+
+
+def analysed_range(crank_angle) -> tuple[float, float] | None:
+    """(first, last) crank angle [rad] of a partial range, or None when the angles cover a full turn (evenly
+    spaced without the end point, or spanning at least 2*pi)."""
+    phi = np.atleast_1d(np.asarray(crank_angle, dtype=float)).ravel()
+    if phi.size < 2:
+        return None if phi.size == 0 else (float(phi[0]), float(phi[0]))
+    span = float(phi.max() - phi.min())
+    even_turn = np.allclose(np.abs(np.diff(phi)), 2 * np.pi / phi.size, rtol=1e-9, atol=1e-12)
+    if even_turn or span >= 2 * np.pi * (1.0 - 1e-9):
+        return None
+    return (float(phi[0]), float(phi[-1]))
 
 
 def analyse(mech: Mechanism, crank_angle, speed=1.0, acceleration=0.0, *, diagnostics: bool = True) -> Analysis:

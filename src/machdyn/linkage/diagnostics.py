@@ -43,6 +43,12 @@ class Diagnostics:
     transmission_angle_min: float
     transmission_angle_max: float
     warnings: list = field(default_factory=list)
+    #: (start, stop) [rad] of the crank range described, or None for the full turn.
+    crank_range: tuple[float, float] | None = None
+    #: Per output of each dyad (body name): its time ratio (None without a full turn and two limit positions).
+    time_ratios: dict = field(default_factory=dict)
+    #: Per output of each dyad (body name): (min, max) transmission angle [rad] of the dyad that drives it.
+    transmission_angles: dict = field(default_factory=dict)
 
 
 def _zero_crossings(phi, values, valid):
@@ -67,7 +73,8 @@ def _zero_crossings(phi, values, valid):
     return [(int(k), float(x)) for k, x in zip(idx, angles, strict=True)]
 
 
-def diagnose(mech: Mechanism, samples: int = 3600, *, kinematics_result: Kinematics | None = None) -> Diagnostics:
+def diagnose(mech: Mechanism, samples: int = 3600, *, kinematics_result: Kinematics | None = None,
+             crank_range: tuple[float, float] | None = None) -> Diagnostics:
     """Assembly ranges, Grashof type, dead and limit positions, strokes, time ratio and transmission-angle
     extremes of one design over a full crank revolution sampled at ``samples`` evenly spaced angles
     (accuracy of located angles about 360/samples deg before interpolation).
@@ -76,19 +83,52 @@ def diagnose(mech: Mechanism, samples: int = 3600, *, kinematics_result: Kinemat
     :func:`~machdyn.linkage.kinematics.crank_angles` makes it, at a crank speed that does not vanish) the
     diagnostics are sized to that request: no kinematics is computed again. The result is kept with the
     (immutable) mechanism, so asking again costs nothing.
+
+    With ``crank_range = (start, stop)`` [rad] (a partial turn; the crank turns from ``start`` to ``stop``)
+    everything is said of that range only: dead and limit positions inside it, strokes and transmission-angle
+    extremes over it, no time ratio (it needs a full turn; ``time_ratio`` is None and a note says so).
     """
     if mech.design_count is not None:
         raise InputError(
             f"diagnose works on one design at a time; mechanism '{mech.name}' has {mech.design_count} "
             "variants (use mech.take_designs(i))."
         )
+    window = _window(crank_range)
     if kinematics_result is not None:
-        return _diagnose(mech, _revolution(kinematics_result))
-    key = ("diagnostics", int(samples))
+        return _diagnose(mech, _revolution(kinematics_result), window)
+    key = ("diagnostics", int(samples), window)
     if key not in mech._derived:
-        phi = crank_angles(samples)
-        mech._derived[key] = _diagnose(mech, kinematics(mech, phi, 1.0, 0.0, on_fail="mask"))
+        full = ("diagnostics", int(samples), None)
+        if full in mech._derived and window is not None:
+            kin = mech._derived[("diagnostics.kinematics", int(samples))]
+        else:
+            kin = kinematics(mech, crank_angles(samples), 1.0, 0.0, on_fail="mask")
+            mech._derived[("diagnostics.kinematics", int(samples))] = kin
+        mech._derived[key] = _diagnose(mech, kin, window)
     return mech._derived[key]
+
+
+def _window(crank_range) -> tuple[float, float] | None:
+    """(start, span) [rad] of a partial crank range, span in (0, 2*pi); None for a full turn or more."""
+    if crank_range is None:
+        return None
+    start, stop = (float(x) for x in crank_range)
+    if not (np.isfinite(start) and np.isfinite(stop)):
+        raise InputError(f"crank_range must be two finite angles [rad]; got {crank_range!r}.")
+    lo, span = min(start, stop), abs(stop - start)
+    if span >= 2 * np.pi * (1.0 - 1e-9):
+        return None
+    return (float(lo % (2 * np.pi)), float(span))
+
+
+def in_window(angles, window: tuple[float, float] | None) -> np.ndarray:
+    """True where crank ``angles`` [rad] lie in ``window`` = (start, span) (all True for None)."""
+    a = np.asarray(angles, dtype=float)
+    if window is None:
+        return np.ones(a.shape, dtype=bool)
+    start, span = window
+    tol = 1e-9
+    return ((a - start) % (2 * np.pi) <= span + tol) | ((a - start) % (2 * np.pi) >= 2 * np.pi - tol)
 
 
 def _revolution(kin: Kinematics) -> Kinematics:
@@ -105,25 +145,38 @@ def _revolution(kin: Kinematics) -> Kinematics:
     return kin
 
 
-def _diagnose(mech: Mechanism, kin: Kinematics) -> Diagnostics:
+def _diagnose(mech: Mechanism, kin: Kinematics, window: tuple[float, float] | None = None) -> Diagnostics:
     phi = np.asarray(kin.crank_angle, dtype=float)
     samples = phi.size
     assembled = np.asarray(kin.assembled)
-    ok = assembled & ~singular(kin.dyad_reports, kin.shape)
+    inside = in_window(phi, window)
+    ok_full = assembled & ~singular(kin.dyad_reports, kin.shape)
+    ok = ok_full & inside
     warnings = []
-    ranges = angle_ranges(phi, assembled)
-    gaps = angle_ranges(phi, ~assembled)
+    ranges = angle_ranges(phi, assembled & inside)
+    gaps = angle_ranges(phi, ~assembled & inside)
     kind = grashof_type(mech)
     if gaps:
         text = format_ranges(gaps)
         warnings.append(f"The linkage cannot assemble for crank angles {text}" + (f" ({kind})." if kind else "."))
-    dead = _dead_positions(phi, kin.dyad_reports, assembled, ok, ranges if gaps else [])
+    # Dead positions are located over the whole turn (a range may end right at one) and kept if inside.
+    full_ranges = angle_ranges(phi, assembled)
+    dead = _dead_positions(phi, kin.dyad_reports, assembled, ok_full,
+                           full_ranges if angle_ranges(phi, ~assembled) else [])
+    dead = [d for d in dead if bool(in_window(d, window))]
     t_min, t_max = np.inf, -np.inf
+    per_dyad: list[tuple[float, float] | None] = []
     for rep in kin.dyad_reports:
         mu = np.asarray(rep.transmission)[ok]
         mu = mu[np.isfinite(mu)]
+        per_dyad.append((float(mu.min()), float(mu.max())) if mu.size else None)
         if mu.size:
             t_min, t_max = min(t_min, float(mu.min())), max(t_max, float(mu.max()))
+    transmission_angles = {}
+    for d, extremes in zip(mech.dyads, per_dyad, strict=False):
+        for out in d.outputs():
+            if extremes is not None:
+                transmission_angles[out.body] = extremes
     step = 2 * np.pi / samples
     limits, strokes = [], {}
     for body, values, rates in _outputs(mech, kin):
@@ -134,7 +187,15 @@ def _diagnose(mech: Mechanism, kin: Kinematics) -> Diagnostics:
         v = values[ok & np.isfinite(values)]
         if v.size:
             strokes[body] = float(v.max() - v.min())
-    time_ratio = _time_ratio(limits, bool(ok.all()))
+    full_turn = window is None and bool(ok.all())
+    time_ratio = _time_ratio(limits, full_turn)
+    time_ratios = {body: _time_ratio([p for p in limits if p.body == body], full_turn) for body in strokes}
+    if window is not None:
+        warnings.append(
+            f"The diagnostics describe the crank range {np.degrees(window[0]):.1f}°–"
+            f"{np.degrees(window[0] + window[1]):.1f}° only; the strokes are the travel over that range and "
+            "no time ratio is given (it needs a full turn)."
+        )
     if np.isfinite(t_min) and min(np.degrees(t_min), 180.0 - np.degrees(t_max)) < MIN_GOOD_TRANSMISSION_DEG:
         warnings.append(
             f"The transmission angle ranges {np.degrees(t_min):.1f}°–{np.degrees(t_max):.1f}°; below "
@@ -148,7 +209,7 @@ def _diagnose(mech: Mechanism, kin: Kinematics) -> Diagnostics:
             + "; forces are unbounded there."
         )
     return Diagnostics(kind, ranges, gaps, sorted(dead), limits, strokes, time_ratio,
-                       float(t_min), float(t_max), warnings)
+                       float(t_min), float(t_max), warnings, window, time_ratios, transmission_angles)
 
 
 def _angle_between(a: float, b: float) -> float:

@@ -23,11 +23,12 @@ def check_assembly(problem: Any, mech: Any) -> list[str]:
     returns the diagnostics' warnings (dead positions, ...)."""
     from ..errors import InputError, SingularPositionError
     from ..linkage import diagnose, kinematics
+    from ..linkage.analysis import analysed_range
 
     angles, speed, accel = crank_range(problem)
     kinematics(mech, angles, speed, accel, on_fail="raise")
     try:
-        return list(diagnose(mech).warnings)
+        return list(diagnose(mech, crank_range=analysed_range(angles)).warnings)
     except (InputError, SingularPositionError):
         return []
 

@@ -204,6 +204,7 @@ def validate(data: dict[str, Any], kind_name: str, source: str | None = None) ->
         spec = schema.model_validate({key: v for key, v in data.items() if key in allowed})
     except ValidationError as exc:
         problems += problems_from(exc, schema)
+        problems += _build_problems_of_valid_tables(k, schema, data, allowed, exc, kind_name)
     model = None
     if spec is not None:
         model, found = k.build(spec)
@@ -215,6 +216,34 @@ def validate(data: dict[str, Any], kind_name: str, source: str | None = None) ->
     if problems:
         raise ProblemFileError(problems, source)
     return spec, model
+
+
+def _build_problems_of_valid_tables(k: Any, schema: Any, data: dict[str, Any], allowed: tuple[str, ...],
+                                    exc: ValidationError, kind_name: str) -> list[tuple[str, str]]:
+    """The model-building mistakes (unknown body or point names in loads, ...) of a file whose schema has
+    mistakes elsewhere, so that every mistake is said in one pass: the optional tables with a mistake are left
+    out, a required one keeps only its valid keys; if the main table itself is wrong, nothing more is said."""
+    bad: dict[str, set[Any]] = {}
+    for err in exc.errors():
+        loc = err.get("loc") or ()
+        if loc:
+            bad.setdefault(str(loc[0]), set()).add(loc[1] if len(loc) > 1 else None)
+    if kind_name in bad:
+        return []
+    trimmed = {}
+    for key, value in data.items():
+        if key not in allowed:
+            continue
+        if key not in bad:
+            trimmed[key] = value
+        elif schema.model_fields[key].is_required() and isinstance(value, dict) and None not in bad[key]:
+            trimmed[key] = {sub: v for sub, v in value.items() if sub not in bad[key]}
+    try:
+        spec = schema.model_validate(trimmed)
+        _, found = k.build(spec)
+    except (ValidationError, ValueError, KeyError, AttributeError, TypeError):
+        return []  # the rest of the file does not stand on its own: the schema mistakes are said already
+    return [(path, message) for path, message in found if str(path).split(".")[0].split("[")[0] not in bad]
 
 
 def read_problem(source: str | os.PathLike) -> LoadedProblem:

@@ -108,9 +108,26 @@ def diagnostics_rows(diagnostics: Any, mechanism: Any = None) -> list[tuple[str,
             rows.append((f"Stroke of {body}", f"{format_value(np.asarray(stroke, dtype=float).tolist())} m"))
         else:
             rows.append((f"Swing of {body}", _deg(stroke)))
+    window = getattr(diagnostics, "crank_range", None)
+    if window is not None:
+        rows.append(("Crank range described", f"{np.degrees(window[0]):.1f}°–{np.degrees(window[0] + window[1]):.1f}°"))
+    ratios = getattr(diagnostics, "time_ratios", None) or {}
+    angles = getattr(diagnostics, "transmission_angles", None) or {}
+    several = len([b for b in (getattr(diagnostics, "strokes", None) or {}) if b in sliders]) > 1
     tr = getattr(diagnostics, "time_ratio", None)
-    if tr is not None:
+    if window is not None:
+        rows.append((LINKAGE_LABELS["time_ratio"].text, "needs a full turn of the crank (not analysed)"))
+    elif several:
+        for body, ratio in ratios.items():
+            if body in sliders and ratio is not None:
+                rows.append((f"{LINKAGE_LABELS['time_ratio'].text} of {body}", format_value(float(ratio))))
+    elif tr is not None:
         rows.append((LINKAGE_LABELS["time_ratio"].text, format_value(np.asarray(tr, float).tolist())))
+    if several:
+        for body, (lo_b, hi_b) in angles.items():
+            if body in sliders:
+                rows.append((f"Transmission angle of the dyad driving {body}", f"{_deg(lo_b)} – {_deg(hi_b)}"))
+        return rows
     lo = getattr(diagnostics, "transmission_angle_min", None)
     hi = getattr(diagnostics, "transmission_angle_max", None)
     if lo is not None:

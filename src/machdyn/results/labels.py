@@ -53,6 +53,10 @@ def _pattern(key: str, unit: str) -> Label | None:
         return Label(f"Joint {parts[1]}, max force", "N")
     if parts[0] == "load" and len(parts) == 3 and parts[2] == "mean_power":
         return Label(f"Load {parts[1]}, mean power (negative: the drive works against it)", "W")
+    if parts[0] == "time_ratio" and len(parts) == 2:
+        return Label(f"Time ratio (advance / return) of {parts[1]}", "")
+    if parts[0] == "transmission_angle" and len(parts) == 3 and parts[2] in ("min", "max"):
+        return Label(f"Transmission angle of the dyad driving {parts[1]}, {parts[2]}", "rad", "deg")
     if parts[0] == "stroke" and len(parts) == 2:
         return Label(f"Stroke of {parts[1]}", unit)
     if len(parts) >= 3 and parts[-2].startswith("harmonic_"):

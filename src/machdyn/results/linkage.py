@@ -242,6 +242,17 @@ def linkage_scalars(
             out["transmission_angle.min"] = _scalar(diag.transmission_angle_min, designs)
         if getattr(diag, "transmission_angle_max", None) is not None:
             out["transmission_angle.max"] = _scalar(diag.transmission_angle_max, designs)
+        # With more than one slider (the double slider-crank), each slider's own figures, named by it.
+        per_slider = [b for b in (getattr(diag, "strokes", None) or {}) if b in sliders]
+        if len(per_slider) > 1:
+            for body in per_slider:
+                ratio = (getattr(diag, "time_ratios", None) or {}).get(body)
+                if ratio is not None:
+                    out[f"time_ratio.{body}"] = _scalar(ratio, designs)
+                extremes = (getattr(diag, "transmission_angles", None) or {}).get(body)
+                if extremes is not None:
+                    out[f"transmission_angle.{body}.min"] = _scalar(extremes[0], designs)
+                    out[f"transmission_angle.{body}.max"] = _scalar(extremes[1], designs)
         dead = getattr(diag, "dead_positions", None)
         if dead is not None:
             out["dead_positions.count"] = float(len(list(_flatten(dead))))
