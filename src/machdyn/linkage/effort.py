@@ -108,21 +108,9 @@ def crank_effort(forces: Forces, pin: str | None = None) -> CrankEffort:
     mech = forces.mechanism
     crank = mech.crank.body
     pins = [j for j in forces.joints if j.body_1 == crank and j.kind == "R"]
-    if pin is None:
-        if len(pins) != 1:
-            raise InputError(
-                f"The crank '{crank}' of '{mech.name}' carries {len(pins)} pins "
-                f"({', '.join(j.name for j in pins) or 'none'}); name one with pin=..."
-            )
-        joint = pins[0]
-    else:
-        matches = [j for j in pins if j.name == pin]
-        if not matches:
-            raise InputError(
-                f"The pin must be a joint on the crank '{crank}'; got {pin!r}; pins: "
-                f"{', '.join(j.name for j in pins) or 'none'}."
-            )
-        joint = matches[0]
+    joint = _one(pins, pin, lambda j: j.name,
+                 f"The crank '{crank}' of '{mech.name}' carries {len(pins)} pins", "pin",
+                 f"The pin must be a joint on the crank '{crank}'", "pins")
     kin = forces.kinematics
     pivot = kin.point(mech.crank.pivot)
     point_name = joint.name.split(":")[0]
@@ -201,21 +189,9 @@ def piston_effort(forces: Forces, slider: str | None = None) -> PistonEffort:
         raise InputError(f"piston_effort needs the Forces of kinetostatics; got {type(forces).__name__}.")
     mech = forces.mechanism
     groups = [d for d in mech.dyads if isinstance(d, RRP)]
-    if slider is None:
-        if len(groups) != 1:
-            raise InputError(
-                f"Mechanism '{mech.name}' has {len(groups)} sliders driven by a rod "
-                f"({', '.join(d.b for d in groups) or 'none'}); name one with slider=..."
-            )
-        group = groups[0]
-    else:
-        found = [d for d in groups if d.b == slider]
-        if not found:
-            raise InputError(
-                f"The slider must be the slider of a link-and-slider (RRP) group; got {slider!r}; sliders: "
-                f"{', '.join(d.b for d in groups) or 'none'}."
-            )
-        group = found[0]
+    group = _one(groups, slider, lambda d: d.b,
+                 f"Mechanism '{mech.name}' has {len(groups)} sliders driven by a rod", "slider",
+                 "The slider must be the slider of a link-and-slider (RRP) group", "sliders")
     kin = forces.kinematics
     piston = kin.body(group.b)
     ux, uy = piston.cos, piston.sin
@@ -239,3 +215,17 @@ def _joint_name(forces: Forces, name: str, body_2: str) -> str:
         if j.name.split(":")[0] == name and j.body_2 == body_2:
             return j.name
     raise InputError(f"No joint '{name}' on body '{body_2}'; joints: {', '.join(j.name for j in forces.joints)}.")
+
+
+def _one(items: list, wanted: str | None, name_of, several: str, argument: str, not_found: str, plural: str):
+    """The item named ``wanted`` among ``items``, or the only one when none is named; an error naming the
+    candidates otherwise."""
+    names = ", ".join(name_of(i) for i in items) or "none"
+    if wanted is None:
+        if len(items) != 1:
+            raise InputError(f"{several} ({names}); name one with {argument}=...")
+        return items[0]
+    found = [i for i in items if name_of(i) == wanted]
+    if not found:
+        raise InputError(f"{not_found}; got {wanted!r}; {plural}: {names}.")
+    return found[0]
