@@ -256,6 +256,7 @@ def run(
                                  help="Run a design-space exploration on the Dask scheduler at ADDRESS "
                                       "(tcp://host:8786).")
     ] = None,
+    open_report: Annotated[bool, typer.Option("--open", help="Open report.html in the web browser.")] = False,
     debug: DebugOpt = False,
 ) -> None:
     """Analyse a problem file, print a summary table and write the outputs."""
@@ -266,13 +267,64 @@ def run(
 
         with execution(workers=workers, scheduler=scheduler, store=out / "sweep.parquet"):
             _run(file, out, format, quiet)
-    except (typer.Exit, KeyboardInterrupt):
+    except typer.Exit as done:
+        if open_report and done.exit_code == EXIT_CHECKS_FAILED:  # the outputs are written: show them
+            _open_in_browser(out / "report.html")
+        raise
+    except KeyboardInterrupt:
         raise
     except Exception as exc:  # noqa: BLE001 - anything unexpected becomes exit 4 without a traceback
         raise _internal_error(exc, debug) from None
 
 
-def _run(file: Path, out: Path, format: TableFormat, quiet: bool) -> None:
+    if open_report:
+        _open_in_browser(out / "report.html")
+
+
+def _open_in_browser(report: Path) -> None:
+    """Open the report in the user's web browser (a message, not a failure, where there is none)."""
+    import webbrowser
+
+    if not (report.is_file() and webbrowser.open(report.resolve().as_uri())):
+        typer.echo(f"note: could not open a web browser; the report is {report}", err=True)
+
+
+@app.command(epilog=EXIT_CODES_HELP)
+def watch(
+    file: FileArg,
+    out: Annotated[
+        Path, typer.Option("--out", "-o", help="Directory for results.json, the CSV files and report.html.")
+    ] = Path("out"),
+    open_report: Annotated[bool, typer.Option("--open", help="Open report.html in the web browser.")] = False,
+    interval: Annotated[float, typer.Option("--interval", min=0.1, max=60.0,
+                                            help="Seconds between looks at the file.")] = 0.5,
+    debug: DebugOpt = False,
+) -> None:
+    """Run the problem file again each time it is saved; an open report re-loads itself. Stop with Ctrl-C.
+
+    A file with mistakes is reported and the previous outputs stay until it is fixed."""
+    from .watching import watch_file
+
+    try:
+        watch_file(file, out, interval=interval, run=lambda stamp: _watched_run(file, out, stamp),
+                   opened=(lambda: _open_in_browser(out / "report.html")) if open_report else None)
+    except KeyboardInterrupt:
+        typer.echo("stopped watching", err=True)
+    except Exception as exc:  # noqa: BLE001 - anything unexpected becomes exit 4 without a traceback
+        raise _internal_error(exc, debug) from None
+
+
+def _watched_run(file: Path, out: Path, stamp: str) -> int:
+    """One run of ``machdyn watch``: the exit code ``run`` would give; its messages are printed as ``run``
+    prints them."""
+    try:
+        _run(file, out, TableFormat.table, quiet=True, watch_stamp=stamp)
+    except typer.Exit as done:
+        return int(done.exit_code or 0)
+    return EXIT_OK
+
+
+def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: str | None = None) -> None:
     from .errors import AssemblyError, InputError, MachdynError, ProblemFileError, SingularPositionError
     from .kinds import steps_of
 
@@ -301,7 +353,7 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool) -> None:
         except (ArithmeticError, ValueError, FloatingPointError, MemoryError) as exc:
             raise _engine_error(exc, file) from None
         try:
-            paths = result.write(out, step=progress.step)
+            paths = result.write(out, step=progress.step, watch_stamp=watch_stamp)
         except OSError as exc:
             raise _fail(f"error: cannot write the outputs to '{out}': {exc.strerror or exc}", EXIT_FAILED) from None
         except MachdynError as exc:

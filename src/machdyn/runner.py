@@ -13,6 +13,7 @@ in SI with its label (:mod:`machdyn.results`), and write the outputs (:mod:`mach
 
 from __future__ import annotations
 
+import json
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -120,20 +121,22 @@ class RunResult:
                 out += import_object(stage.report)(outcome)
         return out
 
-    def report_html(self) -> str:
-        """The self-contained HTML report (input echoed, summary, warnings, each stage's sections)."""
+    def report_html(self, watch_stamp: str | None = None) -> str:
+        """The self-contained HTML report (input echoed, summary, warnings, each stage's sections); with a
+        ``watch_stamp`` the page re-loads itself when ``report.stamp.js`` beside it changes (``machdyn watch``)."""
         from .report import render_report
 
         return render_report(
             title=self.title, problem_text=self.problem_text, summary_rows=self.summary_rows,
             warnings=self.warnings + [f"Design check failed: {c}" for c in self.failed_checks],
-            sections=self.report_sections(),
+            sections=self.report_sections(), watch_stamp=watch_stamp,
         )
 
-    def write(self, out_dir: str | os.PathLike, *, step: Step = no_step) -> list[Path]:
+    def write(self, out_dir: str | os.PathLike, *, step: Step = no_step, watch_stamp: str | None = None) -> list[Path]:
         """Write ``results.json``, ``<series>.csv`` per time series and ``report.html`` into ``out_dir``
         (created if missing) as one set: all are written first, then swapped in together, so an interrupted
-        run leaves the previous set whole. Returns the paths written."""
+        run leaves the previous set whole. With a ``watch_stamp`` (``machdyn watch``) the set also holds
+        ``report.stamp.js``, which an open report polls to re-load itself. Returns the paths written."""
         from .outputs import OutputSet
 
         outputs = OutputSet(out_dir)
@@ -146,7 +149,9 @@ class RunResult:
                 for name, text in outcome.files.items():
                     outputs.text(name, text)
             step("report")
-            outputs.text("report.html", self.report_html())
+            outputs.text("report.html", self.report_html(watch_stamp))
+            if watch_stamp is not None:
+                outputs.text("report.stamp.js", f"window.machdynStamp = {json.dumps(watch_stamp)};\n")
         except BaseException:
             outputs.abort()
             raise

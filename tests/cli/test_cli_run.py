@@ -198,7 +198,7 @@ def test_interrupted_run_leaves_the_previous_set_whole(tmp_path, monkeypatch):
     before = {p.name: p.read_bytes() for p in kept.iterdir()}
     result = runner_module.run_problem(load_problem(ROOT / "examples" / "four_bar.toml"))
 
-    def interrupt(self):
+    def interrupt(self, *_args, **_kwargs):
         raise KeyboardInterrupt
 
     monkeypatch.setattr(runner_module.RunResult, "report_html", interrupt)

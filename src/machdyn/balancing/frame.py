@@ -9,7 +9,7 @@ Mechanisms*, 5th ed., sec. 16.3); springs and external loads of the model stay a
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -33,7 +33,9 @@ def cycle(samples: int = 360) -> np.ndarray:
 class FrameLoads:
     """Frame loads over one cycle of a single design (SI): crank angle [rad], crank speed [rad/s], shaking
     force components fx, fy [N], shaking moment about the crank pivot [N*m] (including the drive's reaction),
-    driving torque [N*m], the largest force of every joint [N] and the total centre of mass cx, cy [m]."""
+    driving torque [N*m], the largest force of every joint [N] and the total centre of mass cx, cy [m];
+    ``forces`` keeps the kinetostatic result they come from (its kinematics included), for the report's
+    animation."""
 
     crank_angle: np.ndarray
     speed: float
@@ -44,6 +46,7 @@ class FrameLoads:
     joint_peaks: dict
     cx: np.ndarray
     cy: np.ndarray
+    forces: Any = field(default=None, repr=False, compare=False)
 
     @property
     def force(self) -> np.ndarray:
@@ -121,6 +124,7 @@ def frame_loads(mech: Mechanism, crank_angle=None, speed: float = 1.0) -> FrameL
         joint_peaks=peaks,
         cx=cx,
         cy=cy,
+        forces=forces,
     )
 
 

@@ -3,11 +3,13 @@ partial-balance trade-off curve, the before/after table and the per-state table 
 
 from __future__ import annotations
 
+from types import SimpleNamespace
 from typing import Any
 
 import numpy as np
 from markupsafe import escape
 
+from .animation import scene, view_html
 from .html import _render, figures_html, format_value, rows_html
 from .plots import PALETTE, _finish
 
@@ -81,10 +83,28 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
     r = done.result
     if isinstance(r, RobustResult):
         return [("Balance over operating states", _robust_html(done))]
-    parts = [_polar_and_tradeoff(done), _cost_figure(r), _table_html(r)]
+    parts = [_motion_before_after(r.before, r.after, r.model), _polar_and_tradeoff(done), _cost_figure(r),
+             _table_html(r)]
     if r.notes:
         parts.append("<p>" + "<br>".join(escape(n) for n in r.notes) + "</p>")
     return [(f"Balance ({done.method.replace('_', ' ')})", "".join(parts))]
+
+
+def _motion_before_after(before: Any, after: Any, model: Any, state: str = "") -> str:
+    """The machine before and after balancing, moving side by side on one slider (empty when the frame loads
+    do not keep their analysis)."""
+    if before.forces is None or after.forces is None:
+        return ""
+    scenes = {}
+    for name, loads, mech in (("unbalanced", before, None), ("balanced", after, model)):
+        played = SimpleNamespace(kinematics=loads.forces.kinematics, forces=loads.forces, energy=None,
+                                 diagnostics=None)
+        scenes[name] = scene(played, mech, about=(0.0, 0.0), title=f"{name.capitalize()} machine")
+    where = f" in operating state '{state}'" if state else ""
+    return str(view_html(scenes, caption=(
+        f"The machine before and after balancing{where}, on one slider (gravity left out, as in the balance; "
+        "grey discs: the balancing masses). Red: the inertial shaking force on the frame, both machines on one "
+        "scale; the curves below share the crank angle.")))
 
 
 def _polar_and_tradeoff(done: Any) -> str:
@@ -156,4 +176,5 @@ def _robust_html(done: Any) -> str:
              "(positions in the body frame; on the crank, in the frame of the shaft). "
              f"Mean reduction {100 * r.mean_reduction:.1f} %.{source}</p>")
     notes = "<p>" + "<br>".join(escape(n) for n in r.notes) + "</p>"
-    return f"{intro}{figures_html([figure])}{rows_html(rows, head)}{notes}"
+    motion = _motion_before_after(r.before[0], r.after[0], r.models[0], r.rows[0].state)
+    return f"{intro}{motion}{figures_html([figure])}{rows_html(rows, head)}{notes}"

@@ -4,11 +4,13 @@ against the load torque, and the flywheel table. Every plot takes an ``ax`` and 
 
 from __future__ import annotations
 
+from types import SimpleNamespace
 from typing import Any
 
 import numpy as np
 from matplotlib.axes import Axes
 
+from .animation import Curve, scene, view_html
 from .html import _render, format_value, rows_html
 from .plots import PALETTE
 
@@ -137,6 +139,21 @@ def flywheel_rows(run: Any) -> list[list[str]]:
     return rows
 
 
+def _real_speed_view(run: Any) -> str:
+    """The machine moving at its simulated speed, with the speed and the driving torque at that speed under it
+    (empty for a stacked run of several designs)."""
+    forces = run.real.real
+    kin = forces.kinematics
+    if np.ndim(kin.crank_angle) != 1:
+        return ""
+    played = SimpleNamespace(kinematics=kin, forces=forces, energy=None, diagnostics=None)
+    speed = np.broadcast_to(np.asarray(kin.speed, dtype=float) * RPM, np.shape(kin.crank_angle))
+    data = scene(played, forces.mechanism, curves=[Curve("Crank speed (steady state)", "rpm", speed, from_zero=False)])
+    return str(view_html(data, caption=(
+        "The machine at its real speed in the periodic steady state with the flywheel and drive above: the joint "
+        "reactions, the inertial shaking force and the driving torque include the speed fluctuation.")))
+
+
 def sections(outcome: Any) -> list[tuple[str, str]]:
     """The report section of a ``[flywheel]`` outcome."""
     run = outcome.results
@@ -159,6 +176,6 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
              f"coefficient of speed fluctuation {format_value(float(np.ravel(run.steady.delta)[0]))}. At the real "
              f"speed the peak force of joint {change_joint} changes by {format_value(change * 100)} % against the "
              "constant-speed analysis.</p>")
-    body = intro + "".join(f"<figure class=\"plot\">{f.svg}</figure>" for f in figs)
+    body = intro + _real_speed_view(run) + "".join(f"<figure class=\"plot\">{f.svg}</figure>" for f in figs)
     body += rows_html(flywheel_rows(run), head=("quantity", "value"))
     return [("Flywheel and drive", body)]

@@ -22,6 +22,7 @@ import numpy as np
 from markupsafe import Markup, escape
 
 from .. import __version__
+from .animation import assets as view_assets
 
 _ENV = jinja2.Environment(
     loader=jinja2.PackageLoader("machdyn.report", "templates"),
@@ -193,6 +194,7 @@ def render_report(
     warnings: Sequence[str],
     sections: Sequence[tuple[str, str]] = (),
     subtitle: str | None = None,
+    watch_stamp: str | None = None,
 ) -> str:
     """One self-contained HTML document.
 
@@ -202,7 +204,10 @@ def render_report(
         digits (lists are joined).
     warnings : messages listed in the warnings section.
     sections : (heading, html) pairs, each a section after the warnings with a link in the navigation; the html
-        is trusted markup produced by machdyn's report modules.
+        is trusted markup produced by machdyn's report modules. A section holding an interactive view
+        (``<div class="mdview">``, :mod:`.animation`) brings the view's inline style and script, once.
+    watch_stamp : set by ``machdyn watch``: the page re-loads itself when ``report.stamp.js`` beside it carries
+        another stamp (a new run).
     """
     used: set[str] = set()
     extras = []
@@ -215,7 +220,10 @@ def render_report(
         extras.append({"id": key, "heading": heading, "html": Markup(body)})
     rows = [(str(q), format_value(v), pretty_unit(str(u or ""))) for q, v, u in summary_rows]
     template = _ENV.get_template("report.html.j2")
+    interactive = any('class="mdview"' in str(section["html"]) for section in extras)
     return template.render(
+        view_assets=view_assets() if interactive else None,
+        watch_stamp=watch_stamp,
         title=title,
         problem_text=problem_text,
         summary_rows=rows,

@@ -13,6 +13,7 @@ from ..linkage import model as _model
 from ..results.linkage import LINKAGE_LABELS, joint_list, mechanism_of
 from ..results.linkage import slider_bodies as _slider_bodies
 from . import plots
+from .animation import outcome_view
 from .html import Figure, _render, figures_html, format_value, rows_html
 
 
@@ -40,8 +41,10 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
     """The diagnostics table and the plots of a linkage kind's outcome."""
     about = (float(outcome.scalars.get("shaking_moment.about_x", 0.0)),
              float(outcome.scalars.get("shaking_moment.about_y", 0.0)))
-    return analysis_sections(outcome.analysis, outcome.mechanism, shaking_about=about,
-                             harmonics=torque_harmonics(outcome.scalars))
+    out = analysis_sections(outcome.analysis, outcome.mechanism, shaking_about=about,
+                            harmonics=torque_harmonics(outcome.scalars))
+    view = outcome_view(outcome)
+    return [("Motion", str(view)), *out] if view is not None else out
 
 
 def analysis_sections(

@@ -1,0 +1,62 @@
+"""``machdyn watch``: run a problem file again each time it is saved.
+
+The loop looks at the file's modification time and size every ``interval`` seconds; a change starts a new run,
+whose outputs carry a new stamp in ``report.stamp.js``. An open report polls that file and re-loads itself when
+the stamp changes, keeping its crank angle (see ``report/templates/report.html.j2``). A run that fails (a mistake
+in the file) leaves the previous outputs in place; the next save tries again.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+import typer
+
+
+def _signature(file: Path) -> tuple[int, int] | None:
+    try:
+        info = file.stat()
+    except OSError:
+        return None
+    return info.st_mtime_ns, info.st_size
+
+
+def watch_file(file: Path, out: Path, *, interval: float, run: Callable[[str], int],
+               opened: Callable[[], None] | None = None, max_runs: int | None = None) -> int:
+    """Run ``run(stamp)`` now and after every change of ``file``; returns the number of runs made.
+
+    Parameters
+    ----------
+    file : the problem file watched.
+    out : the output folder (named in the messages).
+    interval : seconds between looks at the file [s].
+    run : one run; returns its exit code (0 success, 3 a failed design check: both write the outputs).
+    opened : called once, after the first run that wrote a report (``--open``).
+    max_runs : stop after this many runs (for tests; None: until interrupted).
+    """
+    seen: tuple[int, int] | None = None
+    runs = 0
+    while max_runs is None or runs < max_runs:
+        now = _signature(file)
+        if now is not None and now != seen:
+            seen = now
+            runs += 1
+            started = time.perf_counter()
+            code = run(f"{time.time_ns()}-{runs}")
+            took = time.perf_counter() - started
+            if code in (0, 3):
+                typer.echo(f"[{time.strftime('%H:%M:%S')}] {file.name}: report updated in {out}/ ({took:.2f} s)"
+                           + (", a design check failed" if code == 3 else ""), err=True)
+                if opened is not None:
+                    opened()
+                    opened = None
+            else:
+                typer.echo(f"[{time.strftime('%H:%M:%S')}] {file.name}: not updated (exit {code}); fix the file "
+                           "and save it again", err=True)
+        elif now is None and seen is not None:
+            typer.echo(f"{file} is gone; waiting for it", err=True)
+            seen = None
+        time.sleep(interval)
+    return runs
