@@ -226,7 +226,7 @@ def plain_bearing_pv(load: Any, diameter: float, length: float, sliding_speed: A
     Examples
     --------
     >>> p, pv = plain_bearing_pv(10e3, 0.04, 0.05, 0.5)
-    >>> round(p / 1e6, 3), round(pv / 1e6, 3)
+    >>> round(float(p) / 1e6, 3), round(float(pv) / 1e6, 3)
     (5.0, 2.5)
     """
     if diameter <= 0 or length <= 0:

@@ -50,7 +50,7 @@ def pin_stresses(force: Any, diameter: float, length: float, shear_planes: int =
     A 20 mm pin in double shear under 10 kN, 30 mm long in its eye:
 
     >>> tau, p = pin_stresses(10e3, 0.02, 0.03)
-    >>> round(tau / 1e6, 2), round(p / 1e6, 2)
+    >>> round(float(tau) / 1e6, 2), round(float(p) / 1e6, 2)
     (15.92, 16.67)
     """
     if diameter <= 0 or length <= 0:
