@@ -84,7 +84,7 @@ class PartsResult:
 
     checks: tuple[PartCheck, ...]
     crank_angle: np.ndarray
-    bearing_loads: dict = field(default_factory=dict)   # joint -> (|F| [N], mean effective load [N])
+    bearing_loads: dict = field(default_factory=dict)   # joint -> (|F| [N], equal-life load [N] or None)
     link_stress: dict = field(default_factory=dict)     # body -> (σ_max fibre [Pa], σ_min fibre [Pa])
 
     @property
@@ -169,7 +169,7 @@ def size_parts(forces: Any, *, bearings: tuple[BearingSpec, ...] = (), pins: tup
         else:
             assert b.diameter is not None and b.length is not None
             p, pv = plain_bearing_pv(load, b.diameter, b.length, w_rel * b.diameter / 2.0)
-            bearing_loads[b.joint] = (load, float(np.max(load)))
+            bearing_loads[b.joint] = (load, None)  # a plain bearing has no equal-life load
             if b.max_pressure is not None:
                 checks.append(PartCheck(f"bearing {b.joint}", "peak pressure p", float(p.max()), b.max_pressure,
                                         float(p.max()) / b.max_pressure, "Pa"))

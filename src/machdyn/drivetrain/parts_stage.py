@@ -37,14 +37,10 @@ from pydantic import Field, model_validator
 
 from ..errors import InputError, ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext
-from ..problem.fields import Force, PositiveLength, Pressure, Stress, Time, quantity
+from ..problem.fields import Area, Force, PositiveLength, Pressure, PressureVelocity, SectionModulus, Stress, Time
 from ..problem.schema import Spec
 from ..results.labels import Label
 from .parts import BearingSpec, LinkSpec, PinSpec, size_parts
-
-Area = quantity("m^2", "area", ">0")
-SectionModulus = quantity("m^3", "section_modulus", ">0")
-PressureVelocity = quantity("Pa*m/s", "pressure_velocity", ">0")
 
 
 class BearingTable(Spec):
@@ -116,7 +112,8 @@ def _names(table: PartsSpec, mech: Any) -> list[tuple[str, str]]:
     joints = {name: kind for name, kind, _b1, _b2 in _model.joints(mech)}
     bodies = set(mech.moving_bodies)
     problems = []
-    for group, items in (("bearings", table.bearings), ("pins", table.pins)):
+    named: list[tuple[str, list[Any]]] = [("bearings", list(table.bearings)), ("pins", list(table.pins))]
+    for group, items in named:
         for i, item in enumerate(items):
             if item.joint not in joints:
                 problems.append((f"parts.{group}[{i}].joint",

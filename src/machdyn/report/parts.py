@@ -6,6 +6,7 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
+
 from ..results.labels import display_factor
 from .html import _render, figures_html, format_value, rows_html
 from .plotkit import PALETTE, _finish
@@ -19,7 +20,8 @@ def plot_bearing_loads(ax: Any, result: Any) -> Any:
     for k, (joint, (load, equivalent)) in enumerate(result.bearing_loads.items()):
         colour = PALETTE[k % len(PALETTE)]
         ax.plot(phi, np.asarray(load) / 1e3, color=colour, label=f"{joint}")
-        ax.axhline(float(equivalent) / 1e3, color=colour, linestyle="--", linewidth=0.9)
+        if equivalent is not None:
+            ax.axhline(float(equivalent) / 1e3, color=colour, linestyle="--", linewidth=0.9)
     ax.set_xlabel("crank angle [deg]")
     ax.set_ylabel("bearing load [kN]")
     return _finish(ax, "Bearing loads (dashed: equal-life load)")
