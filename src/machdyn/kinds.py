@@ -28,6 +28,8 @@ CAPABILITIES: dict[str, str] = {
     "signals": "machdyn.vibration.stage:SIGNALS",
     "flywheel": "machdyn.dynamics.stage:CAPABILITY",
     "optimise": "machdyn.optimise.stage:CAPABILITY",
+    "drivetrain": "machdyn.drivetrain.stage:CAPABILITY",
+    "parts": "machdyn.drivetrain.parts_stage:CAPABILITY",
 }
 
 

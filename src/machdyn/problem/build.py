@@ -14,6 +14,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..errors import InputError, ProblemFileError
+from ..linkage.stroke_loads import stroke_load
 from .errors import did_you_mean
 from .schema import CustomSpec, DoubleCrankSpec, LinkageProblem, LinkSpec
 
@@ -160,6 +161,15 @@ def build_mechanism(problem: LinkageProblem):
     for i, f in enumerate(loads.forces):
         need_point(f"loads.forces[{i}].point", f.point)
         forces.append(m.PointForce(f.name or f"force_{i + 1}", f.point, f.fx, f.fy, _active(f.active)))
+    for i, sf in enumerate(loads.stroke_forces):
+        where = f"loads.stroke_forces[{i}]"
+        need_point(f"{where}.point", sf.point)
+        if sf.point in points:
+            try:
+                forces.append(stroke_load(mech, sf.name or f"stroke_force_{i + 1}", sf.point, sf.distance, sf.force,
+                                          end=sf.end).force)
+            except InputError as exc:
+                problems.append((where, str(exc)))
     for i, t in enumerate(loads.torques):
         need_body(f"loads.torques[{i}].body", t.body)
         torques.append(m.BodyTorque(t.name or f"torque_{i + 1}", t.body, t.torque, _active(t.active)))

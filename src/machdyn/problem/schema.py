@@ -274,6 +274,17 @@ class ForceSpec(Spec):
     active: tuple[Angle, Angle] | None = None
 
 
+class StrokeForceSpec(Spec):
+    """A force-stroke table: the resistance ``force`` met at ``distance`` before the end of the working stroke
+    of the slider carrying ``point`` (see :mod:`machdyn.linkage.stroke_loads`)."""
+
+    name: Name | None = None
+    point: PointRef
+    distance: list[NonNegativeLength]
+    force: list[Force]
+    end: Literal["outer", "inner"] = "outer"
+
+
 class TorqueSpec(Spec):
     name: Name | None = None
     body: Name
@@ -306,6 +317,7 @@ Gravity = Annotated[Literal["on", "off"] | tuple[Acceleration, Acceleration], Be
 class LoadsSpec(Spec):
     gravity: Gravity = "on"
     forces: list[ForceSpec] = []
+    stroke_forces: list[StrokeForceSpec] = []
     torques: list[TorqueSpec] = []
     springs: list[SpringSpec] = []
 

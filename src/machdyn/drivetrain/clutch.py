@@ -1,0 +1,199 @@
+"""A friction clutch that engages a spinning flywheel side to a driven side, and a brake that stops a machine.
+
+Clutch: during slip the clutch passes its slip torque T_c from the faster to the slower side; the driving side
+(inertia J1, speed ω1, motor torque T1) slows and the driven side (J2, ω2, load torque T2) speeds up until the
+speeds meet. With constant torques the slip ends at
+
+    t_s = (ω1 − ω2) / ((T_c − T1)/J1 + (T_c − T2)/J2),
+
+the common speed is ω = ω1 − (T_c − T1) t_s / J1, and the friction dissipates E = T_c (ω1 − ω2) t_s / 2.
+With no motor and no load torque this is Shigley's E = J1 J2 (ω1 − ω2)² / (2 (J1 + J2)).
+
+Brake: a brake torque T_b on a machine of inertia J (constant) with a resisting torque T_r stops it from ω0 in
+t = J ω0/(T_b + T_r), over the angle θ = J ω0²/(2 (T_b + T_r)). A linkage, whose reduced inertia and load vary
+with the crank angle, is stopped by integrating its equation of motion (:func:`stop_machine`).
+
+Sources
+-------
+- R. G. Budynas, J. K. Nisbett, *Shigley's Mechanical Engineering Design*, 8th ed., §16-8 "Energy
+  considerations": the slip time t1 = I1 I2 (ω1 − ω2) / (T (I1 + I2)) and the energy
+  E = I1 I2 (ω1 − ω2)² / (2 (I1 + I2)) of two inertias brought to one speed by a clutch of constant torque T.
+- The constant-deceleration stop: Newton's second law for rotation, J dω/dt = −(T_b + T_r).
+- Stopping time and overrun of a press: ISO 16092-1:2017, *Machine tools safety — Presses — Part 1: General
+  safety requirements*, which requires the stopping performance (time or angle) to be known and monitored.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from ..errors import InputError
+
+
+@dataclass(frozen=True)
+class Engagement:
+    """A clutch engagement: slip time [s], common speed [rad/s], energy dissipated [J], the speeds of both sides
+    when the slip ends and the angle each side turned during it [rad]."""
+
+    slip_time: float
+    common_speed: float
+    dissipated: float
+    driving_angle: float
+    driven_angle: float
+    driving_work: float
+    load_work: float
+
+
+def engage(j1: float, w1: float, j2: float, w2: float, slip_torque: float, *, driving_torque: float = 0.0,
+           load_torque: float = 0.0) -> Engagement:
+    """Engagement of a friction clutch between a driving side (j1, w1) and a driven side (j2, w2) with constant
+    torques (Shigley's MED, 8th ed., §16-8, with the motor and load torques added).
+
+    Parameters
+    ----------
+    j1, j2 : inertias of the driving and the driven side [kg·m²] > 0.
+    w1, w2 : their speeds when the clutch closes [rad/s], w1 > w2.
+    slip_torque : T_c, the torque the clutch passes while it slips [N·m] > 0.
+    driving_torque : T1, the motor's torque on the driving side [N·m] (constant, < T_c).
+    load_torque : T2, the resisting torque on the driven side [N·m] (constant, < T_c: else the driven side
+        never catches up).
+
+    Returns
+    -------
+    Engagement
+
+    Examples
+    --------
+    Two discs of 4 and 2 kg·m², one at 60 rpm, the other at rest, clutch torque 10 N·m: the common speed is
+    2π·(4/6) = 4.19 rad/s and a third of the kinetic energy, 26.3 J, is lost:
+
+    >>> e = engage(4.0, 2 * np.pi, 2.0, 0.0, 10.0)
+    >>> round(e.common_speed, 3), round(e.dissipated, 2), round(e.slip_time, 4)
+    (4.189, 26.32, 0.8378)
+    """
+    for name, value in (("j1", j1), ("j2", j2), ("slip torque", slip_torque)):
+        if not (np.isfinite(value) and value > 0):
+            raise InputError(f"The clutch's {name} must be > 0; got {value!r}.")
+    if not w1 > w2:
+        raise InputError(f"The driving side must turn faster than the driven side when the clutch closes; got "
+                         f"{w1:g} rad/s and {w2:g} rad/s.")
+    if load_torque >= slip_torque:
+        raise InputError(f"The clutch slips for ever: its slip torque {slip_torque:g} N*m does not exceed the load "
+                         f"torque {load_torque:g} N*m it must carry.")
+    if driving_torque >= slip_torque:
+        raise InputError(f"The motor torque {driving_torque:g} N*m exceeds the clutch's slip torque "
+                         f"{slip_torque:g} N*m: the driving side would not slow down and the slip never ends.")
+    a1 = (slip_torque - driving_torque) / j1   # deceleration of the driving side
+    a2 = (slip_torque - load_torque) / j2      # acceleration of the driven side
+    ts = (w1 - w2) / (a1 + a2)
+    w = w1 - a1 * ts
+    theta1 = w1 * ts - 0.5 * a1 * ts**2
+    theta2 = w2 * ts + 0.5 * a2 * ts**2
+    dissipated = slip_torque * (theta1 - theta2)
+    return Engagement(float(ts), float(w), float(dissipated), float(theta1), float(theta2),
+                      float(driving_torque * theta1), float(load_torque * theta2))
+
+
+@dataclass(frozen=True)
+class Stop:
+    """A stop: time [s] and crank angle [rad] from the brake's application to rest, the crank angle where it
+    came to rest [rad], and the time histories (t [s], crank angle [rad], speed [rad/s])."""
+
+    time: float
+    angle: float
+    rest_angle: float
+    t: np.ndarray
+    phi: np.ndarray
+    omega: np.ndarray
+
+
+def stop_constant(inertia: float, speed: float, brake_torque: float, resisting_torque: float = 0.0) -> Stop:
+    """Stop of a machine of constant inertia by a constant brake torque: t = J ω0/(T_b + T_r), θ = J ω0²/(2(T_b +
+    T_r)) (Newton's second law for rotation).
+
+    Parameters
+    ----------
+    inertia : J [kg·m²] > 0; speed : ω0 [rad/s] > 0; brake_torque : T_b [N·m] > 0;
+    resisting_torque : T_r [N·m] of the load (>= −T_b: a load that drives harder than the brake brakes never
+        stops).
+
+    Returns
+    -------
+    Stop
+
+    Examples
+    --------
+    A 2 kg·m² rotor at 1500 rpm braked by 100 N·m stops in 3.14 s after 39.3 turns:
+
+    >>> s = stop_constant(2.0, 1500 * np.pi / 30, 100.0)
+    >>> round(s.time, 3), round(s.angle / (2 * np.pi), 2)
+    (3.142, 39.27)
+    """
+    net = brake_torque + resisting_torque
+    if not (inertia > 0 and speed > 0 and brake_torque > 0):
+        raise InputError(f"A stop needs an inertia, a speed and a brake torque > 0; got {inertia!r}, {speed!r}, "
+                         f"{brake_torque!r}.")
+    if net <= 0:
+        raise InputError(f"The brake torque {brake_torque:g} N*m does not overcome the driving load "
+                         f"{-resisting_torque:g} N*m: the machine never stops.")
+    time = inertia * speed / net
+    t = np.linspace(0.0, time, 50)
+    omega = speed - net / inertia * t
+    phi = speed * t - 0.5 * net / inertia * t**2
+    return Stop(float(time), float(phi[-1]), float(phi[-1]), t, phi, omega)
+
+
+def stop_machine(machine: Any, extra_inertia: float, speed: float, brake_torque: float, start_angle: float,
+                 *, max_turns: float = 200.0) -> Stop:
+    """Stop of a linkage machine (its reduced inertia J(φ), the reduced moment of its loads M(φ, ω)) with an
+    extra constant inertia on the crank (flywheel and drive train, reflected) by a brake torque on the crank,
+    applied at the crank angle ``start_angle`` [rad] and speed ``speed`` [rad/s].
+
+    (J(φ) + J_x) ω' = M(φ, ω) − ½ J'(φ) ω² − T_b   (the equation of motion of the equivalent machine, seed 003
+    eqs 18–19; the machine's moment is that of :class:`~machdyn.dynamics.equivalent.EquivalentMachine`),
+    integrated by :func:`scipy.integrate.solve_ivp` until ω = 0.
+
+    Parameters
+    ----------
+    machine : an :class:`~machdyn.dynamics.equivalent.EquivalentMachine` of one design.
+    extra_inertia : J_x [kg·m²] >= 0.
+    speed : ω0 [rad/s] > 0.
+    brake_torque : T_b [N·m] > 0, on the crank.
+    start_angle : φ0 [rad].
+    max_turns : a stop longer than this many crank turns is refused (the brake is too weak).
+
+    Returns
+    -------
+    Stop
+    """
+    from scipy.integrate import solve_ivp
+
+    if not (speed > 0 and brake_torque > 0 and extra_inertia >= 0):
+        raise InputError(f"A stop needs a speed and a brake torque > 0 and an extra inertia >= 0; got {speed!r}, "
+                         f"{brake_torque!r}, {extra_inertia!r}.")
+
+    def rate(_t: float, y: np.ndarray) -> list[float]:
+        phi, w = y
+        j = float(np.ravel(machine.inertia(phi))[0]) + extra_inertia
+        dj = float(np.ravel(machine.inertia.derivative(phi))[0])
+        m = float(np.ravel(machine.moment_at(phi, w))[0])
+        return [w, (m - 0.5 * dj * w * w - brake_torque) / j]
+
+    def at_rest(_t: float, y: np.ndarray) -> float:
+        return y[1]
+
+    at_rest.terminal = True  # type: ignore[attr-defined]
+    at_rest.direction = -1  # type: ignore[attr-defined]
+    j0 = float(np.ravel(machine.inertia(start_angle))[0]) + extra_inertia
+    horizon = 10.0 * j0 * speed / brake_torque + 1.0  # ten times the constant-inertia stop: ample
+    sol = solve_ivp(rate, (0.0, horizon), [start_angle, speed], events=at_rest, rtol=1e-9, atol=1e-9,
+                    max_step=horizon / 200)
+    if sol.status != 1 or (sol.y[0, -1] - start_angle) > 2 * np.pi * max_turns:
+        raise InputError(f"The brake torque {brake_torque:g} N*m does not stop the machine within "
+                         f"{horizon:.3g} s: the loads drive it harder than the brake brakes.")
+    t_end = float(sol.t_events[0][0])
+    phi_end = float(sol.y_events[0][0][0])
+    return Stop(t_end, phi_end - start_angle, float(np.mod(phi_end, 2 * np.pi)), sol.t, sol.y[0], sol.y[1])

@@ -1,0 +1,213 @@
+"""Sizing the parts that carry a linkage's joint forces over its cycle: rolling and plain bearings at revolute
+joints, pins, and two-pin links in fatigue. Each part is a check with its value, its limit and its utilisation
+(value / limit for a load, limit / value for a life or a safety factor), like the conveyor's checks.
+
+The loads are the engine's joint reactions at every crank position; the time each position lasts is dφ/ω, so a
+run at a fluctuating speed (``[flywheel]``) weights the cycle correctly.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..errors import InputError
+from ..linkage import model as _model
+from .bearings import life_exponent, mean_effective_load, plain_bearing_pv, rating_life, reliability_factor
+from .strength import goodman_safety, link_section_loads, pin_stresses
+
+HOUR = 3600.0
+
+
+@dataclass(frozen=True)
+class PartCheck:
+    """One check of a part: what, its value and limit (SI), the utilisation (1 = at the limit) and the unit."""
+
+    part: str
+    quantity: str
+    value: float
+    limit: float
+    utilisation: float
+    unit: str
+
+    @property
+    def passed(self) -> bool:
+        return bool(self.utilisation <= 1.0)
+
+
+@dataclass(frozen=True)
+class BearingSpec:
+    """A bearing at a revolute joint: rolling ("ball", "roller": rating C [N], required life [s], reliability
+    [%]) or "plain" (bore d, length l [m], allowable pressure [Pa] and pv [Pa·m/s])."""
+
+    joint: str
+    kind: str
+    capacity: float | None = None
+    life: float | None = None
+    reliability: float = 90.0
+    diameter: float | None = None
+    length: float | None = None
+    max_pressure: float | None = None
+    max_pv: float | None = None
+
+
+@dataclass(frozen=True)
+class PinSpec:
+    """A pin at a joint: diameter, length in the eye [m], shear planes, allowable shear and pressure [Pa]."""
+
+    joint: str
+    diameter: float
+    length: float
+    shear_planes: int = 2
+    allowable_shear: float | None = None
+    allowable_pressure: float | None = None
+
+
+@dataclass(frozen=True)
+class LinkSpec:
+    """A two-pin link: its cross-section area [m²], section modulus [m³], corrected endurance limit Se and
+    ultimate strength Sut [Pa], and the smallest fatigue safety factor accepted."""
+
+    body: str
+    area: float
+    section_modulus: float
+    endurance_limit: float
+    ultimate_strength: float
+    min_safety: float = 1.5
+
+
+@dataclass(frozen=True)
+class PartsResult:
+    """Every check, and the per-position series the report draws (crank angle [rad], loads, stresses)."""
+
+    checks: tuple[PartCheck, ...]
+    crank_angle: np.ndarray
+    bearing_loads: dict = field(default_factory=dict)   # joint -> (|F| [N], equal-life load [N] or None)
+    link_stress: dict = field(default_factory=dict)     # body -> (σ_max fibre [Pa], σ_min fibre [Pa])
+
+    @property
+    def failed(self) -> tuple[PartCheck, ...]:
+        return tuple(c for c in self.checks if not c.passed)
+
+
+def _cycle_weights(kin: Any) -> tuple[np.ndarray, float]:
+    """Duration [s] of each crank position (trapezoid over the periodic grid) and the cycle's period [s]."""
+    phi = np.asarray(kin.crank_angle, dtype=float).ravel()
+    speed = np.abs(np.broadcast_to(np.asarray(kin.speed, dtype=float), phi.shape))
+    if np.any(speed <= 0):
+        raise InputError("Parts are sized over a turning crank: the crank speed must be > 0 at every position.")
+    step = np.gradient(np.unwrap(phi)) if phi.size > 1 else np.array([2 * np.pi])
+    dt = np.abs(step) / speed
+    return dt, float(dt.sum())
+
+
+def _joints(mech: Any) -> dict[str, tuple[str, str, str]]:
+    return {name: (kind, b1, b2) for name, kind, b1, b2 in _model.joints(mech)}
+
+
+def _omega(kin: Any, body: str, size: int) -> np.ndarray:
+    if body == _model.GROUND:
+        return np.zeros(size)
+    return np.broadcast_to(np.asarray(kin.body(body).omega, dtype=float), (size,))
+
+
+def size_parts(forces: Any, *, bearings: tuple[BearingSpec, ...] = (), pins: tuple[PinSpec, ...] = (),
+               links: tuple[LinkSpec, ...] = ()) -> PartsResult:
+    """Check every part named against the joint forces of one design over its cycle.
+
+    Parameters
+    ----------
+    forces : the kinetostatic result (:func:`machdyn.linkage.kinetostatics`) of a single design over a whole
+        cycle of crank positions (at constant or varying speed).
+    bearings, pins, links : the parts.
+
+    Returns
+    -------
+    PartsResult
+    """
+    kin = forces.kinematics
+    mech = forces.mechanism
+    phi = np.asarray(kin.crank_angle, dtype=float).ravel()
+    size = phi.size
+    joints = _joints(mech)
+    dt, period = _cycle_weights(kin)
+    checks: list[PartCheck] = []
+    bearing_loads: dict = {}
+    link_stress: dict = {}
+
+    def joint(name: str, where: str) -> tuple[np.ndarray, np.ndarray, tuple[str, str, str]]:
+        if name not in joints:
+            raise InputError(f"{where}: no joint '{name}'; joints: {', '.join(joints)}.")
+        r = forces.joint(name)
+        fx = np.broadcast_to(np.asarray(r.fx, dtype=float), (size,))
+        fy = np.broadcast_to(np.asarray(r.fy, dtype=float), (size,))
+        return fx, fy, joints[name]
+
+    for b in bearings:
+        fx, fy, (kind, b1, b2) = joint(b.joint, f"bearing at {b.joint}")
+        if kind != "R":
+            raise InputError(f"A bearing sits at a revolute joint; '{b.joint}' is prismatic.")
+        load = np.hypot(fx, fy)
+        w_rel = np.abs(_omega(kin, b2, size) - _omega(kin, b1, size))
+        turned = w_rel * dt  # [rad] of relative rotation made at each position
+        if b.kind in ("ball", "roller"):
+            if turned.sum() <= 0:
+                raise InputError(f"The rolling bearing at {b.joint} does not turn over the cycle; give it as a "
+                                 "plain bearing or bushing.")
+            equivalent = mean_effective_load(load, turned, b.kind)
+            revs_per_hour = turned.sum() / (2 * np.pi) * HOUR / period
+            life_revs = rating_life(b.capacity, equivalent, b.kind) * reliability_factor(b.reliability) * 1e6
+            life = life_revs / revs_per_hour * HOUR  # [s]
+            bearing_loads[b.joint] = (load, equivalent)
+            if b.life is not None:
+                checks.append(PartCheck(f"bearing {b.joint}", f"rating life L{100 - b.reliability:g} "
+                                        f"(p = {life_exponent(b.kind):.3g})", life, b.life, b.life / life, "s"))
+            else:
+                checks.append(PartCheck(f"bearing {b.joint}", "rating life (no requirement)", life, 0.0, 0.0, "s"))
+        else:
+            assert b.diameter is not None and b.length is not None
+            p, pv = plain_bearing_pv(load, b.diameter, b.length, w_rel * b.diameter / 2.0)
+            bearing_loads[b.joint] = (load, None)  # a plain bearing has no equal-life load
+            if b.max_pressure is not None:
+                checks.append(PartCheck(f"bearing {b.joint}", "peak pressure p", float(p.max()), b.max_pressure,
+                                        float(p.max()) / b.max_pressure, "Pa"))
+            mean_pv = float(np.sum(pv * dt) / period)
+            if b.max_pv is not None:
+                checks.append(PartCheck(f"bearing {b.joint}", "mean p·v over the cycle", mean_pv, b.max_pv,
+                                        mean_pv / b.max_pv, "Pa*m/s"))
+    for pin in pins:
+        fx, fy, _j = joint(pin.joint, f"pin at {pin.joint}")
+        tau, p = pin_stresses(np.hypot(fx, fy), pin.diameter, pin.length, pin.shear_planes)
+        if pin.allowable_shear is not None:
+            checks.append(PartCheck(f"pin {pin.joint}", "peak shear stress", float(tau.max()), pin.allowable_shear,
+                                    float(tau.max()) / pin.allowable_shear, "Pa"))
+        if pin.allowable_pressure is not None:
+            checks.append(PartCheck(f"pin {pin.joint}", "peak bearing pressure", float(p.max()),
+                                    pin.allowable_pressure, float(p.max()) / pin.allowable_pressure, "Pa"))
+    for link in links:
+        ends = [(n, b1, b2) for n, (k, b1, b2) in joints.items() if k == "R" and link.body in (b1, b2)]
+        if len(ends) != 2:
+            raise InputError(f"A link is a body with exactly two revolute joints; '{link.body}' has {len(ends)}.")
+        (name_a, a1, _a2), (name_b, _b1, _b2) = ends
+        point_a, point_b = name_a.split(":")[0], name_b.split(":")[0]
+        body = mech.body(link.body)
+        if point_a not in body.points or point_b not in body.points:
+            raise InputError(f"The link '{link.body}' has no points named after its joints ({point_a}, {point_b}).")
+        state_a, state_b = kin.point(f"{link.body}.{point_a}"), kin.point(f"{link.body}.{point_b}")
+        fx, fy, _j = joint(name_a, f"link {link.body}")
+        if a1 != link.body:  # the reaction is on the later body: on the link when the link comes later
+            on_link = (fx, fy)
+        else:
+            on_link = (-fx, -fy)
+        axial, moment = link_section_loads(state_a, state_b, on_link, float(np.ravel(body.mass)[0]))
+        sigma_axial = axial / link.area
+        sigma_bend = np.abs(moment) / link.section_modulus
+        top, bottom = sigma_axial + sigma_bend, sigma_axial - sigma_bend
+        worst = top if np.max(np.abs(top)) >= np.max(np.abs(bottom)) else bottom
+        link_stress[link.body] = (top, bottom)
+        n = goodman_safety(float(worst.max()), float(worst.min()), link.endurance_limit, link.ultimate_strength)
+        checks.append(PartCheck(f"link {link.body}", "fatigue safety factor (modified Goodman)", float(n),
+                                link.min_safety, link.min_safety / float(n) if np.isfinite(n) else 0.0, ""))
+    return PartsResult(tuple(checks), phi, bearing_loads, link_stress)

@@ -1,0 +1,301 @@
+"""The ``[drivetrain]`` table of a mechanism problem file: the stages between motor and crank, a clutch that
+engages the flywheel side to the crank, and a brake that stops the crank side.
+
+```toml
+[drivetrain]
+motor_inertia = "0.02 kg*m^2"     # shaft 0: the motor's rotor and what turns with it
+
+[[drivetrain.stages]]             # from the motor to the crank, one shaft after each stage
+kind = "belt"
+ratio = 4.0                       # input speed / output speed
+efficiency = 0.95
+inertia = "1.2 kg*m^2"            # what sits on the stage's output shaft (pulley, flywheel rim, gear)
+
+[[drivetrain.stages]]
+kind = "gear"
+ratio = 9.0
+efficiency = 0.97
+inertia = "0.3 kg*m^2"            # the last stage's output shaft is the crank shaft
+
+[drivetrain.clutch]
+shaft = 1                         # the clutch joins shaft 1 (and all before it) to the stage after it
+slip_torque = "900 N*m"           # on that shaft
+strokes_per_minute = 20           # single strokes: for the clutch's heat
+
+[drivetrain.brake]
+torque = "2500 N*m"               # on the crank shaft
+max_angle = "45 deg"              # a stop longer than this fails the design check (exit 3)
+max_time = "0.3 s"
+```
+
+With ``[flywheel]`` the flywheel (its inertia reduced to the crank) sits on the clutch's driving side, and the
+shaft torques are those at the real speed.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Literal
+
+import numpy as np
+from pydantic import Field, model_validator
+
+from ..errors import InputError, ProblemFileError
+from ..pipeline import Capability, Outcome, StageContext
+from ..problem.fields import Angle, Inertia, Time, Torque
+from ..problem.schema import Spec
+from ..results.labels import Label
+from .clutch import Engagement, Stop, engage, stop_machine
+from .train import DriveTrain, Stage
+
+RPM = 30.0 / np.pi
+
+
+class StageTable(Spec):
+    kind: Literal["gear", "belt", "chain"] = "gear"
+    ratio: float = Field(gt=0.0, allow_inf_nan=False)
+    efficiency: float = Field(1.0, gt=0.0, le=1.0, allow_inf_nan=False)
+    inertia: Inertia = 0.0
+    name: str = ""
+
+
+class ClutchTable(Spec):
+    shaft: int | None = Field(None, ge=0)
+    slip_torque: Torque
+    motor_torque: Torque = 0.0
+    strokes_per_minute: float | None = Field(None, gt=0.0, allow_inf_nan=False)
+
+
+class BrakeTable(Spec):
+    torque: Torque
+    shaft: int | None = Field(None, ge=0)
+    at: list[Angle] = []
+    max_angle: Angle | None = None
+    max_time: Time | None = None
+
+
+class DriveTrainSpec(Spec):
+    """The ``[drivetrain]`` table."""
+
+    motor_inertia: Inertia = 0.0
+    stages: list[StageTable] = Field(min_length=1)
+    clutch: ClutchTable | None = None
+    brake: BrakeTable | None = None
+
+    @model_validator(mode="after")
+    def _shafts(self):
+        last = len(self.stages)
+        if self.clutch is not None and self.clutch.shaft is not None and self.clutch.shaft >= last:
+            raise ValueError(f"clutch.shaft must name a shaft before the crank shaft (0 to {last - 1}); got "
+                             f"{self.clutch.shaft}")
+        if self.brake is not None and self.brake.shaft is not None and self.brake.shaft > last:
+            raise ValueError(f"brake.shaft must be 0 to {last} (the crank shaft); got {self.brake.shaft}")
+        if self.clutch is not None and not self.clutch.slip_torque > 0:
+            raise ValueError(f"clutch.slip_torque must be > 0 N*m; got {self.clutch.slip_torque:g} N*m")
+        if self.brake is not None and not self.brake.torque > 0:
+            raise ValueError(f"brake.torque must be > 0 N*m; got {self.brake.torque:g} N*m")
+        return self
+
+
+@dataclass(frozen=True)
+class DriveTrainRun:
+    """What ``[drivetrain]`` computed: the train, the crank-side inertia, the shaft torques over the cycle
+    (shafts first), the clutch engagement (at the clutch shaft), the worst stop and every stop computed."""
+
+    train: DriveTrain
+    crank_angle: np.ndarray
+    shaft_torques: np.ndarray
+    clutch_shaft: int | None
+    engagement: Engagement | None
+    stops: tuple[Stop, ...]
+    worst_stop: Stop | None
+    crank_speed: float
+
+
+def train_of(table: DriveTrainSpec) -> DriveTrain:
+    stages = tuple(Stage(s.ratio, s.efficiency, s.kind, s.name) for s in table.stages)
+    return DriveTrain(stages, (table.motor_inertia, *(s.inertia for s in table.stages)))
+
+
+def flywheel_shaft(train: DriveTrain, speed_ratio: float) -> int:
+    """The shaft of the train that turns ``speed_ratio`` times faster than the crank (where ``[flywheel]``
+    puts the flywheel); an error naming the ratios where none does."""
+    ratios = train.speed_ratios
+    match = np.flatnonzero(np.isclose(ratios, speed_ratio, rtol=1e-6))
+    if match.size == 0:
+        raise InputError(f"[flywheel] speed_ratio = {speed_ratio:g} matches no shaft of [drivetrain], whose shafts "
+                         f"turn {', '.join(f'{r:g}' for r in ratios)} times as fast as the crank.")
+    return int(match[-1])
+
+
+def _clutch_shaft(table: DriveTrainSpec) -> int:
+    assert table.clutch is not None
+    return len(table.stages) - 1 if table.clutch.shaft is None else table.clutch.shaft
+
+
+def _peak_at_clutch(train: DriveTrain, shaft: int, crank_torque: np.ndarray) -> float:
+    return float(np.max(np.abs(train.shaft_torques(crank_torque)[shaft])))
+
+
+def check(problem: Any, table: DriveTrainSpec, source: str | None = None) -> list[tuple[str, str]]:
+    """Validations ``run`` relies on: the clutch carries the largest torque of the cycle at its shaft."""
+    from ..linkage import analyse, crank_angles
+    from ..problem.build import build_mechanism
+
+    try:
+        train = train_of(table)
+    except InputError as exc:
+        return [("drivetrain.stages", str(exc))]
+    flywheel = getattr(problem, "flywheel", None)
+    if flywheel is not None:
+        try:
+            flywheel_shaft(train, float(flywheel.speed_ratio))
+        except InputError as exc:
+            return [("drivetrain.stages", str(exc))]
+    if table.clutch is None:
+        return []
+    try:
+        mech = build_mechanism(problem)
+        torque = analyse(mech, crank_angles(360), abs(problem.drive.speed)).forces.driving_torque
+    except (ProblemFileError, InputError):
+        return []  # the kind's own check reports them
+    return _clutch_problems(table, train, np.asarray(torque, dtype=float))
+
+
+def _clutch_problems(table: DriveTrainSpec, train: DriveTrain, torque: np.ndarray) -> list[tuple[str, str]]:
+    assert table.clutch is not None
+    shaft = _clutch_shaft(table)
+    peak = _peak_at_clutch(train, shaft, torque)
+    if table.clutch.slip_torque <= peak:
+        return [("drivetrain.clutch.slip_torque",
+                 f"must exceed the largest torque the clutch carries on shaft {shaft} over the cycle, "
+                 f"{peak:.4g} N*m; got {table.clutch.slip_torque:.4g} N*m")]
+    return []
+
+
+def run(ctx: StageContext) -> Outcome:
+    """Stage of ``[drivetrain]``."""
+    from ..dynamics.equivalent import equivalent_machine
+
+    table: DriveTrainSpec = ctx.table
+    train = train_of(table)
+    flywheel = ctx.outcomes.get("flywheel")
+    forces = flywheel.results.real.real if flywheel is not None else ctx.analysis.forces
+    torque = np.asarray(forces.driving_torque, dtype=float)
+    if torque.ndim != 1:
+        raise InputError("[drivetrain] analyses a single design; the file describes several.")
+    crank_speed = float(np.mean(np.abs(np.ravel(ctx.analysis.kinematics.speed))))
+    problems = _clutch_problems(table, train, torque) if table.clutch is not None else []
+    if problems:
+        raise ProblemFileError(problems)
+    shaft_torques = train.shaft_torques(torque)
+    if flywheel is not None:
+        # Upstream of the flywheel the shafts carry the motor's torque, not the linkage's peaks.
+        f = flywheel_shaft(train, float(flywheel.results.table.speed_ratio))
+        steady = flywheel.results.steady
+        phi = np.asarray(forces.kinematics.crank_angle, dtype=float)
+        motor = np.interp(np.mod(phi, 2 * np.pi), np.mod(np.ravel(steady.phi), 2 * np.pi),
+                          np.ravel(steady.drive_torque), period=2 * np.pi)
+        shaft_torques[:f] = train.shaft_torques(motor)[:f]
+    machine = flywheel.results.machine if flywheel is not None else equivalent_machine(ctx.mechanism, 360)
+    fly_inertia = float(flywheel.results.flywheel) if flywheel is not None else 0.0
+    ratios = train.speed_ratios
+    n = len(train.stages)
+
+    engagement, shaft = None, None
+    if table.clutch is not None:
+        shaft = _clutch_shaft(table)
+        j = np.asarray(train.shaft_inertia)
+        scale = ratios / ratios[shaft]  # speeds relative to the clutch shaft
+        j1 = float(np.sum(j[: shaft + 1] * scale[: shaft + 1] ** 2) + fly_inertia / ratios[shaft] ** 2)
+        linkage = float(np.mean(machine.inertia(np.linspace(0, 2 * np.pi, 361)[:-1])))
+        j2 = float(np.sum(j[shaft + 1:] * scale[shaft + 1:] ** 2) + linkage / ratios[shaft] ** 2)
+        engagement = engage(j1, crank_speed * ratios[shaft], j2, 0.0, table.clutch.slip_torque,
+                            driving_torque=table.clutch.motor_torque)
+
+    stops: list[Stop] = []
+    worst = None
+    if table.brake is not None:
+        start = 0 if shaft is None else shaft + 1
+        j = np.asarray(train.shaft_inertia)
+        extra = float(np.sum(j[start:] * ratios[start:] ** 2))  # reflected to the crank
+        if shaft is None:
+            extra += fly_inertia
+        at_shaft = n if table.brake.shaft is None else table.brake.shaft
+        brake_at_crank = table.brake.torque * ratios[at_shaft]
+        angles = table.brake.at or list(np.linspace(0.0, 2 * np.pi, 12, endpoint=False))
+        for a in angles:
+            stops.append(stop_machine(machine, extra, crank_speed, brake_at_crank, float(a)))
+        worst = max(stops, key=lambda s: s.angle)
+
+    done = DriveTrainRun(train, np.asarray(forces.kinematics.crank_angle, dtype=float), shaft_torques, shaft,
+                         engagement, tuple(stops), worst, crank_speed)
+    return _outcome(done, table)
+
+
+def _outcome(done: DriveTrainRun, table: DriveTrainSpec) -> Outcome:
+    scalars: dict[str, Any] = {
+        "drivetrain.ratio": done.train.total_ratio,
+        "drivetrain.efficiency": done.train.efficiency,
+        "drivetrain.reflected_inertia": done.train.reflected_inertia(),
+    }
+    labels: dict[str, Label] = {}
+    for k, t in enumerate(done.shaft_torques):
+        where = "motor shaft" if k == 0 else ("crank shaft" if k == len(done.train.stages) else f"shaft {k}")
+        scalars[f"drivetrain.shaft_{k}.torque.max_abs"] = float(np.max(np.abs(t)))
+        labels[f"drivetrain.shaft_{k}.torque.max_abs"] = Label(f"Drive train: peak torque, {where}", "N*m")
+    failed = []
+    e = done.engagement
+    if e is not None:
+        assert table.clutch is not None and done.clutch_shaft is not None
+        ratio = done.train.speed_ratios[done.clutch_shaft]
+        scalars.update({
+            "clutch.slip_time": e.slip_time,
+            "clutch.energy": e.dissipated,
+            "clutch.crank_speed_after": e.common_speed / ratio,
+            "clutch.speed_drop": 1.0 - e.common_speed / (done.crank_speed * ratio),
+        })
+        if table.clutch.strokes_per_minute is not None:
+            scalars["clutch.heat_power"] = e.dissipated * table.clutch.strokes_per_minute / 60.0
+    s = done.worst_stop
+    if s is not None:
+        assert table.brake is not None
+        scalars.update({"brake.stop_time": s.time, "brake.stop_angle": s.angle})
+        if table.brake.max_angle is not None and s.angle > table.brake.max_angle:
+            failed.append(f"brake: the crank overruns {np.degrees(s.angle):.1f}° after the brake is applied, more "
+                          f"than brake.max_angle = {np.degrees(table.brake.max_angle):.1f}°")
+        if table.brake.max_time is not None and s.time > table.brake.max_time:
+            failed.append(f"brake: the stop takes {s.time:.3g} s, more than brake.max_time = "
+                          f"{table.brake.max_time:.3g} s")
+    series = {"drivetrain_torques": {"crank_angle": (done.crank_angle, "rad"),
+                                     **{f"shaft_{k}": (t, "N*m") for k, t in enumerate(done.shaft_torques)}}}
+    summary = tuple(k for k in scalars if not k.startswith("drivetrain.shaft_")) + \
+        ("drivetrain.shaft_0.torque.max_abs",)
+    return Outcome(results=done, scalars=scalars, labels=labels, series=series, summary=summary,
+                   failed_checks=tuple(failed))
+
+
+LABELS = {
+    "drivetrain.ratio": Label("Drive train: motor speed / crank speed", ""),
+    "drivetrain.efficiency": Label("Drive train: efficiency", ""),
+    "drivetrain.reflected_inertia": Label("Drive train: shaft inertias reflected to the crank", "kg*m^2"),
+    "clutch.slip_time": Label("Clutch: slip time of an engagement", "s"),
+    "clutch.energy": Label("Clutch: energy dissipated per engagement", "J"),
+    "clutch.crank_speed_after": Label("Clutch: crank speed when the slip ends", "rad/s", "rpm"),
+    "clutch.speed_drop": Label("Clutch: relative speed drop of the driving side (fraction)", ""),
+    "clutch.heat_power": Label("Clutch: mean heat power at the stroke rate", "W"),
+    "brake.stop_time": Label("Brake: stopping time, worst application angle", "s"),
+    "brake.stop_angle": Label("Brake: stopping angle of the crank, worst application angle", "rad", "deg"),
+}
+
+CAPABILITY = Capability(
+    table="drivetrain",
+    schema=DriveTrainSpec,
+    run=run,
+    step="drive train, clutch and brake",
+    kinds=("mechanism",),
+    labels=LABELS,
+    report="machdyn.report.drivetrain:sections",
+    check=check,
+    after=("flywheel",),
+)

@@ -1,0 +1,94 @@
+"""Report section of ``[drivetrain]``: the train drawn as stages, the torque of every shaft over the cycle, the
+clutch engagement and the brake's stops."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from matplotlib.patches import FancyBboxPatch
+
+from .html import _render, figures_html, format_value, rows_html
+from .plotkit import PALETTE, _finish
+
+RPM = 30.0 / np.pi
+
+
+def plot_train(ax: Any, train: Any, clutch_shaft: int | None = None) -> Any:
+    """The train as a row of shafts joined by their stages (ratio and efficiency written on each)."""
+    n = len(train.stages)
+    for k in range(n + 1):
+        name = "motor" if k == 0 else ("crank" if k == n else f"shaft {k}")
+        ax.add_patch(FancyBboxPatch((k * 2.0, 0.0), 1.2, 1.0, boxstyle="round,pad=0.05",
+                                    facecolor="#e8eef7", edgecolor="#0b5cad"))
+        ax.text(k * 2.0 + 0.6, 0.62, name, ha="center", va="center", fontsize="small")
+        ax.text(k * 2.0 + 0.6, 0.3, f"{format_value(train.shaft_inertia[k])} kg·m²", ha="center", va="center",
+                fontsize="x-small", color="#555555")
+    for k, s in enumerate(train.stages):
+        x = k * 2.0 + 1.25
+        ax.annotate("", (x + 0.7, 0.5), (x, 0.5), arrowprops={"arrowstyle": "->", "color": "#333333"})
+        ax.text(x + 0.35, 0.75, f"{s.kind} {format_value(s.ratio)}:1", ha="center", fontsize="x-small")
+        ax.text(x + 0.35, 0.2, f"η {format_value(s.efficiency)}", ha="center", fontsize="x-small")
+        if clutch_shaft == k:
+            ax.plot([x + 0.35, x + 0.35], [0.35, 0.65], color=PALETTE[1], linewidth=3)
+    ax.set_xlim(-0.3, 2.0 * n + 1.5)
+    ax.set_ylim(-0.1, 1.1)
+    ax.axis("off")
+    return _finish(ax, "Drive train (orange bar: clutch)", legend=False)
+
+
+def plot_shaft_torques(ax: Any, run: Any) -> Any:
+    """The torque each shaft transmits over the crank angle."""
+    phi = np.degrees(run.crank_angle)
+    n = len(run.train.stages)
+    for k, t in enumerate(run.shaft_torques):
+        name = "motor" if k == 0 else ("crank" if k == n else f"shaft {k}")
+        ax.plot(phi, t, color=PALETTE[k % len(PALETTE)], label=name)
+    ax.set_xlabel("crank angle [deg]")
+    ax.set_ylabel("torque [N·m]")
+    ax.set_yscale("symlog", linthresh=max(1e-3, float(np.max(np.abs(run.shaft_torques[0]))) / 10))
+    return _finish(ax, "Shaft torques")
+
+
+def plot_stops(ax: Any, run: Any) -> Any:
+    """Crank speed against the angle turned after the brake is applied, for every application angle."""
+    for k, s in enumerate(run.stops):
+        worst = s is run.worst_stop
+        ax.plot(np.degrees(s.phi - s.phi[0]), s.omega * RPM, color=PALETTE[0] if worst else "#bbbbbb",
+                linewidth=1.6 if worst else 0.8, label="worst" if worst else ("others" if k == 0 else None))
+    ax.set_xlabel("crank angle after the brake is applied [deg]")
+    ax.set_ylabel("crank speed [rpm]")
+    return _finish(ax, "Brake stops")
+
+
+def sections(outcome: Any) -> list[tuple[str, str]]:
+    """The ``[drivetrain]`` section."""
+    run = outcome.results
+    panels = 2 + (run.worst_stop is not None)
+
+    def draw(fig):
+        axes = fig.subplots(1, panels)
+        plot_train(axes[0], run.train, run.clutch_shaft)
+        plot_shaft_torques(axes[1], run)
+        if run.worst_stop is not None:
+            plot_stops(axes[2], run)
+
+    figure = _render("drivetrain", "Drive train, shaft torques and brake", "", (4.6 * panels, 3.4), draw,
+                     margins=(0.7, 0.3, 0.65, 0.45), wspace=0.35)
+    rows = []
+    if run.engagement is not None:
+        e = run.engagement
+        ratio = run.train.speed_ratios[run.clutch_shaft]
+        rows += [["clutch: slip time", f"{format_value(e.slip_time)} s"],
+                 ["clutch: energy dissipated per engagement", f"{format_value(e.dissipated)} J"],
+                 ["clutch: crank speed when the slip ends",
+                  f"{format_value(e.common_speed / ratio * RPM)} rpm (running {format_value(run.crank_speed * RPM)})"]]
+    if run.worst_stop is not None:
+        s = run.worst_stop
+        rows += [["brake: worst stop", f"{format_value(s.time)} s over {format_value(np.degrees(s.angle))}° of the "
+                                      f"crank, applied at {format_value(np.degrees(s.phi[0]) % 360)}°"]]
+    intro = (f"<p>{len(run.train.stages)} stage(s), motor speed / crank speed {format_value(run.train.total_ratio)},"
+             f" efficiency {format_value(run.train.efficiency)}; the shafts' inertia reflected to the crank is "
+             f"{format_value(run.train.reflected_inertia())} kg·m². Stopping time and overrun are the figures "
+             "ISO 16092-1 requires a press to know and monitor.</p>")
+    return [("Drive train", intro + figures_html([figure]) + (rows_html(rows, ("item", "value")) if rows else ""))]
