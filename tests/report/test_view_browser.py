@@ -170,3 +170,52 @@ def test_an_open_report_reloads_itself_when_watch_writes_a_new_stamp(browser, tm
     page.wait_for_selector("div.mdview[data-ready]")
     # the crank angle the reader had chosen survives the reload
     assert page.get_attribute("div.mdview[data-view=mechanism]", "data-index") == "42"
+
+
+def _scene_data(page, selector: str) -> dict:
+    return page.eval_on_selector(selector, "v => JSON.parse(v.querySelector('script.mdview-data').textContent)")
+
+
+def test_an_optimisation_plays_the_optimum_beside_the_nominal_design(browser, tmp_path):
+    result = run_problem(EXAMPLES / "compactor_optimise.toml")
+    result.write(tmp_path)
+    page, seen = _open(browser, tmp_path / "report.html")
+    side = page.query_selector_all("div.mdview[data-view=mechanism]")
+    pair = [v for v in side if "optimum" in _scene_data(page, f"#{v.get_attribute('id')}")["scenes"]]
+    assert len(pair) == 1, "one view plays the optimum beside the nominal design"
+    scenes = _scene_data(page, f"#{pair[0].get_attribute('id')}")["scenes"]
+    assert set(scenes) == {"nominal", "optimum"}
+    # each scene is its own design: the drawn crank is the nominal 30 mm and the optimum's own radius
+    best_r = float(result.outcomes["optimise"].scalars["optimise.best.variable.r"])  # SI [m]
+    for name, radius in (("nominal", 0.030), ("optimum", best_r)):
+        points = scenes[name]["points"]
+        pin = [points[k] for k in points if k.startswith("crank.")]
+        pivot = scenes[name]["ground"][0]
+        drawn = max(np.hypot(p[0][0] - pivot["x"], p[1][0] - pivot["y"]) for p in pin)
+        # coordinates are rounded to 1e-5 of the drawing's extent (< 1 m here): 1e-5 m covers it
+        assert drawn == pytest.approx(radius, abs=1e-5)
+    assert abs(best_r - 0.030) > 1e-4, "the optimum differs from the nominal design"
+    # one slider moves both
+    pair[0].query_selector("button.mdview-play").click()
+    page.wait_for_timeout(400)
+    assert int(pair[0].get_attribute("data-index")) > 0
+    assert seen["console"] == []
+
+
+def test_an_exploration_scatter_opens_its_best_design_with_its_motion(browser, tmp_path):
+    run_problem(EXAMPLES / "four_bar_press_explore.toml").write(tmp_path)
+    page, seen = _open(browser, tmp_path / "report.html")
+    space = page.query_selector("div.mdview[data-view=space]")
+    data = _scene_data(page, f"#{space.get_attribute('id')}")
+    best_row = data["highlight"]["best"]
+    assert data["status"][best_row] == "regular"
+    objective = data["y"]
+    regular = [v for v, s in zip(data["columns"][objective], data["status"], strict=True) if s == "regular"]
+    assert data["columns"][objective][best_row] == min(regular), "the ringed design is the best one"
+    space.query_selector('g.mdview-highlight[data-highlight="best"]').click()
+    detail = space.query_selector("div.mdview-detail")
+    assert detail.get_attribute("data-design") == str(best_row)
+    assert detail.query_selector("div.mdview svg") is not None, "the best design plays its motion"
+    design = data["columns"]["design"][best_row]
+    assert f"Design {design:g}" in detail.inner_text()
+    assert seen["console"] == []

@@ -91,6 +91,8 @@ class Exploration:
     seconds: float
     where: str
     units: dict[str, tuple[str, str]]
+    #: the nominal and the best designs analysed one by one for playback (filled in by the ``[sweep]`` stage)
+    views: tuple = ()
 
     @property
     def designs(self) -> int:

@@ -41,7 +41,21 @@ def run(ctx: StageContext) -> Outcome:
         return one_quantity.run(ctx)
     from .run import explore
 
-    return outcome(explore(ctx.problem, source=ctx.source))
+    return outcome(played(explore(ctx.problem, source=ctx.source)))
+
+
+def played(done: Any) -> Any:
+    """The exploration with its nominal design and its best designs analysed one by one for playback."""
+    from dataclasses import replace
+
+    from ..pipelines.design_views import MAX_VIEWS, views_of
+
+    best = done.digest.best
+    count = min(MAX_VIEWS - 1, len(best.get("design", [])))
+    names = done.plan.space.names
+    designs = {int(best["design"][r]): {n: float(best[n][r]) for n in names} for r in range(count)}
+    labels = {d: ("best design" if r == 0 else f"design {d}") for r, d in enumerate(designs)}
+    return replace(done, views=views_of(done.plan.problem, designs, labels=labels))
 
 
 def outcome(done: Any) -> Outcome:

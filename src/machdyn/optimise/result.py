@@ -59,6 +59,8 @@ class OptimiseResult:
     front_x: np.ndarray | None = None
     front_f: np.ndarray | None = None
     warnings: tuple[str, ...] = field(default_factory=tuple)
+    #: the nominal design and the optimum analysed one by one for playback (filled in by the stage)
+    views: tuple = ()
 
     @property
     def designs_per_second(self) -> float:

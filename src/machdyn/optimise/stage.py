@@ -77,6 +77,7 @@ def run(ctx: StageContext) -> Outcome:
         # checks (the rest of the run is still written), with the tightest constraints listed.
         return Outcome(results=None, scalars={"optimise.feasible": 0.0}, summary=("optimise.feasible",),
                        failed_checks=(str(exc),))
+    result = with_views(ctx.problem, result)
     mech = ctx.mechanism
     scalars: dict[str, Any] = {
         "optimise.feasible": 1.0,
@@ -121,6 +122,17 @@ def run(ctx: StageContext) -> Outcome:
     return Outcome(results=result, scalars=scalars, labels=labels, series=series, summary=tuple(summary),
                    files={"best_design.toml": str(result.problem_text)},
                    warnings=tuple(result.warnings), failed_checks=failed)
+
+
+def with_views(problem: Any, result: Any) -> Any:
+    """The result with the nominal design and the optimum analysed for playback, side by side."""
+    from dataclasses import replace
+
+    from ..pipelines.design_views import analysed, design_problem
+
+    views = (analysed(design_problem(problem, {}), "nominal"),
+             analysed(result.problem, "optimum", 0) if result.problem is not None else None)
+    return replace(result, views=tuple(v for v in views if v is not None))
 
 
 CAPABILITY = Capability(

@@ -31,10 +31,12 @@ LABELS |= {
 
 @dataclass(frozen=True)
 class SweepRun:
-    """A sweep's plan (parameter, values) and the engine's per-design summaries."""
+    """A sweep's plan (parameter, values), the engine's per-design summaries and a few designs analysed one
+    by one for playback (:mod:`machdyn.pipelines.design_views`)."""
 
     plan: Any
     result: Any
+    views: tuple = ()
 
 
 def variants(problem: Any) -> tuple[Any, list[Any]]:
@@ -97,8 +99,29 @@ def _per_variant(result: Any, n: int) -> Any:
     return replace(result, **changes)
 
 
+def _played(done: SweepRun) -> SweepRun:
+    """The sweep with up to :data:`~machdyn.pipelines.design_views.MAX_VIEWS` regular designs, evenly spread
+    over the swept values, analysed for playback."""
+    from dataclasses import replace
+
+    from .design_views import MAX_VIEWS, analysed, design_problem
+
+    plan = done.plan
+    regular = np.flatnonzero(np.asarray(done.result.regular, dtype=bool))
+    if not regular.size:
+        return done
+    chosen = regular[np.unique(np.linspace(0, regular.size - 1, min(MAX_VIEWS, regular.size)).round().astype(int))]
+    views = []
+    for i in chosen:
+        label = f"{plan.parameter} = {plan.values_display[i]:.6g} {plan.display_unit}"
+        view = analysed(design_problem(plan.problems[i], {}), label, int(i))
+        if view is not None:
+            views.append(view)
+    return replace(done, views=tuple(views))
+
+
 def run(ctx: StageContext) -> Outcome:
-    done = run_sweep(ctx.problem)
+    done = _played(run_sweep(ctx.problem))
     plan, res = done.plan, done.result
     unit = plan.display_unit
     regular = np.asarray(res.regular, dtype=bool)

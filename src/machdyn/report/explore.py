@@ -11,6 +11,7 @@ from markupsafe import escape
 
 from ..results.labels import display_factor
 from .html import _render, format_value, pretty_unit
+from .spaces import exploration_space
 
 #: At most this many quantities are drawn in the scatter matrix (the best-designs table lists them all).
 MATRIX_QUANTITIES = 6
@@ -112,4 +113,5 @@ def exploration_section(done: Any) -> str:
         rows.append("<tr>" + "".join(f"<td>{escape(c)}</td>" for c in cells) + "</tr>")
     table = (f"<table class=\"figures\"><thead><tr>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table>"
              if rows else "<p>No regular design.</p>")
-    return f"{intro}<figure class=\"plot\">{figure.svg}</figure><h3>Best designs</h3>{table}"
+    return (f"{intro}{exploration_space(done, _shown)}<figure class=\"plot\">{figure.svg}</figure>"
+            f"<h3>Best designs</h3>{table}")

@@ -9,6 +9,7 @@ import numpy as np
 from markupsafe import escape
 
 from .html import _render, figures_html, format_value, rows_html
+from .spaces import optimum_beside_nominal, pareto_space
 
 
 def plot_convergence(result: Any, ax=None):
@@ -84,4 +85,5 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
               f"design, rebuilt from its own problem file, {'meets' if result.verified else 'breaks'} every "
               "constraint.</p>")
     best = f"<h3>The best design as a problem file</h3><pre>{escape(result.problem_text)}</pre>"
-    return [("Design optimisation", status + table + results_table + figures_html(figures) + best)]
+    moving = "".join(str(v) for v in (optimum_beside_nominal(result), pareto_space(result)) if v is not None)
+    return [("Design optimisation", status + table + results_table + moving + figures_html(figures) + best)]

@@ -9,6 +9,7 @@ from markupsafe import escape
 
 from . import plots
 from .html import _render, format_value
+from .spaces import sweep_space
 
 
 def sections(outcome: Any) -> list[tuple[str, str]]:
@@ -16,7 +17,7 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
     run = outcome.results
     plan = run.plan
     return [(f"Design sweep of {plan.parameter}",
-             sweep_section(plan.parameter, plan.display_unit, plan.values_display, run.result))]
+             sweep_space(run) + sweep_section(plan.parameter, plan.display_unit, plan.values_display, run.result))]
 
 
 def sweep_section(parameter: str, unit: str, values: Any, result: Any) -> str:

@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 from markupsafe import escape
 
+from .frame_view import frame_view
 from .html import _render, format_value, rows_html
 
 _COLOURS = {"before": "#c0392b", "after": "#2471a3"}
@@ -195,7 +196,8 @@ def frame_sections(outcome: Any) -> list[tuple[str, str]]:
              f"{study.band[0]:g}–{study.band[1]:g} Hz.</p>")
     if near:
         intro += f"<p><b>Near resonance:</b> {escape('; '.join(near))}.</p>"
-    sections = [("Frame modes", intro + mode_table(study))]
+    moving = frame_view(study)
+    sections = [("Frame modes", intro + (str(moving) if moving is not None else "") + mode_table(study))]
     names = list(study.points)
     rows = []
     for k, name in enumerate(names):

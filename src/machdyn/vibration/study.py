@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -88,6 +89,15 @@ class FrameStudy:
     velocity: Comparison | None
     severity_before: tuple[Severity, ...]
     severity_after: tuple[Severity, ...] | None
+    #: the mechanism and its analysis the loads came from, placed at ``origin`` [m] and turned by ``angle``
+    #: [rad] in frame coordinates (for drawing the machine on its frame)
+    mechanism: Any = None
+    analysis: Any = None
+    origin: tuple[float, float] = (0.0, 0.0)
+    angle: float = 0.0
+    #: the variant compared ("after") and its analysis, when there is one
+    after_mechanism: Any = None
+    after_analysis: Any = None
 
     def rms(self, which: str, quantity: str) -> np.ndarray:
         resp = self.before if which == "before" else self.after
@@ -109,7 +119,7 @@ def study_frame(table, mechanism, analysis, *, balanced=None) -> FrameStudy:
     md = modes(frame)
     opts = {"orders": table.orders, "origin": tuple(table.mechanism_origin), "angle": table.mechanism_angle}
     before = steady_state(frame, shaking_loads(analysis, **opts))
-    after = acc = vel = None
+    after = acc = vel = an_after = None
     label_after = ""
     variant, label = None, ""
     if table.after is not None:
@@ -130,7 +140,8 @@ def study_frame(table, mechanism, analysis, *, balanced=None) -> FrameStudy:
                               table.standard) for p in points.values())
 
     return FrameStudy(frame, md, points, (table.label, label_after), table.direction, tuple(table.band), before,
-                      after, acc, vel, judge(before), judge(after) if after is not None else None)
+                      after, acc, vel, judge(before), judge(after) if after is not None else None, mechanism,
+                      analysis, opts["origin"], float(opts["angle"]), variant, an_after)
 
 
 def _banded_compare(before, after, points, quantity, direction, band) -> Comparison:

@@ -70,7 +70,8 @@
     });
     var shapes = s.bodies.map(function (b) {
       var node = b.shape === "link" ? el("polyline", { "class": "mdview-link", stroke: b.colour }, g)
-        : el("polygon", { "class": "mdview-body", fill: b.colour, stroke: b.colour, "data-body": b.name }, g);
+        : el("polygon", { "class": "mdview-body" + (b.shape === "frame" ? " mdview-housing" : ""), fill: b.colour,
+                          stroke: b.colour, "data-body": b.name }, g);
       node.setAttribute("data-body", b.name);
       return node;
     });
@@ -114,7 +115,7 @@
           pts = [[-w, -h], [w, -h], [w, h], [-w, h]].map(function (q) {
             return [x + c * q[0] - sn * q[1], y + sn * q[0] + c * q[1]];
           });
-        } else if (b.shape === "polygon") {
+        } else if (b.shape === "polygon" || b.shape === "frame") {
           var mx = 0, my = 0;
           pts.forEach(function (p) { mx += p[0]; my += p[1]; });
           mx /= pts.length; my /= pts.length;
@@ -321,7 +322,8 @@
     var detail = html("div", { "class": "mdview-detail" }, root);
     function numbers(i) {
       var t = html("table", { "class": "mdview-values" });
-      html("tr", {}, t).appendChild(html("th", { colspan: 3 }, null, "Design " + i + " (" + data.status[i] + ")"));
+      html("tr", {}, t).appendChild(html("th", { colspan: 3 }, null,
+        "Design " + (data.columns.design ? data.columns.design[i] : i) + " (" + data.status[i] + ")"));
       cols.forEach(function (c) {
         var tr = html("tr", {}, t);
         html("th", {}, tr, c); html("td", {}, tr, fmt(data.columns[c][i])); html("td", {}, tr, data.units[c] || "");

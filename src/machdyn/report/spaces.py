@@ -1,0 +1,124 @@
+"""Interactive design spaces of the report: a one-quantity sweep, an exploration and an optimisation.
+
+Each is a scatter the reader can re-plot against any column, hover for a design's numbers and click to open a
+design — its numbers and, for the designs the stage analysed for playback (:mod:`machdyn.pipelines.
+design_views`), its animation. After an optimisation the optimum plays beside the nominal design on one slider.
+Only regular designs set the scatter's scale, so that a design near a dead position with enormous forces does
+not squash the others into a corner.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import Any
+
+import numpy as np
+from markupsafe import Markup
+
+from .animation import design_space_html, scene, view_html
+
+
+def _scene(view: Any) -> dict[str, Any]:
+    return scene(view.analysis, view.mechanism, about=view.about)
+
+
+def _rows_of(views: Iterable[Any], designs: Any) -> dict[int, dict[str, Any]]:
+    """Scenes keyed by the row of the design in the scatter's table."""
+    where = {int(d): row for row, d in enumerate(np.asarray(designs).ravel())}
+    return {where[v.design]: _scene(v) for v in views if v.design in where}
+
+
+def sweep_space(done: Any) -> Markup:
+    """The interactive scatter of a one-quantity ``[sweep]`` (:class:`machdyn.pipelines.sweep.SweepRun`)."""
+    from ..pipelines.sweep import SWEEP_SUMMARIES
+
+    plan, res = done.plan, done.result
+    values = np.asarray(plan.values_display, dtype=float)
+    table: dict[str, Any] = {"design": np.arange(values.size), plan.parameter: values}
+    units = {plan.parameter: plan.display_unit}
+    for attr, text, unit in SWEEP_SUMMARIES:
+        table[text] = np.asarray(getattr(res, attr), dtype=float)
+        units[text] = unit
+    first = SWEEP_SUMMARIES[0][1]
+    status = ["regular" if r else "not regular (fails to assemble or passes a dead position)"
+              for r in np.asarray(res.regular, dtype=bool)]
+    return design_space_html(table, units, x=plan.parameter, y=first, status=status,
+                             scenes=_rows_of(done.views, table["design"]),
+                             highlight={v.label: v.design for v in done.views[:1]},
+                             caption="Each dot is a variant of the sweep: hover for its numbers, click to open it. "
+                                     "Designs with a moving picture: " + ", ".join(v.label for v in done.views)
+                                     + ". Axes: choose any column.")
+
+
+def exploration_space(done: Any, shown: Any) -> Markup:
+    """The interactive scatter of an exploration: a uniform sample of its regular designs and its best designs,
+    in display units (``shown(done, column, values) -> (values, unit)``)."""
+    digest, plan = done.digest, done.plan
+    sample, best = digest.sample_in_design_order(), digest.best
+    columns = [c for c in ("design", *plan.space.names, plan.objective)]
+    columns += [c for c in best if c not in columns and c not in ("assembled", "regular")]
+    seen = set()
+    rows: dict[str, list[float]] = {c: [] for c in columns}
+    for part in (best, sample):
+        for r in range(len(part.get("design", []))):
+            d = int(part["design"][r])
+            if d in seen:
+                continue
+            seen.add(d)
+            for c in columns:
+                rows[c].append(float(part[c][r]) if c in part else float("nan"))
+    table: dict[str, Any] = {}
+    units: dict[str, str] = {}
+    for c in columns:
+        if c == "design":
+            table[c] = np.asarray(rows[c])
+            continue
+        table[c], units[c] = shown(done, c, rows[c])
+    views = [v for v in done.views if v.design >= 0]
+    highlight = {"best": 0} if rows["design"] else {}
+    nominal = next((v for v in done.views if v.design < 0), None)
+    caption = ("The regular designs of a uniform sample and the best designs: hover for a design's numbers, click "
+               "to open it; the best designs also play their motion. Axes: choose any column.")
+    space = design_space_html(table, units, x=plan.space.names[0], y=plan.objective, highlight=highlight,
+                              scenes=_rows_of(views, table["design"]), caption=caption)
+    if nominal is None or not views:
+        return space
+    side = view_html({"nominal": _scene(nominal), "best design": _scene(views[0])},
+                     caption="The nominal design and the best design of the exploration, on one crank slider and "
+                             "to one scale.")
+    return Markup(space + side)
+
+
+def optimum_beside_nominal(result: Any) -> Markup | None:
+    """The optimum and the nominal design playing side by side on one slider, to one scale (None when either
+    could not be analysed)."""
+    views = {v.label: v for v in getattr(result, "views", ())}
+    if "nominal" not in views or "optimum" not in views:
+        return None
+    return view_html({"nominal": _scene(views["nominal"]), "optimum": _scene(views["optimum"])},
+                     caption="The nominal design (the file as written) and the optimum, on one crank slider and to "
+                             "one scale: drag the slider or press play.")
+
+
+def pareto_space(result: Any) -> Markup | None:
+    """The Pareto front of a multi-objective optimisation as an interactive scatter (None for one objective)."""
+    if result.front_f is None or result.front_x is None or result.front_f.shape[1] < 2:
+        return None
+    from ..results.labels import display_factor
+
+    table: dict[str, Any] = {"design": np.arange(len(result.front_f))}
+    units: dict[str, str] = {}
+    for i, (name, unit, shown_unit) in enumerate(zip(result.names, result.units, result.display_units, strict=True)):
+        table[name] = result.front_x[:, i] * display_factor(unit, shown_unit)
+        units[name] = shown_unit
+    for j, o in enumerate(result.objectives):
+        table[o.result] = result.front_f[:, j]
+        units[o.result] = "" if o.sense == "target" else o.unit
+    order = [o.result for o in result.objectives]
+    optimum = next((v for v in result.views if v.label == "optimum"), None)
+    return design_space_html(table, units, x=order[0], y=order[1], front=range(len(result.front_f)),
+                             highlight={"reported best": 0},
+                             scenes={0: _scene(optimum)} if optimum is not None else None,
+                             caption="The Pareto front: designs no other design beats in every objective. Hover "
+                                     "for a design's variables and objectives; the reported best design (best in "
+                                     "the first objective) plays its motion.")
