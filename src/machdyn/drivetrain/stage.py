@@ -74,6 +74,14 @@ class BrakeTable(Spec):
     max_time: Time | None = None
 
 
+class SingleStrokeTable(Spec):
+    """``[drivetrain.single_stroke]``: simulate one stroke of a press in single-stroke mode."""
+
+    start: Angle                      # the crank angle at rest between strokes (e.g. top dead centre)
+    brake_at: Angle | None = None     # where the clutch opens and the brake closes; default: found so that the
+                                      # crank comes to rest at ``start`` one turn on
+
+
 class DriveTrainSpec(Spec):
     """The ``[drivetrain]`` table."""
 
@@ -81,6 +89,7 @@ class DriveTrainSpec(Spec):
     stages: list[StageTable] = Field(min_length=1)
     clutch: ClutchTable | None = None
     brake: BrakeTable | None = None
+    single_stroke: SingleStrokeTable | None = None
 
     @model_validator(mode="after")
     def _shafts(self):
@@ -94,6 +103,8 @@ class DriveTrainSpec(Spec):
             raise ValueError(f"clutch.slip_torque must be > 0 N*m; got {self.clutch.slip_torque:g} N*m")
         if self.brake is not None and not self.brake.torque > 0:
             raise ValueError(f"brake.torque must be > 0 N*m; got {self.brake.torque:g} N*m")
+        if self.single_stroke is not None and (self.clutch is None or self.brake is None):
+            raise ValueError("single_stroke needs both a [drivetrain.clutch] and a [drivetrain.brake]")
         return self
 
 
@@ -110,6 +121,7 @@ class DriveTrainRun:
     stops: tuple[Stop, ...]
     worst_stop: Stop | None
     crank_speed: float
+    single_stroke: Any = None
 
 
 def train_of(table: DriveTrainSpec) -> DriveTrain:
@@ -228,9 +240,65 @@ def run(ctx: StageContext) -> Outcome:
             stops.append(stop_machine(machine, extra, crank_speed, brake_at_crank, float(a)))
         worst = max(stops, key=lambda s: s.angle)
 
+    stroke = None
+    if table.single_stroke is not None:
+        stroke = _single_stroke(table, train, machine, flywheel, fly_inertia, crank_speed)
     done = DriveTrainRun(train, np.asarray(forces.kinematics.crank_angle, dtype=float), shaft_torques, shaft,
-                         engagement, tuple(stops), worst, crank_speed)
+                         engagement, tuple(stops), worst, crank_speed, stroke)
     return _outcome(done, table)
+
+
+def idle_speed(motor: Any, nominal: float) -> float:
+    """The speed [rad/s, crank units] the flywheel side runs at between single strokes: where the motor's torque
+    falls to zero (an induction motor's synchronous speed through the drive), or the nominal speed for a drive
+    whose torque does not fall with the speed."""
+    from scipy.optimize import brentq
+
+    def torque(w: float) -> float:
+        return float(np.ravel(motor(w))[0])
+
+    if not torque(nominal) > 0:
+        return nominal
+    high = nominal
+    for _ in range(8):
+        high *= 1.25
+        if torque(high) <= 0:
+            return float(brentq(torque, nominal, high, xtol=1e-12 * nominal))
+    return nominal
+
+
+def _single_stroke(table: DriveTrainSpec, train: DriveTrain, machine: Any, flywheel: Any, fly_inertia: float,
+                   crank_speed: float) -> Any:
+    """The single stroke of ``[drivetrain.single_stroke]``, everything reduced to the crank shaft: the motor of
+    ``[flywheel.motor]`` (or the clutch table's constant ``motor_torque``) on the driving side."""
+    from .single_stroke import single_stroke
+
+    assert table.clutch is not None and table.brake is not None and table.single_stroke is not None
+    shaft = _clutch_shaft(table)
+    ratios = train.speed_ratios
+    j = np.asarray(train.shaft_inertia)
+    drive_side = float(np.sum(j[: shaft + 1] * ratios[: shaft + 1] ** 2) + fly_inertia)
+    driven_side = float(np.sum(j[shaft + 1:] * ratios[shaft + 1:] ** 2))
+    drive = flywheel.results.drive if flywheel is not None else None
+    if drive is not None and hasattr(drive, "torque_at"):
+        motor = drive.torque_at
+    else:
+        constant = float(table.clutch.motor_torque * ratios[shaft])
+        if not constant > 0:
+            raise ProblemFileError([("drivetrain.single_stroke", "needs a motor to bring the flywheel back to "
+                                     "speed: a [flywheel.motor] or drivetrain.clutch.motor_torque > 0 N*m")])
+
+        def motor(_w: float) -> float:
+            return constant
+    at_brake = len(train.stages) if table.brake.shaft is None else table.brake.shaft
+    try:
+        return single_stroke(machine, motor, drive_inertia=drive_side, driven_inertia=driven_side,
+                             speed=idle_speed(motor, crank_speed),
+                             slip_torque=float(table.clutch.slip_torque * ratios[shaft]),
+                             brake_torque=float(table.brake.torque * ratios[at_brake]),
+                             start_angle=float(table.single_stroke.start), brake_angle=table.single_stroke.brake_at)
+    except InputError as exc:
+        raise ProblemFileError([("drivetrain.single_stroke", str(exc))]) from None
 
 
 def _outcome(done: DriveTrainRun, table: DriveTrainSpec) -> Outcome:
@@ -267,9 +335,35 @@ def _outcome(done: DriveTrainRun, table: DriveTrainSpec) -> Outcome:
         if table.brake.max_time is not None and s.time > table.brake.max_time:
             failed.append(f"brake: the stop takes {s.time:.3g} s, more than brake.max_time = "
                           f"{table.brake.max_time:.3g} s")
+    k = done.single_stroke
+    if k is not None:
+        scalars.update({
+            "single_stroke.brake_angle": float(np.mod(k.brake_angle, 2 * np.pi)), "single_stroke.overrun": k.overrun,
+            "single_stroke.slip_time": k.slip_time, "single_stroke.stroke_time": k.stroke_time,
+            "single_stroke.stop_time": k.stop_time, "single_stroke.stop_angle": k.stop_angle,
+            "single_stroke.clutch_energy": k.clutch_energy, "single_stroke.brake_energy": k.brake_energy,
+            "single_stroke.speed_drop": 1.0 - k.lowest_drive_speed / k.running_speed,
+            "single_stroke.recovery_time": k.recovery_time,
+            "single_stroke.strokes_per_minute": k.strokes_per_minute,
+        })
+        if table.brake is not None and table.brake.max_angle is not None and k.stop_angle > table.brake.max_angle:
+            failed.append(f"single stroke: the crank runs {np.degrees(k.stop_angle):.1f}° after the brake closes, "
+                          f"more than brake.max_angle = {np.degrees(table.brake.max_angle):.1f}°")
+        if table.brake is not None and table.brake.max_time is not None and k.stop_time > table.brake.max_time:
+            failed.append(f"single stroke: the stop takes {k.stop_time:.3g} s, more than brake.max_time = "
+                          f"{table.brake.max_time:.3g} s")
+        wanted = table.clutch.strokes_per_minute if table.clutch is not None else None
+        if wanted is not None and k.strokes_per_minute < wanted:
+            failed.append(f"single stroke: the drive manages {k.strokes_per_minute:.3g} strokes a minute (stroke "
+                          f"{k.stroke_time:.3g} s, flywheel back to speed after {k.recovery_time:.3g} s more), fewer "
+                          f"than clutch.strokes_per_minute = {wanted:g}")
     series = {"drivetrain_torques": {"crank_angle": (done.crank_angle, "rad"),
                                      **{f"shaft_{k}": (t, "N*m") for k, t in enumerate(done.shaft_torques)}}}
-    summary = tuple(k for k in scalars if not k.startswith("drivetrain.shaft_")) + \
+    if k is not None:
+        series["single_stroke"] = {"time": (k.t, "s"), "crank_angle": (k.phi, "rad"), "crank_speed": (k.omega, "rad/s"),
+                                   "drive_side_speed": (k.omega_drive, "rad/s"),
+                                   "clutch_torque": (k.clutch_torque, "N*m")}
+    summary = tuple(key for key in scalars if not key.startswith("drivetrain.shaft_")) + \
         ("drivetrain.shaft_0.torque.max_abs",)
     return Outcome(results=done, scalars=scalars, labels=labels, series=series, summary=summary,
                    failed_checks=tuple(failed))
@@ -286,6 +380,21 @@ LABELS = {
     "clutch.heat_power": Label("Clutch: mean heat power at the stroke rate", "W"),
     "brake.stop_time": Label("Brake: stopping time, worst application angle", "s"),
     "brake.stop_angle": Label("Brake: stopping angle of the crank, worst application angle", "rad", "deg"),
+    "single_stroke.brake_angle": Label("Single stroke: crank angle where the clutch opens and the brake closes",
+                                       "rad", "deg"),
+    "single_stroke.overrun": Label("Single stroke: crank at rest past the start angle (negative: short of it)",
+                                   "rad", "deg"),
+    "single_stroke.slip_time": Label("Single stroke: clutch slip time", "s"),
+    "single_stroke.stroke_time": Label("Single stroke: time from clutch in to the crank at rest", "s"),
+    "single_stroke.stop_time": Label("Single stroke: stopping time after the brake closes", "s"),
+    "single_stroke.stop_angle": Label("Single stroke: stopping angle after the brake closes", "rad", "deg"),
+    "single_stroke.clutch_energy": Label("Single stroke: energy dissipated in the clutch", "J"),
+    "single_stroke.brake_energy": Label("Single stroke: energy dissipated in the brake", "J"),
+    "single_stroke.speed_drop": Label("Single stroke: largest speed drop of the flywheel side, relative to its "
+                                      "speed between strokes", ""),
+    "single_stroke.recovery_time": Label("Single stroke: time for the motor to bring the flywheel back after the "
+                                         "stop", "s"),
+    "single_stroke.strokes_per_minute": Label("Single stroke: most strokes a minute the drive can make", ""),
 }
 
 CAPABILITY = Capability(

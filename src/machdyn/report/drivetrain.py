@@ -61,6 +61,48 @@ def plot_stops(ax: Any, run: Any) -> Any:
     return _finish(ax, "Brake stops")
 
 
+_PHASES = (("slip", "#ffd8a8"), ("locked", "#d8f0d8"), ("braking", "#f8c8c8"), ("recovery", "#e4e4f4"))
+
+
+def plot_single_stroke(axes: Any, stroke: Any) -> Any:
+    """The single stroke against time: crank and flywheel-side speeds (crank units) with the phases shaded, and
+    the torque the clutch passes (at the crank)."""
+    speed_ax, torque_ax = axes
+    for ax in axes:
+        for name, colour in _PHASES:
+            inside = stroke.phase == name
+            if inside.any():
+                times = stroke.t[inside]
+                ax.axvspan(float(times.min()), float(times.max()), color=colour, alpha=0.6, linewidth=0,
+                           label=name if ax is speed_ax else None)
+    speed_ax.plot(stroke.t, stroke.omega * RPM, color=PALETTE[0], label="crank")
+    speed_ax.plot(stroke.t, stroke.omega_drive * RPM, color=PALETTE[1], linestyle="--", label="flywheel side")
+    speed_ax.set_xlabel("time [s]")
+    speed_ax.set_ylabel("speed, crank units [rpm]")
+    _finish(speed_ax, "Single stroke: speeds")
+    torque_ax.plot(stroke.t, stroke.clutch_torque, color=PALETTE[2])
+    torque_ax.set_xlabel("time [s]")
+    torque_ax.set_ylabel("clutch torque at the crank [N·m]")
+    return _finish(torque_ax, "Single stroke: clutch torque")
+
+
+def _stroke_html(stroke: Any) -> str:
+    figure = _render("single-stroke", "Single stroke", "Clutch in from rest, the stroke, clutch out and brake, "
+                     "then the motor bringing the flywheel back to speed.", (10.0, 3.6),
+                     lambda fig: plot_single_stroke(fig.subplots(1, 2), stroke), margins=(0.75, 0.3, 0.6, 0.45),
+                     wspace=0.3)
+    rows = [["clutch slips for", f"{format_value(stroke.slip_time)} s, dissipating "
+                                  f"{format_value(stroke.clutch_energy)} J"],
+            ["brake closes at", f"{format_value(np.degrees(stroke.brake_angle) % 360)}° of the crank"],
+            ["crank at rest after", f"{format_value(stroke.stop_time)} s and "
+                                    f"{format_value(np.degrees(stroke.stop_angle))}° of braking, "
+                                    f"{format_value(np.degrees(stroke.overrun))}° past the start angle"],
+            ["stroke (clutch in to rest)", f"{format_value(stroke.stroke_time)} s"],
+            ["flywheel back to speed", f"{format_value(stroke.recovery_time)} s after the crank stops"],
+            ["most strokes a minute", format_value(stroke.strokes_per_minute)]]
+    return "<h3>Single stroke</h3>" + figures_html([figure]) + rows_html(rows, ("item", "value"))
+
+
 def sections(outcome: Any) -> list[tuple[str, str]]:
     """The ``[drivetrain]`` section."""
     run = outcome.results
@@ -91,4 +133,6 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
              f" efficiency {format_value(run.train.efficiency)}; the shafts' inertia reflected to the crank is "
              f"{format_value(run.train.reflected_inertia())} kg·m². Stopping time and overrun are the figures "
              "ISO 16092-1 requires a press to know and monitor.</p>")
-    return [("Drive train", intro + figures_html([figure]) + (rows_html(rows, ("item", "value")) if rows else ""))]
+    stroke = _stroke_html(run.single_stroke) if getattr(run, "single_stroke", None) is not None else ""
+    return [("Drive train", intro + figures_html([figure]) + (rows_html(rows, ("item", "value")) if rows else "")
+             + stroke)]

@@ -1,0 +1,126 @@
+"""The single-stroke cycle of a press: clutch in, stroke, clutch out and brake, the flywheel's recovery.
+
+Checked against closed forms where the machine's inertia is constant (the clutch slip of Shigley's MED, 8th ed.,
+§16-8, with constant motor and load torques; Newton's constant-deceleration stop), by the work–energy balance
+of a machine whose inertia varies with the crank angle, and through the problem file and the command line."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+from machdyn.cli import app
+from machdyn.drivetrain.clutch import engage
+from machdyn.drivetrain.single_stroke import single_stroke
+from machdyn.errors import InputError
+
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "crank_press_drive.toml"
+
+
+class _Inertia:
+    """J(φ) = J0 + a·cos 2φ and its derivative: the shape of a slider-crank's reduced inertia."""
+
+    def __init__(self, j0: float, a: float = 0.0) -> None:
+        self.j0, self.a = j0, a
+
+    def __call__(self, phi):
+        return np.atleast_1d(self.j0 + self.a * np.cos(2 * np.asarray(phi, dtype=float)))
+
+    def derivative(self, phi):
+        return np.atleast_1d(-2 * self.a * np.sin(2 * np.asarray(phi, dtype=float)))
+
+
+class _Machine:
+    """The interface of :class:`~machdyn.dynamics.equivalent.EquivalentMachine` the cycle uses: J(φ) and the
+    reduced moment M(φ, ω) of the loads (a constant resisting torque, or a punching window)."""
+
+    def __init__(self, j0: float, a: float = 0.0, load: float = 0.0, window: tuple[float, float] | None = None):
+        self.inertia = _Inertia(j0, a)
+        self.load, self.window = load, window
+
+    def moment_at(self, phi, _omega):
+        phi = float(np.ravel(phi)[0])
+        if self.window is None:
+            return np.atleast_1d(-self.load)
+        inside = self.window[0] <= np.mod(phi, 2 * np.pi) <= self.window[1]
+        return np.atleast_1d(-self.load if inside else 0.0)
+
+
+def test_the_clutch_slip_of_a_constant_inertia_machine_is_shigleys_closed_form():
+    j1, j2, w0, tc, t1, t2 = 4.0, 1.5, 30.0, 120.0, 10.0, 15.0
+    k = single_stroke(_Machine(j2, load=t2), lambda _w: t1, drive_inertia=j1, driven_inertia=0.0, speed=w0,
+                      slip_torque=tc, brake_torque=400.0, start_angle=0.0, brake_angle=5.0)
+    closed = engage(j1, w0, j2, 0.0, tc, driving_torque=t1, load_torque=t2)
+    # the event locates the end of the slip to the integrator's tolerance (rtol 1e-9)
+    assert k.slip_time == pytest.approx(closed.slip_time, rel=1e-6)
+    # the dissipated energy is a trapezoid sum over steps of at most 10 ms: second order, 1e-4 of the energy
+    assert k.clutch_energy == pytest.approx(closed.dissipated, rel=1e-4)
+
+
+def test_the_brake_stop_of_a_constant_inertia_machine_is_newtons_constant_deceleration():
+    j2, tb = 2.0, 300.0
+    k = single_stroke(_Machine(j2), lambda _w: 5.0, drive_inertia=10.0, driven_inertia=0.5, speed=20.0,
+                      slip_torque=200.0, brake_torque=tb, start_angle=0.0, brake_angle=4.0)
+    # the crank speed when the brake closes, from the start of the braking history
+    w_at_brake = float(k.omega[k.phase == "braking"][0])
+    j = j2 + 0.5
+    assert k.stop_time == pytest.approx(j * w_at_brake / tb, rel=1e-6)
+    assert k.stop_angle == pytest.approx(j * w_at_brake**2 / (2 * tb), rel=1e-6)
+    assert k.brake_energy == pytest.approx(0.5 * j * w_at_brake**2, rel=1e-6)
+
+
+def test_the_found_brake_angle_brings_the_crank_to_rest_at_the_start_angle_one_turn_on():
+    machine = _Machine(1.2, a=0.3, load=800.0, window=(4.0, 4.6))
+    k = single_stroke(machine, lambda w: 60.0 * (25.0 - w), drive_inertia=30.0, driven_inertia=0.2, speed=24.0,
+                      slip_torque=900.0, brake_torque=600.0, start_angle=math.pi / 2)
+    assert abs(k.overrun) < 1e-7
+    assert math.pi / 2 + math.pi < k.brake_angle < math.pi / 2 + 2 * math.pi
+    assert k.omega[-1] == 0.0 and k.phase[-1] in ("braking", "recovery")
+
+
+def test_work_of_motor_and_loads_equals_the_kinetic_energy_change_plus_clutch_and_brake_losses():
+    machine = _Machine(1.2, a=0.3, load=800.0, window=(4.0, 4.6))
+    j1 = 30.0
+
+    def motor(w):
+        return 60.0 * (25.0 - w)  # an induction motor's slip line, at the crank
+
+    k = single_stroke(machine, motor, drive_inertia=j1, driven_inertia=0.2, speed=24.0, slip_torque=900.0,
+                      brake_torque=600.0, start_angle=0.0)
+    end = np.flatnonzero(k.t <= k.stroke_time)[-1]
+    kinetic_drive = 0.5 * j1 * (k.omega_drive[end] ** 2 - 24.0**2)  # the crank is at rest at both ends
+    losses = k.clutch_energy + k.brake_energy
+    residual = k.motor_work + k.load_work - kinetic_drive - losses
+    scale = abs(k.motor_work) + abs(k.load_work) + losses
+    # trapezoid sums over steps of at most 10 ms with switches inside some steps: 1e-3 of the energies moved
+    assert abs(residual) < 1e-3 * scale
+
+
+def test_a_clutch_too_weak_for_the_load_is_refused_by_name():
+    with pytest.raises(InputError, match="clutch does not turn the machine"):
+        single_stroke(_Machine(1.0, load=500.0), lambda _w: 10.0, drive_inertia=5.0, driven_inertia=0.0, speed=20.0,
+                      slip_torque=100.0, brake_torque=300.0, start_angle=0.0, max_time=5.0)
+
+
+def test_the_press_example_reports_its_single_stroke_and_writes_its_time_history(tmp_path):
+    result = CliRunner().invoke(app, ["run", str(EXAMPLE), "--out", str(tmp_path)])
+    assert result.exit_code == 0, result.output
+    assert "Single stroke: most strokes a minute" in result.output
+    import pandas as pd
+
+    history = pd.read_csv(tmp_path / "single_stroke.csv")
+    assert {"time [s]", "clutch_torque [N*m]"} <= set(history.columns) or len(history.columns) >= 5
+    assert history.iloc[:, 0].is_monotonic_increasing
+
+
+def test_a_stroke_rate_the_drive_cannot_reach_is_a_failed_check(tmp_path):
+    text = EXAMPLE.read_text().replace("strokes_per_minute = 20 ", "strokes_per_minute = 45 ")
+    path = tmp_path / "press.toml"
+    path.write_text(text)
+    result = CliRunner().invoke(app, ["run", str(path), "--out", str(tmp_path / "out")])
+    assert result.exit_code == 3, result.output
+    assert "strokes a minute" in result.output and "clutch.strokes_per_minute = 45" in result.output
