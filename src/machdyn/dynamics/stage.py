@@ -13,6 +13,7 @@ from typing import Any, Literal
 import numpy as np
 from pydantic import Field, model_validator
 
+from ..errors import InputError
 from ..pipeline import Capability, Outcome, StageContext
 from ..problem.fields import AngularVelocity, Density, Inertia, LinearDamping, Power, Pressure, RotaryDamping, Stress
 from ..problem.fields import PositiveVelocity as Speed
@@ -79,6 +80,8 @@ class FlywheelTable(Spec):
     delta: float | None = Field(None, gt=0.0, lt=1.0, allow_inf_nan=False)
     inertia: Inertia | None = None
     method: Literal["exact", "classic"] = "exact"
+    # size for a constant-torque drive (the classic assumption) or for the chosen motor's torque-speed curve
+    size_for: Literal["constant_torque", "motor"] = "constant_torque"
     # flywheel shaft speed / crank speed (a flywheel on a faster shaft)
     speed_ratio: float = Field(1.0, gt=0.0, allow_inf_nan=False)
     positions: int = Field(720, ge=16, le=100_000, strict=True)
@@ -105,6 +108,10 @@ LABELS = {
     "flywheel.inertia_exact": Label("Flywheel sized by the energy-mass (Wittenbauer) method", "kg*m^2"),
     "flywheel.inertia_classic": Label("Flywheel sized by ΔE/(ω²δ) less the mean reduced inertia", "kg*m^2"),
     "flywheel.method_difference": Label("Flywheel: classic / exact − 1", ""),
+    "flywheel.inertia_constant_torque": Label("Flywheel sized for a constant-torque drive", "kg*m^2"),
+    "flywheel.inertia_for_motor": Label("Flywheel sized for the chosen motor's torque-speed curve", "kg*m^2"),
+    "flywheel.motor_slip_saving": Label("Flywheel: saving by sizing for the motor's slip (1 − motor / constant "
+                                        "torque)", ""),
     "flywheel.sizing_energy_fluctuation": Label("Flywheel sizing: maximum fluctuation of energy ΔE", "J"),
     "flywheel.target_delta": Label("Coefficient of speed fluctuation: target", ""),
     "flywheel.delta": Label("Coefficient of speed fluctuation: simulated", ""),
@@ -129,7 +136,8 @@ LABELS = {
     "flywheel.joint_force_change": Label("Largest change of a joint's peak force at the real speed", ""),
 }
 
-SUMMARY = ("flywheel.inertia", "flywheel.target_delta", "flywheel.delta", "flywheel.method_difference",
+SUMMARY = ("flywheel.inertia", "flywheel.inertia_constant_torque", "flywheel.motor_slip_saving",
+           "flywheel.target_delta", "flywheel.delta", "flywheel.method_difference",
            "flywheel.mean_speed", "flywheel.peak_drive_torque", "flywheel.mean_power", "flywheel.motor_rated_power",
            "flywheel.time_to_steady", "flywheel.diameter", "flywheel.mass", "flywheel.rim_speed")
 
@@ -213,6 +221,15 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         flywheel = float(sizing.exact[0] if table.method == "exact" else sizing.classic[0])
     mean_torque = float(sizing.drive_torque[0])
     drive = _drive(table.motor, machine, flywheel, speed, mean_torque)
+    for_motor = None
+    if table.delta is not None and table.size_for == "motor" and table.motor.kind != "constant_torque":
+        from .motor_flywheel import flywheel_for_drive
+
+        try:
+            for_motor = flywheel_for_drive(machine, drive, table.delta, flywheel)
+        except InputError as exc:
+            raise ProblemFileError([("flywheel.size_for", str(exc))]) from None
+        flywheel = for_motor.inertia
     steady = steady_state(machine, drive, flywheel,
                           mean_speed=speed if table.motor.kind == "constant_torque" else None)
     warnings = list(steady.warnings)
@@ -248,6 +265,10 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         if steady.delta > table.delta * 1.05:
             failed.append(f"simulated coefficient of speed fluctuation {float(steady.delta):.4g} exceeds the target "
                           f"{table.delta:g} by more than 5 %")
+    if for_motor is not None:
+        values |= {"flywheel.inertia_constant_torque": for_motor.constant_torque,
+                   "flywheel.inertia_for_motor": for_motor.inertia,
+                   "flywheel.motor_slip_saving": for_motor.saving}
     if run is not None:
         values["flywheel.time_to_steady"] = float(run.time_to_steady)
     if hasattr(drive, "breakdown_torque") and drive.name == "induction motor":
