@@ -101,3 +101,36 @@ def test_the_example_round_trips_through_the_dumper():
 
     problem = load_problem(EXAMPLE)
     assert load_problem(dump_problem(problem)) == problem
+
+
+FLYWHEEL = '\n[flywheel]\ndelta = 0.02\nstart_up = false\n[flywheel.motor]\nkind = "constant_torque"\n'
+
+
+def test_the_cam_machine_sizes_its_flywheel_from_its_reduced_inertia_and_moment(tmp_path):
+    """The camshaft as the crank of [flywheel]: the simulated speed fluctuation meets the target, and the drive's
+    mean power is the damper's loss (the spring and the follower's inertia give back what they take)."""
+    path = tmp_path / "with_flywheel.toml"
+    path.write_text(EXAMPLE.read_text() + FLYWHEEL)
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["run", str(path), "--out", str(out), "-q"])
+    assert result.exit_code == 0, result.output
+    scalars = json.loads((out / "results.json").read_text())["scalars"]
+    assert scalars["flywheel.delta"]["value"] == pytest.approx(0.02, rel=0.05)
+    assert scalars["flywheel.mean_power"]["value"] == pytest.approx(scalars["cam.mean_power"]["value"], rel=0.02)
+    cycle = pd.read_csv(out / "flywheel_cycle.csv")
+    svaj = pd.read_csv(out / "cam_svaj.csv")
+    j = np.interp(cycle["crank_angle [rad]"], svaj["cam_angle [rad]"], 0.004 + 4.0 * svaj["v [m/rad]"] ** 2)
+    np.testing.assert_allclose(cycle["reduced_inertia [kg*m^2]"], j, rtol=2e-3)
+    assert "Flywheel and drive" in (out / "report.html").read_text()
+
+
+def test_a_flywheel_without_the_follower_train_is_refused(tmp_path):
+    text = EXAMPLE.read_text() + FLYWHEEL
+    text = text.replace('[cam.dynamics]\nmass = "4 kg"\ndamping = "15 N*s/m"\nload = "20 N"\n'
+                        'cam_inertia = "0.004 kg*m^2"\n\n[cam.spring]\npreload = "40 N"\nmargin = 0.25\n', "")
+    path = tmp_path / "no_train.toml"
+    path.write_text(text)
+    for args in (["check", str(path)], ["run", str(path), "--out", str(tmp_path / "o"), "-q"]):
+        result = runner.invoke(app, args)
+        assert result.exit_code == 2, result.output
+        assert "flywheel" in result.output and "[cam.dynamics]" in result.output

@@ -159,6 +159,13 @@ def build(problem: CamProblem) -> tuple[CamModel | None, list[tuple[str, str]]]:
                                             f"for the flat face: the cam has a cusp at cam angle "
                                             f"{np.degrees(prof.svaj.theta[k]):.4g} deg (R_b + s + a = "
                                             f"{prof.surface_curvature_radius[k] * 1e3:.4g} mm)"))
+    flywheel = getattr(problem, "flywheel", None)
+    if flywheel is not None and cam.dynamics is None:
+        problems.append(("flywheel", "a cam machine's flywheel and drive need the follower train: add "
+                                     "[cam.dynamics] (mass ...)"))
+    if flywheel is not None and flywheel.dampers:
+        problems.append(("flywheel.dampers", "a cam machine takes its damping from [cam.dynamics] damping; "
+                                             "[[flywheel.dampers]] name linkage bodies"))
     train = None
     arm = f.arm_length if follower.motion == "oscillating" else 1.0
     if cam.dynamics is not None:
