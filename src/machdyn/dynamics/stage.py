@@ -208,11 +208,16 @@ def run_flywheel(ctx: StageContext) -> Outcome:
 
     table: FlywheelTable = ctx.table
     mech = ctx.mechanism
-    speed = float(ctx.problem.drive.speed)
-    if not speed > 0:
-        raise ProblemFileError([("drive.speed", f"must be > 0 for [flywheel] (the crank turns counter-clockwise); "
-                                                f"got {speed:g} rad/s")])
-    machine = equivalent_machine(mech, table.positions, speed_loads=speed_loads(table))
+    cam = ctx.outcomes.get("cam")
+    if cam is not None:  # a cam machine: the camshaft is the crank, its reduced machine comes from the cam
+        speed = float(cam.results.speed)
+        machine = cam.results.machine(table.positions)
+    else:
+        speed = float(ctx.problem.drive.speed)
+        if not speed > 0:
+            raise ProblemFileError([("drive.speed", f"must be > 0 for [flywheel] (the crank turns "
+                                                    f"counter-clockwise); got {speed:g} rad/s")])
+        machine = equivalent_machine(mech, table.positions, speed_loads=speed_loads(table))
     target = table.delta if table.delta is not None else 0.02
     sizing = size_flywheel(machine, speed, target)
     if table.inertia is not None:
@@ -242,7 +247,7 @@ def run_flywheel(ctx: StageContext) -> Outcome:
             warnings.append(str(exc))
         except ValueError as exc:  # the drive cannot start the machine or it rolls back: a design check fails
             failed.append(str(exc))
-    real = forces_at_speed(steady)
+    real = forces_at_speed(steady) if cam is None else None
     values: dict[str, Any] = {
         "flywheel.inertia": flywheel,
         "flywheel.sizing_energy_fluctuation": float(sizing.energy_fluctuation[0]),
@@ -254,10 +259,11 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         "flywheel.rms_drive_torque": float(steady.rms_drive_torque),
         "flywheel.energy_per_cycle": float(steady.energy_per_cycle),
         "flywheel.mean_power": float(steady.mean_power),
-        "flywheel.torque_peak_constant_speed": float(real.torque_peak[1]),
-        "flywheel.torque_peak_real_speed": float(real.torque_peak[0]),
-        "flywheel.joint_force_change": real.largest_change()[1],
     }
+    if real is not None:
+        values |= {"flywheel.torque_peak_constant_speed": float(real.torque_peak[1]),
+                   "flywheel.torque_peak_real_speed": float(real.torque_peak[0]),
+                   "flywheel.joint_force_change": real.largest_change()[1]}
     if table.delta is not None:
         values |= {"flywheel.target_delta": table.delta, "flywheel.inertia_exact": float(sizing.exact[0]),
                    "flywheel.inertia_classic": float(sizing.classic[0]),
@@ -307,8 +313,7 @@ def run_flywheel(ctx: StageContext) -> Outcome:
 
 def _cycle_columns(r) -> dict[str, tuple[Any, str]]:
     s = r.steady
-    const = r.real.constant.driving_torque
-    return {
+    out = {
         "crank_angle": (s.phi, "rad"),
         "reduced_inertia": (r.machine.inertia(s.phi), "kg*m^2"),
         "load_moment": (s.load_moment, "N*m"),
@@ -316,9 +321,11 @@ def _cycle_columns(r) -> dict[str, tuple[Any, str]]:
         "acceleration": (s.acceleration, "rad/s^2"),
         "time": (s.time, "s"),
         "drive_torque": (s.drive_torque, "N*m"),
-        "linkage_torque_real_speed": (r.real.real.driving_torque, "N*m"),
-        "linkage_torque_constant_speed": (const, "N*m"),
     }
+    if r.real is not None:  # a linkage's kinetostatics at the real speed (a cam machine has none)
+        out["linkage_torque_real_speed"] = (r.real.real.driving_torque, "N*m")
+        out["linkage_torque_constant_speed"] = (r.real.constant.driving_torque, "N*m")
+    return out
 
 
 @dataclass(frozen=True)
@@ -341,7 +348,7 @@ CAPABILITY = Capability(
     schema=FlywheelTable,
     run=run_flywheel,
     step="flywheel and drive",
-    kinds=("mechanism", "rotary_screen"),
+    kinds=("mechanism", "rotary_screen", "cam"),
     labels=LABELS,
     report="machdyn.report.dynamics:sections",
 )

@@ -89,9 +89,12 @@ def plot_drive_against_load(run: Any, ax: Axes) -> Axes:
     s = run.steady
     deg = np.degrees(s.phi)
     ax.plot(deg, _row(s.drive_torque), color=PALETTE[0], label=f"drive ({run.drive.name})")
-    ax.plot(deg, _row(run.real.real.driving_torque), color=PALETTE[1], label="linkage, real speed")
-    ax.plot(deg, _row(run.real.constant.driving_torque), color=PALETTE[2], ls="--", lw=0.9,
-            label="linkage, constant speed")
+    if run.real is not None:
+        ax.plot(deg, _row(run.real.real.driving_torque), color=PALETTE[1], label="linkage, real speed")
+        ax.plot(deg, _row(run.real.constant.driving_torque), color=PALETTE[2], ls="--", lw=0.9,
+                label="linkage, constant speed")
+    else:  # a cam machine: the load's reduced moment
+        ax.plot(deg, -_row(s.load_moment), color=PALETTE[1], label="load (−reduced moment)")
     ax.axhline(0.0, color="#999999", lw=0.6)
     ax.set_xlabel("crank angle [°]")
     ax.set_ylabel("torque at the crank [N·m]")
@@ -142,6 +145,8 @@ def flywheel_rows(run: Any) -> list[list[str]]:
 def _real_speed_view(run: Any) -> str:
     """The machine moving at its simulated speed, with the speed and the driving torque at that speed under it
     (empty for a stacked run of several designs)."""
+    if run.real is None:
+        return ""
     forces = run.real.real
     kin = forces.kinematics
     if np.ndim(kin.crank_angle) != 1:
@@ -171,11 +176,13 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
         figs.append(_render("start-up", "Start-up", "", (6.0, 3.4), lambda fig: plot_start_up(run.start_up,
                                                                                              fig.subplots()),
                             margins=(0.8, 0.25, 0.55, 0.4)))
-    change_joint, change = run.real.largest_change()
     intro = (f"<p>The machine under its real drive: flywheel {format_value(run.flywheel)} kg·m², simulated "
-             f"coefficient of speed fluctuation {format_value(float(np.ravel(run.steady.delta)[0]))}. At the real "
-             f"speed the peak force of joint {change_joint} changes by {format_value(change * 100)} % against the "
-             "constant-speed analysis.</p>")
+             f"coefficient of speed fluctuation {format_value(float(np.ravel(run.steady.delta)[0]))}.")
+    if run.real is not None:
+        change_joint, change = run.real.largest_change()
+        intro += (f" At the real speed the peak force of joint {change_joint} changes by "
+                  f"{format_value(change * 100)} % against the constant-speed analysis.")
+    intro += "</p>"
     body = intro + _real_speed_view(run) + "".join(f"<figure class=\"plot\">{f.svg}</figure>" for f in figs)
     body += rows_html(flywheel_rows(run), head=("quantity", "value"))
     return [("Flywheel and drive", body)]

@@ -1,0 +1,1 @@
+"""Cams: follower motion programs, followers, profiles, the designer's checks and the cam machine's dynamics."""

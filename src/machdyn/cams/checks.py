@@ -1,0 +1,203 @@
+"""The checks a cam designer makes: pressure angle against a limit, radius of curvature against the roller
+(undercutting, a pointed cam), a flat face's width, and the smallest base circle meeting the limits.
+
+Limits (defaults):
+
+* pressure angle: 30 deg for a translating roller follower, 35 deg for an oscillating one. Norton, *Design of
+  Machinery*, 5th ed., §8.6: "keep the pressure angle between about +/-30 deg" for a translating follower (the
+  side load jams its guide); an oscillating follower has no sliding guide and tolerates more, Rothbart, *Cam
+  Design Handbook*, ch. 6, up to 45 deg; 35 deg is the lower, conservative end of the 35-45 deg range;
+* radius of curvature: the convex radius of the pitch curve must exceed the roller radius (else the cam is
+  undercut, the follower does not follow the program), and Norton §8.6 recommends |rho_min| >= 2 to 3 r_r;
+  a flat face needs rho = R_b + s + a > 0 everywhere (else the cam has a cusp: Uicker, Pennock & Shigley, *Theory
+  of Machines and Mechanisms*, 4th ed., eq 6.28);
+* face width of a flat follower: the contact point runs over v_min <= x <= v_max (Norton eq 8.38); the face must
+  span that range plus a margin on each side.
+
+The smallest base circle meeting a pressure-angle limit is found directly for a translating roller follower:
+tan phi = (v - e)/(d + s) <= tan phi_max at every angle needs d >= max(|v - e|/tan phi_max - s), and
+R_b = sqrt(d^2 + e^2) - r_r (from Norton eq 8.31). For a flat face, rho >= rho_min needs
+R_b >= max(rho_min - s - a) (from Uicker eq 6.28). An oscillating follower's limit is met by bisection on R_b.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ..errors import InputError
+from .followers import Follower
+from .profile import Profile, profile
+from .program import Program
+
+
+def default_pressure_limit(follower: Follower) -> float:
+    """The default pressure-angle limit [rad]: 30 deg translating, 35 deg oscillating (see the module)."""
+    return float(np.radians(30.0 if follower.motion == "translating" else 35.0))
+
+
+@dataclass(frozen=True)
+class CamChecks:
+    """Results of the checks (SI): the largest |pressure angle| and where, the smallest convex radius of
+    curvature of the pitch curve and of the cam surface and where, the flat face's contact range, the smallest
+    base circles meeting the limits, and the failed checks and warnings as sentences."""
+
+    max_pressure_angle: float
+    max_pressure_angle_at: float
+    pressure_angle_limit: float
+    min_pitch_radius: float
+    min_surface_radius: float
+    min_radius_at: float
+    face_min: float
+    face_max: float
+    face_width: float
+    min_base_radius_pressure: float
+    min_base_radius_curvature: float
+    failed: tuple[str, ...]
+    warnings: tuple[str, ...]
+
+
+def _convex_min(rho: np.ndarray, theta: np.ndarray) -> tuple[float, float]:
+    convex = rho > 0
+    if not np.any(convex):
+        return float("inf"), 0.0
+    i = int(np.argmin(np.where(convex, rho, np.inf)))
+    return float(rho[i]), float(theta[i])
+
+
+def min_base_radius_pressure(prog: Program, follower: Follower, limit: float, theta) -> float:
+    """The smallest base-circle radius R_b [m] for which |phi| <= limit [rad] at every cam angle theta [rad].
+
+    Translating roller or knife edge: direct (module docstring); flat face: 0 (phi = 0); oscillating: bisection
+    between the smallest assembling base circle and one where the limit is met.
+    """
+    if not 0 < limit < np.pi / 2:
+        raise InputError(f"cam.checks.pressure_angle_limit must lie between 0 and 90 deg; got "
+                         f"{np.degrees(limit):g} deg.")
+    m = prog.svaj(theta)
+    if follower.contact == "flat":
+        return 0.0
+    r = follower.roller_radius
+    if follower.motion == "translating":
+        e = follower.offset
+        d = float(np.max(np.abs(m.v - e) / np.tan(limit) - m.s))
+        d = max(d, 0.0)
+        return max(float(np.hypot(d, e)) - r, 0.0)
+
+    def worst(rb: float) -> float:
+        f = replace(follower, base_radius=rb)
+        return float(np.max(np.abs(profile(prog, f, theta).pressure_angle)))
+
+    lo_rp = abs(follower.pivot_distance - follower.arm_length)
+    hi_rp = follower.pivot_distance + follower.arm_length
+    lo = max(lo_rp - r, 0.0) * (1 + 1e-9) + 1e-12
+    hi = hi_rp - r - 1e-9 * hi_rp
+    grid = np.linspace(lo, hi, 64)
+    ok = [rb for rb in grid if rb > 0 and worst(rb) <= limit]
+    if not ok:
+        return float("nan")
+    upper = ok[0]
+    k = int(np.searchsorted(grid, upper))
+    lower = grid[k - 1] if k > 0 else lo
+    for _ in range(60):
+        mid = 0.5 * (lower + upper)
+        if mid > 0 and worst(mid) <= limit:
+            upper = mid
+        else:
+            lower = mid
+    return float(upper)
+
+
+def min_base_radius_curvature(prog: Program, follower: Follower, theta, factor: float = 1.0) -> float:
+    """The smallest base-circle radius R_b [m] for which the convex radius of curvature of the pitch curve is at
+    least ``factor`` x the roller radius (roller) or the cam's is > 0 (flat face, direct; knife edge > 0)."""
+    m = prog.svaj(theta)
+    if follower.contact == "flat":
+        return max(float(np.max(-(m.s + m.a))), 0.0)
+    need = factor * follower.roller_radius
+
+    def ok(rb: float) -> bool:
+        p = profile(prog, replace(follower, base_radius=rb), theta)
+        rho = p.pitch_curvature_radius
+        return bool(np.all((rho <= 0) | (rho > need)))
+
+    lo = 1e-6 * max(prog.stroke, 1e-3)
+    hi = max(follower.base_radius, lo * 2)
+    if follower.motion == "translating":
+        lo = max(lo, abs(follower.offset) - follower.roller_radius + 1e-9)
+        hi = max(hi, lo * 2)
+    else:
+        lo = max(lo, abs(follower.pivot_distance - follower.arm_length) - follower.roller_radius + 1e-9)
+        hi = min(follower.pivot_distance + follower.arm_length - follower.roller_radius - 1e-9, max(hi, 2 * lo))
+    grow = 0
+    while not ok(hi):
+        hi *= 2.0
+        grow += 1
+        if grow > 40 or (follower.motion == "oscillating"):
+            return float("nan")
+    if ok(lo):
+        return float(lo)
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if ok(mid):
+            hi = mid
+        else:
+            lo = mid
+    return float(hi)
+
+
+def check_cam(prof: Profile, prog: Program, *, pressure_limit: float | None = None, curvature_factor: float = 1.0,
+              face_margin: float = 0.0, face_width: float | None = None) -> CamChecks:
+    """Every check on a computed profile. ``pressure_limit`` [rad] (default :func:`default_pressure_limit`),
+    ``curvature_factor`` [-] the required rho_min / r_r (1: no undercut; Norton recommends 2-3), ``face_margin``
+    [m] added on each side of a flat face's contact range, ``face_width`` [m] the face's actual width to check
+    (centred on the follower's path)."""
+    f = prof.follower
+    th = prof.svaj.theta
+    limit = default_pressure_limit(f) if pressure_limit is None else float(pressure_limit)
+    failed: list[str] = []
+    warnings: list[str] = []
+    phi = np.abs(prof.pressure_angle)
+    i = int(np.argmax(phi))
+    if phi[i] > limit:
+        failed.append(f"pressure angle {np.degrees(phi[i]):.4g} deg at cam angle {np.degrees(th[i]):.4g} deg exceeds "
+                      f"the limit {np.degrees(limit):.4g} deg (a larger base circle, a longer rise or an offset "
+                      "lowers it)")
+    rho_p, at = _convex_min(prof.pitch_curvature_radius, th)
+    rho_s, _ = _convex_min(prof.surface_curvature_radius, th)
+    if f.contact == "flat":
+        bad = prof.surface_curvature_radius <= 0
+        if np.any(bad):
+            k = int(np.argmax(bad))
+            failed.append(f"the cam has a cusp: its radius of curvature R_b + s + a is "
+                          f"{prof.surface_curvature_radius[k] * 1e3:.4g} mm at cam angle {np.degrees(th[k]):.4g} deg "
+                          "(increase the base circle)")
+            rho_s = float(np.min(prof.surface_curvature_radius))
+            at = float(th[k])
+    elif f.contact == "roller":
+        if rho_p <= f.roller_radius * curvature_factor:
+            what = ("undercut: the roller" if rho_p <= f.roller_radius else
+                    f"the roller's radius x {curvature_factor:g} exceeds")
+            failed.append(f"{what} radius {f.roller_radius * 1e3:.4g} mm vs the smallest convex radius of "
+                          f"curvature of the pitch curve {rho_p * 1e3:.4g} mm at cam angle {np.degrees(at):.4g} deg")
+        elif rho_p < 2.0 * f.roller_radius:
+            warnings.append(f"the smallest convex radius of curvature of the pitch curve, {rho_p * 1e3:.4g} mm, is "
+                            f"less than twice the roller radius {f.roller_radius * 1e3:.4g} mm (Norton recommends "
+                            "2-3 x)")
+    lo, hi = float(np.min(prof.contact_offset)), float(np.max(prof.contact_offset))
+    width = (hi - lo) + 2.0 * face_margin if f.contact == "flat" else 0.0
+    if f.contact == "flat" and face_width is not None:
+        half = face_width / 2.0
+        need = max(abs(hi - f.offset), abs(lo - f.offset)) + face_margin
+        if half < need:
+            failed.append(f"the flat face, {face_width * 1e3:.4g} mm wide, is too narrow: the contact point runs "
+                          f"{need * 1e3:.4g} mm from the follower's axis (face at least {2 * need * 1e3:.4g} mm)")
+    return CamChecks(
+        max_pressure_angle=float(phi[i]), max_pressure_angle_at=float(th[i]), pressure_angle_limit=limit,
+        min_pitch_radius=rho_p, min_surface_radius=rho_s, min_radius_at=at, face_min=lo, face_max=hi,
+        face_width=width,
+        min_base_radius_pressure=min_base_radius_pressure(prog, f, limit, th),
+        min_base_radius_curvature=min_base_radius_curvature(prog, f, th, curvature_factor),
+        failed=tuple(failed), warnings=tuple(warnings),
+    )

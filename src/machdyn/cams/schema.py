@@ -1,0 +1,132 @@
+"""The ``[cam]`` problem file: its tables as pydantic models (every quantity an SI float).
+
+```toml
+[meta]
+name = "Feeder cam"
+[cam]
+speed = "120 rpm"
+base_radius = "40 mm"
+[cam.follower]
+motion = "translating"        # or "oscillating" (pivot_distance, arm_length)
+contact = "roller"            # "knife", "roller" or "flat"
+roller_radius = "12 mm"
+[[cam.segments]]
+motion = "rise"               # "rise", "dwell" or "return"
+angle = "100 deg"
+lift = "30 mm"                # an oscillating follower's swing: swing = "15 deg"
+law = "cycloidal"
+[cam.dynamics]                # optional: follower train, spring sizing, contact force and torque
+mass = "1.8 kg"
+[cam.spring]
+preload = "40 N"              # or rate = "2 N/mm"; the other is sized for speed x (1 + margin)
+margin = 0.25
+```
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import Field, model_validator
+
+from ..problem.fields import (
+    Angle,
+    AngularVelocity,
+    Force,
+    Inertia,
+    Length,
+    LinearDamping,
+    NonNegativeLength,
+    PositiveLength,
+    PositiveMass,
+    Stiffness,
+)
+from ..problem.schema import Meta, Spec
+
+
+class FollowerSpec(Spec):
+    """``[cam.follower]``."""
+
+    motion: Literal["translating", "oscillating"] = "translating"
+    contact: Literal["knife", "roller", "flat"] = "roller"
+    roller_radius: NonNegativeLength = 0.0
+    offset: Length = 0.0
+    pivot_distance: NonNegativeLength = 0.0
+    arm_length: NonNegativeLength = 0.0
+
+
+class SegmentSpec(Spec):
+    """``[[cam.segments]]``: a rise, dwell or return over ``angle`` of the cam."""
+
+    motion: Literal["rise", "dwell", "return"]
+    angle: Angle
+    lift: NonNegativeLength | None = None
+    swing: Angle | None = None
+    law: Literal["uniform", "parabolic", "harmonic", "cycloidal", "poly345", "poly4567", "modified_trapezoid",
+                 "modified_sine"] = "cycloidal"
+    start: Angle | None = None
+
+
+class ChecksSpec(Spec):
+    """``[cam.checks]``: the pressure-angle limit (default 30 deg translating, 35 deg oscillating), the required
+    smallest convex radius of curvature of the pitch curve / roller radius, and a flat face's width and margin."""
+
+    pressure_angle_limit: Angle | None = None
+    curvature_factor: float = Field(1.0, ge=1.0, allow_inf_nan=False)
+    face_width: PositiveLength | None = None
+    face_margin: NonNegativeLength = 0.0
+
+
+class DynamicsSpec(Spec):
+    """``[cam.dynamics]``: the follower train, lumped at the roller (an oscillating follower's arm turns it into
+    a moment of inertia m l^2 about the pivot)."""
+
+    mass: PositiveMass
+    damping: LinearDamping = 0.0
+    load: Force = 0.0
+    cam_inertia: Inertia = 0.0
+
+
+class SpringSpec(Spec):
+    """``[cam.spring]``: give the preload (the rate is sized), the rate (the preload is sized) or both (checked);
+    sized to keep contact up to speed x (1 + margin)."""
+
+    rate: Stiffness | None = None
+    preload: Force | None = None
+    margin: float = Field(0.25, ge=0.0, le=10.0, allow_inf_nan=False)
+
+
+class OutputSpec(Spec):
+    """``[cam.output]``: the cutter's or grinder's radius (default the roller's) and whether to write the DXF."""
+
+    cutter_radius: NonNegativeLength | None = None
+    dxf: bool = Field(True, strict=True)
+
+
+class CamSpec(Spec):
+    """``[cam]``."""
+
+    speed: AngularVelocity
+    base_radius: Length
+    rotation: Literal["ccw", "cw"] = "ccw"
+    positions: int = Field(720, ge=16, le=100_000, strict=True)
+    follower: FollowerSpec = FollowerSpec()
+    segments: list[SegmentSpec] = Field(min_length=2)
+    checks: ChecksSpec = ChecksSpec()
+    dynamics: DynamicsSpec | None = None
+    spring: SpringSpec = SpringSpec()
+    output: OutputSpec = OutputSpec()
+
+    @model_validator(mode="after")
+    def _speed(self):
+        if not self.speed > 0:
+            raise ValueError(f"speed must be > 0 (the cam turns at a constant speed); got {self.speed:g} rad/s")
+        return self
+
+
+class CamProblem(Spec):
+    """A cam problem file: ``[meta]`` and ``[cam]``; the capability tables (``[flywheel]``) are added to it by
+    :func:`machdyn.kinds.problem_model`."""
+
+    meta: Meta = Meta()
+    cam: CamSpec

@@ -1,0 +1,323 @@
+"""The ``[cam]`` problem kind: build (program, follower, profile; bad input named by its field), check and
+analyse (SVAJ, profile, checks, spring, contact force, camshaft torque, a forward simulation of the follower),
+with its labels, summary, CSV series (``cam_svaj``, ``cam_profile``, ``cam_forces``) and the DXF profile."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from ..errors import InputError, ProblemFileError
+from ..pipeline import Outcome, ProblemKind, Step
+from ..results.labels import Label
+from .schema import CamProblem
+
+#: result key -> (text, SI unit for a translating follower, display) ; oscillating followers' lengths are angles
+_FIXED = {
+    "cam.speed": Label("Cam speed", "rad/s", "rpm"),
+    "cam.max_pressure_angle": Label("Pressure angle: largest |phi| over the turn", "rad", "deg"),
+    "cam.pressure_angle_limit": Label("Pressure angle: limit", "rad", "deg"),
+    "cam.min_pitch_curvature_radius": Label("Pitch curve: smallest convex radius of curvature", "m", "mm"),
+    "cam.min_surface_curvature_radius": Label("Cam surface: smallest convex radius of curvature", "m", "mm"),
+    "cam.min_base_radius_pressure": Label("Smallest base circle radius meeting the pressure-angle limit", "m", "mm"),
+    "cam.min_base_radius_curvature": Label("Smallest base circle radius free of undercut / cusps", "m", "mm"),
+    "cam.base_radius": Label("Base circle radius", "m", "mm"),
+    "cam.face_width": Label("Flat face: width needed (contact range + margins)", "m", "mm"),
+    "cam.spring_preload": Label("Return spring: preload", "N"),
+    "cam.spring_rate": Label("Return spring: rate", "N/m", "N/mm"),
+    "cam.jump_speed": Label("Follower jump: lowest cam speed at which contact is lost", "rad/s", "rpm"),
+    "cam.jump_speed_ratio": Label("Follower jump speed / running speed", ""),
+    "cam.min_contact_force": Label("Contact force along the follower's path: minimum", "N"),
+    "cam.max_contact_force": Label("Contact force along the follower's path: maximum", "N"),
+    "cam.max_normal_force": Label("Contact force along the common normal: maximum", "N"),
+    "cam.peak_torque": Label("Camshaft torque: peak |T|", "N*m"),
+    "cam.rms_torque": Label("Camshaft torque: RMS over the turn", "N*m"),
+    "cam.work_per_cycle": Label("Camshaft torque: work per turn (the damper's loss)", "J",
+                                zero_below="cam.peak_torque"),
+    "cam.mean_power": Label("Camshaft: mean power", "W", zero_below="cam.peak_torque"),
+    "cam.max_reduced_inertia": Label("Reduced inertia at the camshaft: largest", "kg*m^2"),
+    "cam.simulated_max_separation": Label("Simulated follower: largest lift-off from the cam", "m", "mm"),
+    "cam.jumps": Label("Jumps of velocity or acceleration in the program", ""),
+}
+
+_MOTION_LABELS = {  # key -> (text, translating unit/display, oscillating unit/display)
+    "cam.stroke": ("Follower stroke", ("m", "mm"), ("rad", "deg")),
+    "cam.max_velocity": ("Follower velocity: peak |v|", ("m/s", None), ("rad/s", None)),
+    "cam.max_acceleration": ("Follower acceleration: peak |a|", ("m/s^2", None), ("rad/s^2", None)),
+    "cam.max_jerk": ("Follower jerk: peak |j|", ("m/s^3", None), ("rad/s^3", None)),
+}
+
+LABELS: dict[str, Label] = {**_FIXED, **{k: Label(t, u[0], u[1]) for k, (t, u, _) in _MOTION_LABELS.items()}}
+
+SUMMARY = ("cam.stroke", "cam.max_velocity", "cam.max_acceleration", "cam.max_pressure_angle",
+           "cam.pressure_angle_limit", "cam.min_pitch_curvature_radius", "cam.min_surface_curvature_radius",
+           "cam.min_base_radius_pressure", "cam.face_width", "cam.spring_rate", "cam.spring_preload",
+           "cam.jump_speed", "cam.min_contact_force", "cam.max_normal_force", "cam.peak_torque", "cam.mean_power")
+
+
+@dataclass(frozen=True)
+class CamModel:
+    """The built cam: its checked program, follower, the profile at the analysed angles and the follower train
+    in the follower's own coordinate (None without ``[cam.dynamics]``)."""
+
+    program: Any
+    follower: Any
+    profile: Any
+    train: Any
+    arm: float  # 1 for a translating follower, the arm length [m] for an oscillating one
+
+
+@dataclass(frozen=True)
+class CamResult:
+    """Everything the analysis computed (SI), for the report and the Python API."""
+
+    model: CamModel
+    speed: float
+    checks: Any
+    spring: Any
+    forces: Any
+    simulation: Any
+    clockwise: bool
+
+    def machine(self, positions: int = 720):
+        """The cam machine reduced to the camshaft (:func:`~machdyn.cams.dynamics.cam_machine`); a camshaft of
+        constant inertia (zero without ``[cam.dynamics]``) otherwise."""
+        from .dynamics import FollowerTrain, Spring, cam_machine
+
+        m = self.model
+        train = m.train if m.train is not None else FollowerTrain(mass=1e-300)
+        spring = self.spring if self.spring is not None else Spring(0.0, 0.0)
+        return cam_machine(m.program, train, spring, positions)
+
+
+def _segments(problem: CamProblem, problems: list[tuple[str, str]]):
+    from .program import Segment
+
+    osc = problem.cam.follower.motion == "oscillating"
+    out = []
+    for i, s in enumerate(problem.cam.segments):
+        path = f"cam.segments[{i}]"
+        lift = s.swing if osc else s.lift
+        other = "lift" if osc else "swing"
+        need = "swing" if osc else "lift"
+        if getattr(s, other) is not None:
+            problems.append((f"{path}.{other}", f"a {problem.cam.follower.motion} follower's segments give "
+                                                f"{need}, not {other}"))
+        if s.motion != "dwell" and lift is None:
+            problems.append((f"{path}.{need}", f"a {s.motion} needs its {need}"))
+            lift = 0.0
+        out.append(Segment(s.motion, float(s.angle), float(lift or 0.0), s.law, s.start))
+    return out
+
+
+def _field(message: str, default: str) -> str:
+    """The field a message of the cam modules names first (``cam.segments[2].angle ...``)."""
+    head = message.split(" ", 1)[0].rstrip(":.")
+    return head if head.startswith("cam.") else default
+
+
+def build(problem: CamProblem) -> tuple[CamModel | None, list[tuple[str, str]]]:
+    """The model, or the problems found, each with its field."""
+    from .dynamics import FollowerTrain
+    from .followers import Follower
+    from .profile import cam_angles, profile
+    from .program import program
+
+    problems: list[tuple[str, str]] = []
+    cam = problem.cam
+    segs = _segments(problem, problems)
+    if problems:
+        return None, problems
+    try:
+        prog = program(segs)
+    except InputError as exc:
+        return None, [(_field(str(exc), "cam.segments"), str(exc))]
+    f = cam.follower
+    try:
+        follower = Follower(f.motion, f.contact, float(cam.base_radius), float(f.roller_radius), float(f.offset),
+                            float(f.pivot_distance), float(f.arm_length))
+    except InputError as exc:
+        return None, [(_field(str(exc), "cam.follower"), str(exc))]
+    rc = cam.output.cutter_radius
+    prof = profile(prog, follower, cam_angles(cam.positions), cutter_radius=None if rc is None else float(rc),
+                   clockwise=cam.rotation == "cw")
+    if follower.contact == "roller":
+        rho = prof.pitch_curvature_radius
+        convex = rho > 0
+        if np.any(convex & (rho <= follower.roller_radius)):
+            k = int(np.argmin(np.where(convex, rho, np.inf)))
+            problems.append(("cam.follower.roller_radius",
+                             f"the roller ({follower.roller_radius * 1e3:.4g} mm) is bigger than the smallest convex "
+                             f"radius of curvature of the pitch curve, {rho[k] * 1e3:.4g} mm at cam angle "
+                             f"{np.degrees(prof.svaj.theta[k]):.4g} deg: the cam would be undercut (a smaller "
+                             "roller or a larger base circle)"))
+    if follower.contact == "flat" and np.any(prof.surface_curvature_radius <= 0):
+        k = int(np.argmin(prof.surface_curvature_radius))
+        problems.append(("cam.base_radius", f"the base circle ({follower.base_radius * 1e3:.4g} mm) is too small "
+                                            f"for the flat face: the cam has a cusp at cam angle "
+                                            f"{np.degrees(prof.svaj.theta[k]):.4g} deg (R_b + s + a = "
+                                            f"{prof.surface_curvature_radius[k] * 1e3:.4g} mm)"))
+    flywheel = getattr(problem, "flywheel", None)
+    if flywheel is not None and cam.dynamics is None:
+        problems.append(("flywheel", "a cam machine's flywheel and drive need the follower train: add "
+                                     "[cam.dynamics] (mass ...)"))
+    if flywheel is not None and flywheel.dampers:
+        problems.append(("flywheel.dampers", "a cam machine takes its damping from [cam.dynamics] damping; "
+                                             "[[flywheel.dampers]] name linkage bodies"))
+    train = None
+    arm = f.arm_length if follower.motion == "oscillating" else 1.0
+    if cam.dynamics is not None:
+        d = cam.dynamics
+        try:  # lumped at the roller; about the pivot: m l^2, c l^2, F l
+            train = FollowerTrain(d.mass * arm**2, None, None, d.damping * arm**2, d.load * arm, d.cam_inertia)
+        except InputError as exc:
+            problems.append(("cam.dynamics", str(exc)))
+    return (None if problems else CamModel(prog, follower, prof, train, arm)), problems
+
+
+def _spring(problem: CamProblem, model: CamModel):
+    from dataclasses import replace
+
+    from .dynamics import size_spring
+
+    s = problem.cam.spring
+    arm = model.arm
+    train = replace(model.train, spring_rate=None if s.rate is None else s.rate * arm**2,
+                    preload=None if s.rate is not None and s.preload is None else (s.preload or 0.0) * arm)
+    try:
+        return train, size_spring(model.program, train, float(problem.cam.speed), s.margin, 3600)
+    except InputError as exc:
+        raise ProblemFileError([("cam.spring.preload", str(exc))]) from None
+
+
+def check(problem: CamProblem, model: CamModel | None) -> list[str]:
+    """Every validation the analysis relies on; returns the program's jumps as warnings."""
+    if model is None:
+        return []
+    if model.train is not None:
+        _spring(problem, model)
+    return [f"the motion program has a {j}" for j in model.program.jumps]
+
+
+def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
+    from .checks import check_cam
+    from .dynamics import cam_forces, simulate_follower
+
+    step("profile and checks")
+    cam = problem.cam
+    prof = model.profile
+    limit = cam.checks.pressure_angle_limit
+    chk = check_cam(prof, model.program, pressure_limit=None if limit is None else float(limit),
+                    curvature_factor=cam.checks.curvature_factor, face_margin=float(cam.checks.face_margin),
+                    face_width=None if cam.checks.face_width is None else float(cam.checks.face_width))
+    speed = float(cam.speed)
+    m = prof.svaj
+    v, a, j = m.per_second(speed)
+    osc = model.follower.motion == "oscillating"
+    values: dict[str, Any] = {
+        "cam.speed": speed, "cam.base_radius": float(cam.base_radius), "cam.stroke": model.program.stroke,
+        "cam.max_velocity": float(np.max(np.abs(v))), "cam.max_acceleration": float(np.max(np.abs(a))),
+        "cam.max_jerk": float(np.max(np.abs(j))), "cam.max_pressure_angle": chk.max_pressure_angle,
+        "cam.pressure_angle_limit": chk.pressure_angle_limit, "cam.jumps": float(len(model.program.jumps)),
+    }
+    if np.isfinite(chk.min_pitch_radius):
+        values["cam.min_pitch_curvature_radius"] = chk.min_pitch_radius
+    if np.isfinite(chk.min_surface_radius):
+        values["cam.min_surface_curvature_radius"] = chk.min_surface_radius
+    warnings = [f"the motion program has a {jmp}" for jmp in model.program.jumps] + list(chk.warnings)
+    failed = list(chk.failed)
+    for key, val in (("cam.min_base_radius_pressure", chk.min_base_radius_pressure),
+                     ("cam.min_base_radius_curvature", chk.min_base_radius_curvature)):
+        if np.isfinite(val):
+            values[key] = val
+        else:
+            warnings.append(f"no base circle that assembles with this follower meets the limit ({key})")
+    if model.follower.contact == "flat":
+        values["cam.face_width"] = chk.face_width
+    spring = forces = sim = None
+    if model.train is not None:
+        step("spring, forces and simulation")
+        train, spring = _spring(problem, model)
+        forces = cam_forces(model.program, train, spring, speed, m.theta, prof.pressure_angle,
+                            model.arm if osc else None)
+        arm = model.arm
+        values |= {"cam.spring_rate": spring.rate / arm**2, "cam.spring_preload": spring.preload / arm,
+                   "cam.min_contact_force": float(np.min(forces.contact)) / arm,
+                   "cam.max_contact_force": float(np.max(forces.contact)) / arm,
+                   "cam.max_normal_force": float(np.max(forces.normal)),
+                   "cam.peak_torque": float(np.max(np.abs(forces.torque))),
+                   "cam.rms_torque": float(np.sqrt(np.mean(forces.torque**2))),
+                   "cam.work_per_cycle": forces.work_per_cycle,
+                   "cam.mean_power": forces.work_per_cycle * speed / (2 * np.pi),
+                   "cam.max_reduced_inertia": float(np.max(train.cam_inertia + train.mass * m.v**2))}
+        if np.isfinite(forces.jump_speed):
+            values["cam.jump_speed"] = forces.jump_speed
+            values["cam.jump_speed_ratio"] = forces.jump_speed / speed
+        need = 1.0 + cam.spring.margin
+        if forces.jump_speed < need * speed * (1 - 1e-9):
+            failed.append(f"follower jump: the spring keeps contact only up to {forces.jump_speed * 30 / np.pi:.4g} "
+                          f"rpm, below the running speed x {need:g} = {need * speed * 30 / np.pi:.4g} rpm")
+        sim = simulate_follower(model.program, train, spring, speed)
+        values["cam.simulated_max_separation"] = max(sim.max_separation, 0.0) * (arm if osc else 1.0)
+        if not sim.kept_contact:
+            failed.append(f"the simulated follower leaves the cam by {sim.max_separation * 1e3:.3g} "
+                          f"{'mrad' if osc else 'mm'} at the running speed")
+    labels = {}
+    if osc:
+        labels = {k: Label(t, u[0], u[1]) for k, (t, _, u) in _MOTION_LABELS.items()}
+    result = CamResult(model, speed, chk, spring, forces, sim, cam.rotation == "cw")
+    return Outcome(results=result, scalars=values, labels=labels, series=_series(result, osc),
+                   files=_files(problem, prof), summary=tuple(k for k in SUMMARY if k in values),
+                   warnings=tuple(warnings), failed_checks=tuple(failed))
+
+
+def _series(r: CamResult, osc: bool) -> dict[str, Any]:
+    m = r.model.profile.svaj
+    v, a, j = m.per_second(r.speed)
+    u = "rad" if osc else "m"
+    p = r.model.profile
+    out: dict[str, Any] = {
+        "cam_svaj": {"cam_angle": (m.theta, "rad"), "s": (m.s, u), "v": (m.v, f"{u}/rad"),
+                     "a": (m.a, f"{u}/rad^2"), "j": (m.j, f"{u}/rad^3"), "velocity": (v, f"{u}/s"),
+                     "acceleration": (a, f"{u}/s^2"), "jerk": (j, f"{u}/s^3")},
+        "cam_profile": {"cam_angle": (m.theta, "rad"), "surface_x": (p.surface[0], "m"),
+                        "surface_y": (p.surface[1], "m"), "pitch_x": (p.pitch[0], "m"), "pitch_y": (p.pitch[1], "m"),
+                        "cutter_x": (p.cutter[0], "m"), "cutter_y": (p.cutter[1], "m"),
+                        "pressure_angle": (p.pressure_angle, "rad"),
+                        "pitch_curvature_radius": (np.clip(p.pitch_curvature_radius, -1e9, 1e9), "m"),
+                        "surface_curvature_radius": (np.clip(p.surface_curvature_radius, -1e9, 1e9), "m")},
+    }
+    if r.forces is not None:
+        f = r.forces
+        arm = r.model.arm
+        out["cam_forces"] = {"cam_angle": (m.theta, "rad"), "contact_force": (f.contact / arm, "N"),
+                             "normal_force": (f.normal, "N"), "spring_force": (f.spring / arm, "N"),
+                             "inertia_force": (f.inertia / arm, "N"), "camshaft_torque": (f.torque, "N*m")}
+    return out
+
+
+def _files(problem: CamProblem, prof: Any) -> dict[str, str]:
+    if not problem.cam.output.dxf:
+        return {}
+    from .dxf import profile_dxf
+
+    curves = {"CAM": prof.surface}
+    if prof.follower.contact == "roller":
+        curves["PITCH"] = prof.pitch
+    curves["CUTTER"] = prof.cutter
+    return {"cam_profile.dxf": profile_dxf(curves)}
+
+
+KIND = ProblemKind(
+    name="cam",
+    schema=CamProblem,
+    build=build,
+    check=check,
+    analyse=analyse,
+    title=lambda problem: problem.meta.name,
+    steps=("profile and checks", "spring, forces and simulation"),
+    labels=LABELS,
+    report="machdyn.report.cams:sections",
+)
