@@ -1,0 +1,137 @@
+"""The ``[shaft_line]`` problem file: masses, cylinders and bearings on one shaft, with its balancing tables.
+
+Tables: ``[shaft_line]`` (speed, angles, harmonics, the reference plane of the couples), ``[[masses]]``,
+``[[cylinders]]``, ``[[bearings]]``, ``[balance]`` (correction planes: one for static, two for dynamic balance),
+``[grade]`` (ISO 21940-11 check), ``[locomotive]`` (partial balance of the reciprocating masses in the wheel
+planes) and ``[field_balancing]`` (influence coefficients from hand-entered readings). Every quantity carries
+its unit; unknown keys are refused.
+"""
+
+from __future__ import annotations
+
+from pydantic import Field
+
+from ..problem.fields import (
+    Angle,
+    AngularVelocity,
+    Force,
+    Length,
+    Mass,
+    NonNegativeLength,
+    PositiveLength,
+    PositiveMass,
+    PositiveStiffness,
+)
+from ..problem.schema import Meta, Name, Spec
+
+
+class ShaftLineSpec(Spec):
+    """The shaft: ``speed`` (service speed), angles per turn, harmonic orders reported and the axial position of
+    the plane about which couples are taken."""
+
+    speed: AngularVelocity
+    positions: int = Field(360, ge=16, le=100_000, strict=True)
+    harmonics: int = Field(6, ge=1, le=40, strict=True)
+    reference: Length = 0.0
+
+
+class MassSpec(Spec):
+    name: Name
+    mass: Mass
+    radius: NonNegativeLength
+    angle: Angle
+    position: Length
+
+
+class CylinderSpec(Spec):
+    name: Name
+    position: Length
+    phase: Angle = 0.0
+    axis: Angle = 0.0
+    crank: PositiveLength
+    rod: PositiveLength
+    reciprocating_mass: Mass
+    rotating_mass: Mass = 0.0
+
+
+class BearingSpec(Spec):
+    name: Name
+    position: Length
+    stiffness: PositiveStiffness = 1.0e8
+
+
+class PlaneSpec(Spec):
+    name: Name
+    position: Length
+    radius: PositiveLength
+    holes: int = Field(0, ge=0, le=360, strict=True)  # equally spaced fixed positions (0: free angle)
+    first_hole: Angle = 0.0
+
+
+class BalanceSpec(Spec):
+    """Correction planes: one (static balance) or two (dynamic balance)."""
+
+    planes: list[PlaneSpec] = Field(min_length=1, max_length=2)
+    resolution: PositiveMass | None = None  # the correction masses as fitted: rounded to multiples of this
+
+
+class GradeSpec(Spec):
+    """ISO 21940-11 check: grade G [mm/s] (a plain number, e.g. 6.3), the rotor's mass, the position of its
+    centre of mass (default midway between the bearings) and which state is checked."""
+
+    G: float
+    rotor_mass: PositiveMass
+    centre: Length | None = None
+    bearings: tuple[Name, Name] | None = None
+    state: str = Field("balanced", pattern="^(balanced|as_given)$")
+
+
+class LocomotiveSpec(Spec):
+    wheel_planes: tuple[Length, Length]
+    radius: PositiveLength
+    fraction: float = Field(ge=0.0, le=1.0)
+    dead_load: Force | None = None
+
+
+class ReadingSpec(Spec):
+    amplitude: float = Field(ge=0.0)
+    phase: Angle | None = None
+
+
+class TrialSpec(Spec):
+    plane: int = Field(ge=1, le=2, strict=True)
+    mass: PositiveMass
+    angle: Angle
+    readings: list[ReadingSpec] = Field(min_length=1, max_length=2)
+    removed: bool = True
+
+
+class FieldPlaneSpec(Spec):
+    name: Name
+    holes: int = Field(0, ge=0, le=360, strict=True)
+    first_hole: Angle = 0.0
+
+
+class FieldSpec(Spec):
+    """Hand-entered 1x readings (amplitude in ``unit``, phase from the reference mark in the sense of the
+    instrument), the original run and one trial run per plane."""
+
+    unit: str = "mm/s"
+    radius: PositiveLength | None = None
+    planes: list[FieldPlaneSpec] = Field(min_length=1, max_length=2)
+    original: list[ReadingSpec] = Field(min_length=1, max_length=2)
+    trials: list[TrialSpec] = Field(min_length=1, max_length=2)
+
+
+class ShaftLineProblem(Spec):
+    """A shaft-line problem."""
+
+    meta: Meta = Meta(name="shaft line")
+    shaft_line: ShaftLineSpec
+    masses: list[MassSpec] = []
+    cylinders: list[CylinderSpec] = []
+    bearings: list[BearingSpec] = []
+    balance: BalanceSpec | None = None
+    grade: GradeSpec | None = None
+    locomotive: LocomotiveSpec | None = None
+    field_balancing: FieldSpec | None = None
