@@ -13,17 +13,26 @@ from .schema import ShaftLineProblem
 LABELS = {
     "shaft.force.peak": Label("Shaft line: largest resultant force on the frame", "N"),
     "shaft.couple.peak": Label("Shaft line: largest resultant couple about the reference plane", "N*m"),
-    "shaft.unbalance": Label("Rotating masses: resultant unbalance sum(m r)", "kg*m", "g*mm"),
+    "shaft.unbalance": Label("Rotating masses: resultant unbalance sum(m r)", "kg*m", "g*mm",
+                             zero_below="shaft.unbalance.gross"),
+    "shaft.unbalance.gross": Label("Rotating masses: sum of the unbalances |m r|", "kg*m", "g*mm"),
     "shaft.couple_unbalance": Label("Rotating masses: resultant couple unbalance sum(m r z) about the reference",
-                                    "kg*m^2"),
+                                    "kg*m^2", zero_below="shaft.couple_unbalance.gross"),
+    "shaft.couple_unbalance.gross": Label("Rotating masses: sum of |m r z| about the reference", "kg*m^2"),
     "shaft.balance.after.force.peak": Label("After correction: largest resultant force", "N",
                                             zero_below="shaft.force.peak"),
     "shaft.balance.after.couple.peak": Label("After correction: largest resultant couple", "N*m",
                                              zero_below="shaft.couple.peak"),
-    "shaft.engine.primary_force": Label("Engine: largest primary force, two-term series", "N"),
-    "shaft.engine.secondary_force": Label("Engine: largest secondary force, two-term series", "N"),
-    "shaft.engine.primary_couple": Label("Engine: largest primary couple, two-term series", "N*m"),
-    "shaft.engine.secondary_couple": Label("Engine: largest secondary couple, two-term series", "N*m"),
+    "shaft.engine.primary_force": Label("Engine: largest primary force, two-term series", "N",
+                                    zero_below="shaft.engine.gross_force"),
+    "shaft.engine.secondary_force": Label("Engine: largest secondary force, two-term series", "N",
+                                    zero_below="shaft.engine.gross_force"),
+    "shaft.engine.primary_couple": Label("Engine: largest primary couple, two-term series", "N*m",
+                                     zero_below="shaft.engine.gross_couple"),
+    "shaft.engine.secondary_couple": Label("Engine: largest secondary couple, two-term series", "N*m",
+                                     zero_below="shaft.engine.gross_couple"),
+    "shaft.engine.gross_force": Label("Engine: sum over the cylinders of m w^2 r (scale of its forces)", "N"),
+    "shaft.engine.gross_couple": Label("Engine: sum over the cylinders of m w^2 r |z| (scale of its couples)", "N*m"),
     "shaft.engine.primary_direct": Label("Engine: primary direct-crank resultant m r", "kg*m"),
     "shaft.engine.primary_reverse": Label("Engine: primary reverse-crank resultant m r", "kg*m"),
     "shaft.engine.secondary_direct": Label("Engine: secondary direct-crank resultant m r / n", "kg*m"),
@@ -48,16 +57,22 @@ def outcome_of(result: Any) -> Outcome:
     from .rotating import unbalance
 
     line, loads = result.line, result.loads
-    sc: dict[str, Any] = {"shaft.force.peak": loads.peak_force, "shaft.couple.peak": loads.peak_couple}
+    sc: dict[str, Any] = {}
     labels: dict[str, Label] = {}
-    summary = ["shaft.force.peak", "shaft.couple.peak"]
+    summary: list[str] = []
     rotating = [*line.masses, *(c.crank_mass() for c in line.cylinders)]
     if rotating:
+        sc |= {"shaft.force.peak": loads.peak_force, "shaft.couple.peak": loads.peak_couple}
+        summary += ["shaft.force.peak", "shaft.couple.peak"]
         s0, s1 = unbalance(rotating, line.reference)
         sc["shaft.unbalance"], sc["shaft.couple_unbalance"] = abs(s0), abs(s1)
+        sc["shaft.unbalance.gross"] = sum(abs(m.unbalance) for m in rotating)
+        sc["shaft.couple_unbalance.gross"] = sum(abs(m.unbalance * (m.position - line.reference)) for m in rotating)
         summary += ["shaft.unbalance", "shaft.couple_unbalance"]
-    series: dict[str, Any] = {"shaft_loads": {"angle": (loads.angle, "rad"), "fx": (loads.fx, "N"),
-                                              "fy": (loads.fy, "N"), "mx": (loads.mx, "N*m"), "my": (loads.my, "N*m")}}
+    series: dict[str, Any] = {}
+    if rotating:
+        series["shaft_loads"] = {"angle": (loads.angle, "rad"), "fx": (loads.fx, "N"), "fy": (loads.fy, "N"),
+                                 "mx": (loads.mx, "N*m"), "my": (loads.my, "N*m")}
     if result.reactions is not None:
         r = result.reactions
         cols: dict[str, Any] = {"angle": (loads.angle, "rad")}
@@ -76,6 +91,10 @@ def outcome_of(result: Any) -> Outcome:
                "shaft.engine.primary_reverse": abs(e.primary_dr[1]),
                "shaft.engine.secondary_direct": abs(e.secondary_dr[0]),
                "shaft.engine.secondary_reverse": abs(e.secondary_dr[1])}
+        w2 = line.speed**2
+        sc["shaft.engine.gross_force"] = sum(c.reciprocating_mass * c.crank * w2 for c in line.cylinders)
+        sc["shaft.engine.gross_couple"] = sum(c.reciprocating_mass * c.crank * w2 * abs(c.position - line.reference)
+                                              for c in line.cylinders)
         summary += ["shaft.engine.primary_force", "shaft.engine.secondary_force", "shaft.engine.primary_couple",
                     "shaft.engine.secondary_couple"]
         for k, f, c in zip(e.orders, e.force_order, e.couple_order, strict=True):
