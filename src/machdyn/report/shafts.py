@@ -76,10 +76,12 @@ def _vectors(result: Any, moment: bool) -> list[tuple[complex, str, str]]:
 def plot_loads(ax: Any, result: Any, couple: bool) -> Any:
     deg = np.degrees(result.loads.angle)
     before = result.loads.couple if couple else result.loads.force
-    ax.plot(deg, before, color=PALETTE[0], label="as given")
+    ax.plot(deg, before, color=PALETTE[0], label="as given, magnitude")
+    ax.plot(deg, result.loads.my if couple else result.loads.fx, color=PALETTE[0], linestyle="--", linewidth=0.9,
+            label="as given, " + ("about y" if couple else "x component"))
     if result.balance is not None:
         after = result.balance.after.couple if couple else result.balance.after.force
-        ax.plot(deg, after, color=PALETTE[1], label="corrected")
+        ax.plot(deg, after, color=PALETTE[1], label="corrected, magnitude")
     ax.set_xlabel("shaft angle [deg]")
     ax.set_ylabel("|couple| [N·m]" if couple else "|force| [N]")
     ax.set_xlim(0, 360)
@@ -89,9 +91,15 @@ def plot_loads(ax: Any, result: Any, couple: bool) -> Any:
 
 def plot_orders(ax: Any, engine: Any) -> Any:
     k = engine.orders
-    ax.bar(k - 0.2, engine.force_order, width=0.4, color=PALETTE[0], label="force [N]")
+    # orders that cancel leave round-off (1e-13 of the largest); drawn as zero
+    force = np.where(engine.force_order > 1e-9 * max(float(engine.force_order.max()), 1e-300), engine.force_order, 0)
+    couple = np.where(engine.couple_order > 1e-9 * max(float(engine.couple_order.max()), float(force.max()), 1e-300),
+                      engine.couple_order, 0.0)
+    ax.bar(k - 0.2, force, width=0.4, color=PALETTE[0], label="force [N]")
     ax2 = ax.twinx()
-    ax2.bar(k + 0.2, engine.couple_order, width=0.4, color=PALETTE[2], label="couple [N·m]")
+    ax2.bar(k + 0.2, couple, width=0.4, color=PALETTE[2], label="couple [N·m]")
+    if not couple.any():
+        ax2.set_ylim(0.0, 1.0)
     ax.set_xlabel("order of the shaft speed")
     ax.set_ylabel("largest force [N]")
     ax2.set_ylabel("largest couple [N·m]")
