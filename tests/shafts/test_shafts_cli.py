@@ -1,0 +1,118 @@
+"""The [shaft_line] kind from the command line: examples run, bad input exits 2 naming the field, a missed grade
+exits 3, check and run agree."""
+
+from __future__ import annotations
+
+import csv
+import json
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from machdyn.cli import app
+from machdyn.errors import InputError
+from machdyn.shafts.balance import Plane, correction_unbalances
+from machdyn.shafts.field import Reading, TrialRun, single_plane, two_plane
+from machdyn.shafts.rotating import Mass
+
+ROOT = Path(__file__).resolve().parents[2]
+ROTOR = ROOT / "examples" / "shaft_rotor_g63.toml"
+ENGINE = ROOT / "examples" / "shaft_inline_four.toml"
+FIELD = ROOT / "examples" / "shaft_field_balancing.toml"
+
+
+@pytest.fixture
+def runner():
+    return CliRunner()
+
+
+def _both(runner, path: Path, tmp_path: Path) -> tuple[int, int, str]:
+    check = runner.invoke(app, ["check", str(path)])
+    run = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "out"), "-q"])
+    return check.exit_code, run.exit_code, check.output + run.output
+
+
+def test_rotor_example_reports_corrections_grade_and_series(runner, tmp_path):
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["run", str(ROTOR), "--out", str(out), "-q"])
+    assert result.exit_code == 0, result.output
+    scalars = json.loads((out / "results.json").read_text())["scalars"]
+    assert scalars["shaft.grade.U_per"]["unit"] == "g*mm"
+    assert scalars["shaft.grade.margin"]["value"] > 1.0
+    assert {"shaft.balance.L.mass", "shaft.balance.R.angle", "shaft.balance.L.hole6.mass"} <= set(scalars)
+    rows = list(csv.reader((out / "shaft_loads.csv").read_text().splitlines()))
+    assert rows[0][0].startswith("angle [") and any(h.startswith("fx_after") for h in rows[0])
+    assert len(rows) == 361
+    html = (out / "report.html").read_text()
+    assert "Shaft line" in html and "Force polygon" in html
+
+
+def test_engine_and_field_examples_run(runner, tmp_path):
+    for path in (ENGINE, FIELD):
+        result = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / path.stem), "-q"])
+        assert result.exit_code == 0, result.output
+    orders = list(csv.reader((tmp_path / ENGINE.stem / "shaft_orders.csv").read_text().splitlines()))
+    assert len(orders) == 7
+    scalars = json.loads((tmp_path / FIELD.stem / "results.json").read_text())["scalars"]
+    assert scalars["shaft.field.drive_end.mass"]["unit"] == "g"
+
+
+def test_correction_planes_at_one_position_are_refused(runner, tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text(ROTOR.read_text().replace('{ name = "R", position = "700 mm"', '{ name = "R", position = "100 mm"'))
+    check, run, output = _both(runner, bad, tmp_path)
+    assert check == run == 2, output
+    assert "balance.planes[1].position" in output and "different axial positions" in output
+    assert "Traceback" not in output
+    with pytest.raises(InputError, match="different axial positions"):
+        correction_unbalances([Mass("a", 1.0, 0.1, 0.0, 0.2)], Plane("L", 0.3, 0.1), Plane("M", 0.3, 0.1))
+
+
+def test_readings_without_phase_are_refused(runner, tmp_path):
+    bad = tmp_path / "nophase.toml"
+    bad.write_text(FIELD.read_text().replace('{ amplitude = 8.6, phase = "62 deg" }', "{ amplitude = 8.6 }"))
+    check, run, output = _both(runner, bad, tmp_path)
+    assert check == run == 2, output
+    assert "field_balancing.original[0].phase" in output and "phase reference" in output
+    with pytest.raises(InputError, match="no phase"):
+        single_plane(Reading(3.0, None), 0.01, 0.0, Reading(2.0, 0.4))
+
+
+def test_a_singular_influence_matrix_is_named(runner, tmp_path):
+    # the trial in plane 2 changes nothing: both trial runs read what the original run read
+    text = FIELD.read_text()
+    text = text.replace('{ amplitude = 7.4, phase = "49 deg" }', '{ amplitude = 8.6, phase = "62 deg" }')
+    text = text.replace('{ amplitude = 3.3, phase = "196 deg" }', '{ amplitude = 6.1, phase = "147 deg" }')
+    bad = tmp_path / "singular.toml"
+    bad.write_text(text)
+    check, run, output = _both(runner, bad, tmp_path)
+    assert check == run == 2, output
+    assert "influence matrix is singular" in output
+    o = [Reading(1.0, 0.0), Reading(1.0, 1.0)]
+    same = TrialRun(0, 0.01, 0.0, (Reading(2.0, 0.0), Reading(2.0, 1.0)))
+    alike = TrialRun(1, 0.01, 0.0, (Reading(2.0, 0.0), Reading(2.0, 1.0)))  # acts exactly like the first
+    with pytest.raises(InputError, match="singular"):
+        two_plane(o, [same, alike])
+    with pytest.raises(InputError, match="singular"):
+        single_plane(Reading(1.0, 0.3), 1e-3, 0.0, Reading(1.0, 0.3))
+
+
+def test_a_rotor_missing_its_grade_exits_3(runner, tmp_path):
+    text = ROTOR.read_text().replace('G = 6.3', 'G = 0.4').replace('state', 'state')
+    text = text.replace('resolution = "0.5 g"', 'resolution = "5 g"')
+    bad = tmp_path / "strict.toml"
+    bad.write_text(text)
+    result = runner.invoke(app, ["run", str(bad), "--out", str(tmp_path / "o"), "-q"])
+    assert result.exit_code == 3, result.output
+    assert "G 0.4" in result.output
+
+
+def test_unknown_grade_and_one_bearing_are_refused(runner, tmp_path):
+    bad = tmp_path / "grade.toml"
+    text = ROTOR.read_text().replace("G = 6.3", "G = 5.0")
+    text = text.replace('[[bearings]]\nname = "B"\nposition = "800 mm"\n', "")
+    bad.write_text(text)
+    check, run, output = _both(runner, bad, tmp_path)
+    assert check == run == 2, output
+    assert "grade.G" in output and "bearings" in output
