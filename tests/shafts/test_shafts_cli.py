@@ -116,3 +116,19 @@ def test_unknown_grade_and_one_bearing_are_refused(runner, tmp_path):
     check, run, output = _both(runner, bad, tmp_path)
     assert check == run == 2, output
     assert "grade.G" in output and "bearings" in output
+
+
+def test_engine_on_mounts_reports_modes_and_a_free_frame_is_refused(runner, tmp_path):
+    out = tmp_path / "e"
+    result = runner.invoke(app, ["run", str(ENGINE), "--out", str(out), "-q"])
+    assert result.exit_code == 0, result.output
+    scalars = json.loads((out / "results.json").read_text())["scalars"]
+    assert {f"shaft.frame.mode{k}.frequency" for k in range(1, 7)} <= set(scalars)
+    assert scalars["shaft.frame.point.head.rms_velocity"]["unit"] == "mm/s"
+    text = ENGINE.read_text()
+    start = text.index('[[frame.mounts]]\nname = "axial"')
+    free = tmp_path / "free.toml"
+    free.write_text(text[:start] + text[text.index("[[frame.points]]"):])  # nothing holds it along the shaft
+    check, run, output = _both(runner, free, tmp_path)
+    assert check == run == 2, output
+    assert "free to move" in output

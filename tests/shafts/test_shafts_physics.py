@@ -183,3 +183,34 @@ def test_equivalent_unbalances_in_two_planes_carry_force_and_couple():
     eq = [Mass("A", abs(ua), 1.0, float(np.angle(ua)), 0.0), Mass("B", abs(ub), 1.0, float(np.angle(ub)), 1.0)]
     a, b = rotating_loads(masses, 10.0), rotating_loads(eq, 10.0)
     assert np.allclose(a.fx, b.fx) and np.allclose(a.my, b.my) and np.allclose(a.mx, b.mx)
+
+
+def test_the_six_dof_frame_reduces_to_the_planar_frame_for_planar_loads():
+    """Mounts in the plane z = 0 acting in it (plus vertical z springs that hold the out-of-plane motions), a
+    centre of mass in the plane: the in-plane natural frequencies and the steady response to in-plane loads are
+    those of machdyn.vibration's planar Frame."""
+    from machdyn.shafts.frame6 import Frame6, Mount6, modes6, steady_response
+    from machdyn.vibration.frame import Frame, Mount
+    from machdyn.vibration.modes import modes
+    from machdyn.vibration.response import harmonic_loads, steady_state
+
+    planar_mounts = [Mount("a", (-0.5, -0.3), math.pi / 2, 2e5, 300.0),
+                     Mount("b", (0.6, -0.3), math.pi / 2, 3e5, 200.0), Mount("c", (0.0, -0.3), 0.0, 1.5e5, 100.0)]
+    planar = Frame(120.0, 9.0, tuple(planar_mounts), com=(0.05, 0.1))
+    mounts6 = [Mount6(m.name, (*m.position, 0.0), (*m.unit_vector, 0.0), m.stiffness, m.damping)
+               for m in planar_mounts]
+    mounts6 += [Mount6(f"z{i}", p, (0.0, 0.0, 1.0), 4e5) for i, p in enumerate(((-0.5, -0.3, 0.0),
+                                                                                (0.6, -0.3, 0.0), (0.0, 0.5, 0.0)))]
+    frame = Frame6(120.0, (4.0, 5.0, 9.0), tuple(mounts6), com=(0.05, 0.1, 0.0))
+    f6, _ = modes6(frame)
+    f3 = modes(planar).frequencies
+    in_plane = [f for f in f6 if np.min(np.abs(f - f3)) <= 1e-9 * f]
+    assert len(in_plane) >= 3
+    # a rotating force in the plane through the origin: compare the response of the in-plane coordinates
+    loads = rotating_loads([Mass("u", 1.0, 0.01, 0.3, 0.0)], 80.0, cycle(64))
+    resp = steady_response(frame, loads, orders=2)
+    fx, fy = np.fft.rfft(loads.fx)[1] * 2 / 64, np.fft.rfft(loads.fy)[1] * 2 / 64
+    planar_resp = steady_state(planar, harmonic_loads(80.0, fx, fy, 0.0))
+    q3 = planar_resp.coordinates[0]
+    assert np.allclose(resp.q[0][[0, 1, 5]], q3, rtol=1e-9, atol=1e-15)
+    assert np.allclose(resp.q[0][[2, 3, 4]], 0.0, atol=1e-15)

@@ -154,6 +154,13 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
         rows += [["locomotive: hammer blow", f"{format_value(lo.hammer_blow)} N"],
                  ["locomotive: variation of tractive effort", f"±{format_value(lo.tractive_effort_variation)} N"],
                  ["locomotive: swaying couple", f"±{format_value(lo.swaying_couple)} N·m"]]
+    if result.frame_frequencies is not None:
+        rows.append(["frame on its mounts: natural frequencies",
+                     ", ".join(f"{format_value(v)} Hz" for v in result.frame_frequencies)])
+        for name, force in result.frame_response.mount_force.items():
+            rows.append([f"mount {name}: largest dynamic force", f"{format_value(force)} N"])
+        for name, v in result.frame_response.rms_velocity.items():
+            rows.append([f"frame point {name}: RMS velocity", f"{format_value(v * 1e3)} mm/s"])
     f = result.line.field
     if f is not None:
         for name, m, a, eff in zip(result.line.field_names, f.correction_mass, f.correction_angle, f.trial_effect,

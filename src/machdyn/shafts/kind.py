@@ -172,6 +172,24 @@ def outcome_of(result: Any) -> Outcome:
             if lo.lift_speed < line.speed:
                 failed.append(f"the hammer blow lifts the wheel: it exceeds the dead load above "
                               f"{lo.lift_speed * 30 / math.pi:.4g} rpm of the wheels")
+    if result.frame_frequencies is not None:
+        for k, f in enumerate(result.frame_frequencies, start=1):
+            key = f"shaft.frame.mode{k}.frequency"
+            sc[key] = float(f)
+            labels[key] = Label(f"Frame on its mounts: natural frequency {k}", "Hz")
+            summary.append(key)
+        resp = result.frame_response
+        state = "after correction" if result.balance is not None else "as given"
+        for name, force in resp.mount_force.items():
+            key = f"shaft.frame.mount.{name}.force"
+            sc[key] = force
+            labels[key] = Label(f"Mount {name}: largest dynamic force ({state}, sum of the orders)", "N")
+            summary.append(key)
+        for name, v in resp.rms_velocity.items():
+            key = f"shaft.frame.point.{name}.rms_velocity"
+            sc[key] = v
+            labels[key] = Label(f"Frame point {name}: RMS vibration velocity ({state})", "m/s", "mm/s")
+            summary.append(key)
     warnings: list[str] = []
     if line.field is not None:
         f = line.field

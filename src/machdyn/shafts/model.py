@@ -18,6 +18,7 @@ from .balance import BalanceResult, Plane, equivalent_in_planes, single_plane, t
 from .field import FieldBalance, Reading, TrialRun, split_onto_holes
 from .field import single_plane as field_single
 from .field import two_plane as field_two
+from .frame6 import Frame6, Mount6, Response6, modes6, steady_response
 from .grades import GRADES, GradeCheck, allocate, permissible_unbalance
 from .locomotive import LocomotiveBalance, locomotive_balance
 from .reciprocating import Cylinder, EngineOrders, engine_orders, reciprocating_loads
@@ -42,6 +43,7 @@ class ShaftLine:
     field: FieldBalance | None
     field_holes: tuple[tuple[float, ...], ...]
     field_names: tuple[str, ...]
+    frame: Frame6 | None = None
 
 
 def _holes(count: int, first: float) -> tuple[float, ...]:
@@ -163,10 +165,25 @@ def build(problem: Any) -> tuple[ShaftLine | None, list[tuple[str, str]]]:
         problems += fp
         field_holes = tuple(_holes(p.holes, p.first_hole) for p in problem.field_balancing.planes)
         names_f = tuple(p.name for p in problem.field_balancing.planes)
+    frame = None
+    if problem.frame is not None:
+        fs = problem.frame
+        mounts = tuple(m for i, ms in enumerate(fs.mounts) if (m := _try(
+            problems, f"frame.mounts[{i}]", lambda ms=ms: Mount6(ms.name, ms.position, ms.direction, ms.stiffness,
+                                                                  ms.damping))) is not None)
+        if len(mounts) == len(fs.mounts):
+            frame = _try(problems, "frame", lambda: Frame6(fs.mass, fs.inertia, mounts, fs.com))
+        if frame is not None:
+            _try(problems, "frame.mounts", lambda: modes6(frame))
+        if not masses and not cylinders:
+            problems.append(("frame", "the frame's response needs the shaft line's [[masses]] or [[cylinders]]"))
+        if fs.orders >= s.positions // 2:
+            problems.append(("frame.orders", f"must be < {s.positions // 2} for {s.positions} angles per turn; "
+                             f"got {fs.orders}"))
     if problems:
         return None, problems
     return ShaftLine(s.speed, s.positions, s.harmonics, s.reference, masses, cylinders, bearings, planes, holes,
-                     field, field_holes, names_f), []
+                     field, field_holes, names_f, frame), []
 
 
 @dataclass(frozen=True)
@@ -184,6 +201,8 @@ class ShaftLineResult:
     grade: GradeCheck | None
     locomotive: LocomotiveBalance | None
     field_splits: tuple[dict[int, float], ...]
+    frame_frequencies: np.ndarray | None = None
+    frame_response: Response6 | None = None
 
 
 def _applied(line: ShaftLine, balance: BalanceResult, splits: tuple[dict[int, float], ...],
@@ -248,5 +267,11 @@ def analyse(problem: Any, line: ShaftLine) -> ShaftLineResult:
         f = line.field
         field_splits = tuple(split_onto_holes(m, a, h) if h else {} for m, a, h in
                              zip(f.correction_mass, f.correction_angle, line.field_holes, strict=True))
+    freqs = response = None
+    if line.frame is not None:
+        fs = problem.frame
+        freqs, _ = modes6(line.frame)
+        response = steady_response(line.frame, balance.after if balance is not None else loads, fs.shaft,
+                                   fs.orders, {p.name: p.position for p in fs.points})
     return ShaftLineResult(line, loads, reactions, engine, balance, reactions_after, splits, applied, grade, loco,
-                           field_splits)
+                           field_splits, freqs, response)

@@ -15,12 +15,15 @@ from ..problem.fields import (
     Angle,
     AngularVelocity,
     Force,
+    Inertia,
     Length,
+    LinearDamping,
     Mass,
     NonNegativeLength,
     PositiveLength,
     PositiveMass,
     PositiveStiffness,
+    Stiffness,
 )
 from ..problem.schema import Meta, Name, Spec
 
@@ -123,6 +126,32 @@ class FieldSpec(Spec):
     trials: list[TrialSpec] = Field(min_length=1, max_length=2)
 
 
+class MountSpec(Spec):
+    name: Name
+    position: tuple[Length, Length, Length]
+    direction: tuple[float, float, float]
+    stiffness: Stiffness
+    damping: LinearDamping = 0.0
+
+
+class PointSpec(Spec):
+    name: Name
+    position: tuple[Length, Length, Length]
+
+
+class FrameSpec(Spec):
+    """The frame in space on its mounts: mass, principal inertias about x, y, z through the centre of mass,
+    the centre of mass, where the shaft's axis passes (x, y), the orders of the response, mounts and points."""
+
+    mass: PositiveMass
+    inertia: tuple[Inertia, Inertia, Inertia]
+    com: tuple[Length, Length, Length] = (0.0, 0.0, 0.0)
+    shaft: tuple[Length, Length] = (0.0, 0.0)
+    orders: int = Field(4, ge=1, le=40, strict=True)
+    mounts: list[MountSpec] = Field(min_length=1)
+    points: list[PointSpec] = []
+
+
 class ShaftLineProblem(Spec):
     """A shaft-line problem."""
 
@@ -135,3 +164,4 @@ class ShaftLineProblem(Spec):
     grade: GradeSpec | None = None
     locomotive: LocomotiveSpec | None = None
     field_balancing: FieldSpec | None = None
+    frame: FrameSpec | None = None
