@@ -107,6 +107,27 @@ def plot_orders(ax: Any, engine: Any) -> Any:
     return _finish(ax, "Engine: exact harmonic orders (blue force, green couple)", legend=False)
 
 
+def record_sections(outcome: Any) -> list[tuple[str, str]]:
+    """The ``[field_records]`` section: the 1x readings read from each record and the corrections."""
+    r = outcome.results
+    runs = [("original", r.original), *((f"trial in plane {k + 1}", t) for k, t in enumerate(r.trials))]
+    rows = []
+    for label, run in runs:
+        text = "; ".join(f"sensor {j + 1}: {format_value(x.amplitude)} at {format_value(math.degrees(x.phase))}°"
+                         for j, x in enumerate(run.readings))
+        rows.append([f"{label} ({run.source.split('/')[-1]}, {run.revolutions} rev at "
+                     f"{format_value(run.speed * 30 / math.pi)} rpm)", text])
+    fb = r.balance
+    for k, name in enumerate(r.names):
+        split = ", ".join(f"hole {h + 1}: {format_value(m * 1e3)} g" for h, m in r.splits[k].items())
+        rows.append([f"correction in plane {name}", f"{format_value(fb.correction_mass[k] * 1e3)} g at "
+                     f"{format_value(math.degrees(fb.correction_angle[k]))}°" + (f" ({split})" if split else "")])
+    intro = ("<p>1x amplitude and phase lag (the angle the shaft turns from the reference pulse to the positive "
+             "peak) of every channel, over the whole revolutions of each record; mass angles are measured from the "
+             "reference mark against rotation.</p>")
+    return [("Field balancing from records", intro + rows_html(rows, ("run", "1x readings")))]
+
+
 def sections(outcome: Any) -> list[tuple[str, str]]:
     """The shaft-line section."""
     result = outcome.results

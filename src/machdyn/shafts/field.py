@@ -1,9 +1,12 @@
 """Field balancing by influence coefficients, from vibration readings (amplitude and phase) entered by hand.
 
-Phase convention: a reading's phase is the angle from the once-per-revolution reference mark to the peak of the
-1x vibration, and a trial or correction mass's angle is measured on the rotor from the same mark, **both in the
-same sense** (the instrument's convention, usually against rotation). Readings and masses are then complex
-numbers A e^{i phi} and m e^{i alpha}, and for a linear machine at a fixed speed
+Phase convention: a reading's phase is the **phase lag**, the angle the shaft turns from the once-per-revolution
+reference pulse to the positive peak of the 1x vibration (as balancing instruments show it), and a trial or
+correction mass's angle is measured on the rotor from the reference mark **against the direction of rotation**.
+With these two conventions a mass moved by delta moves the reading's phase by delta (a mass at angle a passes a
+sensor when the shaft has turned a past the pulse), so that readings and masses are complex numbers A e^{i phi}
+and m e^{i alpha} related linearly; an instrument that reports the phase the other way pairs with mass angles
+measured with rotation. For a linear machine at a fixed speed
 
     V = V0 + sum_j a_ij W_j,     a_ij = (V_i(trial j) - V_i(original)) / W_j     (the influence coefficients),
 

@@ -94,8 +94,10 @@ def build(problem: Any) -> tuple[ShaftLine | None, list[tuple[str, str]]]:
     s = problem.shaft_line
     if s.speed <= 0:
         problems.append(("shaft_line.speed", f"must be > 0 rad/s; got {s.speed:g} rad/s"))
-    if not problem.masses and not problem.cylinders and problem.field_balancing is None:
-        problems.append(("shaft_line", "a shaft line needs [[masses]], [[cylinders]] or [field_balancing]"))
+    if not problem.masses and not problem.cylinders and problem.field_balancing is None and \
+            getattr(problem, "field_records", None) is None:
+        problems.append(("shaft_line", "a shaft line needs [[masses]], [[cylinders]], [field_balancing] or "
+                         "[field_records]"))
     for table, items in (("masses", problem.masses), ("cylinders", problem.cylinders), ("bearings", problem.bearings)):
         names = [m.name for m in items]
         for i, name in enumerate(names):
