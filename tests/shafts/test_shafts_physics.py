@@ -214,3 +214,49 @@ def test_the_six_dof_frame_reduces_to_the_planar_frame_for_planar_loads():
     q3 = planar_resp.coordinates[0]
     assert np.allclose(resp.q[0][[0, 1, 5]], q3, rtol=1e-9, atol=1e-15)
     assert np.allclose(resp.q[0][[2, 3, 4]], 0.0, atol=1e-15)
+
+
+def test_half_the_reciprocating_masses_balances_the_primary_force_of_a_90_deg_v_twin():
+    """A 90 deg V-twin on one crank pin: its primary forces add up to one direct crank m r w^2 turning with the
+    shaft and no reverse crank (Khurmi & Gupta, 14th ed., sec. 22.11), so correcting c = 1/2 of each reciprocating
+    mass as if it revolved at the pin removes the whole primary force; the secondary remains."""
+    from machdyn.problem.loader import load_problem
+    from machdyn.shafts.model import analyse, build
+
+    text = """
+[shaft_line]
+speed = "3000 rpm"
+[[cylinders]]
+name = "front"
+position = "0 mm"
+axis = "45 deg"
+crank = "40 mm"
+rod = "140 mm"
+reciprocating_mass = "0.5 kg"
+[[cylinders]]
+name = "rear"
+position = "0 mm"
+axis = "-45 deg"
+crank = "40 mm"
+rod = "140 mm"
+reciprocating_mass = "0.5 kg"
+[balance]
+reciprocating_fraction = 0.5
+planes = [ { name = "web", position = "0 mm", radius = "40 mm" } ]
+"""
+    problem = load_problem(text)
+    line, problems = build(problem)
+    assert problems == []
+    result = analyse(problem, line)
+    d, r = result.engine.primary_dr
+    assert abs(r) <= 1e-15 and abs(d) == pytest.approx(0.5 * 0.04, rel=1e-12)  # one direct crank of m r
+    assert result.balance.corrections[0].mass == pytest.approx(0.5, rel=1e-12)
+    after = result.balance.after
+    n = after.angle.size
+    first = np.abs(np.fft.rfft(after.fx)[1]) * 2 / n + np.abs(np.fft.rfft(after.fy)[1]) * 2 / n
+    assert first <= 1e-9 * result.engine.primary_force
+    second = np.hypot(np.abs(np.fft.rfft(after.fx)[2]), np.abs(np.fft.rfft(after.fy)[2])) * 2 / n
+    # the secondary of a 90 deg V stays, across the V's centre line: sqrt(2) m w^2 r / n (Khurmi & Gupta, 22.11)
+    assert result.engine.secondary_force == pytest.approx(math.sqrt(2) * 0.5 * 0.04 * (3000 * math.pi / 30) ** 2
+                                                          / 3.5, rel=1e-12)
+    assert second > 0.9 * result.engine.secondary_force

@@ -63,8 +63,7 @@ def _vectors(result: Any, moment: bool) -> list[tuple[complex, str, str]]:
     line = result.line
     ref = line.reference
     out = []
-    masses = [*line.masses, *(c.crank_mass() for c in line.cylinders)]
-    for m in masses:
+    for m in line.balanced_masses():
         out.append((m.unbalance * ((m.position - ref) if moment else 1.0), m.name, PALETTE[0]))
     if result.balance is not None:
         for c in result.balance.corrections:

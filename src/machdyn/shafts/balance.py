@@ -59,6 +59,8 @@ class Correction:
 def polar(u: complex) -> tuple[float, float]:
     """|u| and its angle in [0, 2 pi)."""
     angle = math.atan2(u.imag, u.real) % (2.0 * math.pi)
+    if angle >= 2.0 * math.pi - 1e-12:  # -0.0 and round-off below a full turn read as 0
+        angle = 0.0
     return abs(u), (0.0 if abs(u) == 0.0 else angle)
 
 

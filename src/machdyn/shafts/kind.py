@@ -23,13 +23,13 @@ LABELS = {
                                             zero_below="shaft.force.peak"),
     "shaft.balance.after.couple.peak": Label("After correction: largest resultant couple", "N*m",
                                              zero_below="shaft.couple.peak"),
-    "shaft.engine.primary_force": Label("Engine: largest primary force, two-term series", "N",
+    "shaft.engine.primary_force": Label("Engine: largest primary force, two-term (reciprocating)", "N",
                                     zero_below="shaft.engine.gross_force"),
-    "shaft.engine.secondary_force": Label("Engine: largest secondary force, two-term series", "N",
+    "shaft.engine.secondary_force": Label("Engine: largest secondary force, two-term (reciprocating)", "N",
                                     zero_below="shaft.engine.gross_force"),
-    "shaft.engine.primary_couple": Label("Engine: largest primary couple, two-term series", "N*m",
+    "shaft.engine.primary_couple": Label("Engine: largest primary couple, two-term (reciprocating)", "N*m",
                                      zero_below="shaft.engine.gross_couple"),
-    "shaft.engine.secondary_couple": Label("Engine: largest secondary couple, two-term series", "N*m",
+    "shaft.engine.secondary_couple": Label("Engine: largest secondary couple, two-term (reciprocating)", "N*m",
                                      zero_below="shaft.engine.gross_couple"),
     "shaft.engine.gross_force": Label("Engine: sum over the cylinders of m w^2 r (scale of its forces)", "N"),
     "shaft.engine.gross_couple": Label("Engine: sum over the cylinders of m w^2 r |z| (scale of its couples)", "N*m"),
@@ -100,8 +100,10 @@ def outcome_of(result: Any) -> Outcome:
         for k, f, c in zip(e.orders, e.force_order, e.couple_order, strict=True):
             fk, ck = f"shaft.engine.order{k}.force", f"shaft.engine.order{k}.couple"
             sc[fk], sc[ck] = float(f), float(c)
-            labels[fk] = Label(f"Engine: largest force of order {k}, exact", "N", zero_below="shaft.force.peak")
-            labels[ck] = Label(f"Engine: largest couple of order {k}, exact", "N*m", zero_below="shaft.couple.peak")
+            labels[fk] = Label(f"Engine: largest force of order {k}, exact (all masses)", "N",
+                               zero_below="shaft.force.peak")
+            labels[ck] = Label(f"Engine: largest couple of order {k}, exact (all masses)", "N*m",
+                               zero_below="shaft.couple.peak")
             if k <= 2:
                 summary += [fk, ck]
         series["shaft_orders"] = {"order": (e.orders.astype(float), ""), "force": (e.force_order, "N"),

@@ -44,6 +44,16 @@ class ShaftLine:
     field_holes: tuple[tuple[float, ...], ...]
     field_names: tuple[str, ...]
     frame: Frame6 | None = None
+    reciprocating_share: float = 0.0
+
+    def balanced_masses(self) -> list[Mass]:
+        """The masses the corrections balance: rotating masses, the cylinders' rotating masses and the share c of
+        their reciprocating masses as if revolving at the crank pins."""
+        out = [*self.masses, *(c.crank_mass() for c in self.cylinders)]
+        c = self.reciprocating_share
+        out += [Mass(f"{cy.name} reciprocating share", c * cy.reciprocating_mass, cy.crank, cy.phase, cy.position)
+                for cy in self.cylinders if c > 0]
+        return out
 
 
 def _holes(count: int, first: float) -> tuple[float, ...]:
@@ -185,7 +195,8 @@ def build(problem: Any) -> tuple[ShaftLine | None, list[tuple[str, str]]]:
     if problems:
         return None, problems
     return ShaftLine(s.speed, s.positions, s.harmonics, s.reference, masses, cylinders, bearings, planes, holes,
-                     field, field_holes, names_f, frame), []
+                     field, field_holes, names_f, frame,
+                     problem.balance.reciprocating_fraction if problem.balance is not None else 0.0), []
 
 
 @dataclass(frozen=True)
@@ -248,7 +259,7 @@ def analyse(problem: Any, line: ShaftLine) -> ShaftLineResult:
     reactions_after = None
     applied: tuple[Mass, ...] = ()
     if line.planes:
-        rotating = [*line.masses, *(c.crank_mass() for c in line.cylinders)]
+        rotating = line.balanced_masses()
         if len(line.planes) == 2:
             balance = two_plane(rotating, line.planes[0], line.planes[1], line.speed, theta, line.reference)
         else:

@@ -76,6 +76,9 @@ class BalanceSpec(Spec):
 
     planes: list[PlaneSpec] = Field(min_length=1, max_length=2)
     resolution: PositiveMass | None = None  # the correction masses as fitted: rounded to multiples of this
+    # share c of each cylinder's reciprocating mass balanced as if it revolved at its crank pin (1/2: the
+    # direct-crank half of every primary force, all of it for a 90 deg V-twin or a radial engine)
+    reciprocating_fraction: float = Field(0.0, ge=0.0, le=1.0)
 
 
 class GradeSpec(Spec):
