@@ -132,3 +132,45 @@ def test_engine_on_mounts_reports_modes_and_a_free_frame_is_refused(runner, tmp_
     check, run, output = _both(runner, free, tmp_path)
     assert check == run == 2, output
     assert "free to move" in output
+
+
+PHASES = """
+[meta]
+name = "three-cylinder phases"
+[shaft_line]
+speed = "3000 rpm"
+reference = "90 mm"
+""" + "".join(f"""
+[[cylinders]]
+name = "c{k}"
+position = "{90 * (k - 1)} mm"
+crank = "40 mm"
+rod = "140 mm"
+reciprocating_mass = "0.5 kg"
+""" for k in (1, 2, 3)) + """
+[phase_search]
+cylinders = ["c2", "c3"]
+objective = "primary_force"
+"""
+
+
+def test_phase_search_finds_the_three_throw_crank_and_writes_it_as_a_problem(runner, tmp_path):
+    """Three cylinders on one crank line: the primary force vanishes only for cranks 120 deg apart (Khurmi & Gupta,
+    14th ed., sec. 22.9); the best design is written as a problem file that runs with those phases."""
+    src = tmp_path / "phases.toml"
+    src.write_text(PHASES)
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["run", str(src), "--out", str(out), "-q"])
+    assert result.exit_code == 0, result.output
+    s = json.loads((out / "results.json").read_text())["scalars"]
+    got = sorted([s["shaft.phases.c2.phase"]["value"], s["shaft.phases.c3.phase"]["value"]])
+    assert got == pytest.approx([120.0, 240.0], abs=1e-9)
+    assert s["shaft.phases.best.primary_force"]["value"] <= 1e-9 * s["shaft.phases.given.primary_force"]["value"]
+    again = runner.invoke(app, ["run", str(out / "best_phases.toml"), "--out", str(tmp_path / "again"), "-q"])
+    assert again.exit_code == 0, again.output
+    s2 = json.loads((tmp_path / "again" / "results.json").read_text())["scalars"]
+    assert s2["shaft.engine.primary_force"]["value"] <= 1e-9 * s["shaft.phases.given.primary_force"]["value"]
+    bad = tmp_path / "bad.toml"
+    bad.write_text(PHASES.replace('cylinders = ["c2", "c3"]', 'cylinders = ["c2", "c9"]'))
+    check, run, output = _both(runner, bad, tmp_path)
+    assert check == run == 2 and "phase_search" in output and "c9" in output

@@ -52,7 +52,7 @@ def _deg(a: float) -> str:
     return f"{math.degrees(a):.4g} deg"
 
 
-def outcome_of(result: Any) -> Outcome:
+def outcome_of(result: Any, problem_text: Any = None) -> Outcome:
     """Scalars, labels, series, summary and checks of a :class:`~machdyn.shafts.model.ShaftLineResult`."""
     from .rotating import unbalance
 
@@ -192,6 +192,25 @@ def outcome_of(result: Any) -> Outcome:
             sc[key] = v
             labels[key] = Label(f"Frame point {name}: RMS vibration velocity ({state})", "m/s", "mm/s")
             summary.append(key)
+    files: dict[str, str] = {}
+    if result.phases is not None:
+        ps = result.phases
+        for name, phase in ps.phases.items():
+            key = f"shaft.phases.{name}.phase"
+            sc[key] = phase
+            labels[key] = Label(f"Best crank phase of cylinder {name} ({ps.objective.replace('_', ' ')})", "rad")
+            summary.append(key)
+        for k, what in enumerate(("primary_force", "secondary_force", "primary_couple", "secondary_couple")):
+            unit = "N" if what.endswith("force") else "N*m"
+            for state, values in (("given", ps.before), ("best", ps.after)):
+                key = f"shaft.phases.{state}.{what}"
+                sc[key] = float(values[k])
+                labels[key] = Label(f"Crank phases {'as given' if state == 'given' else 'found'}: largest "
+                                    f"{what.replace('_', ' ')}, two-term", unit,
+                                    zero_below=f"shaft.engine.gross_{'force' if unit == 'N' else 'couple'}")
+                summary.append(key)
+        if problem_text is not None:
+            files["best_phases.toml"] = problem_text(ps)
     warnings: list[str] = []
     if line.field is not None:
         f = line.field
@@ -212,7 +231,7 @@ def outcome_of(result: Any) -> Outcome:
                 warnings.append(f"the trial mass in plane {name} changed the readings by only {eff:.0%}; a trial "
                                 "mass that changes them by 30 % or more gives a more reliable correction")
     return Outcome(results=result, scalars=sc, labels=labels, series=series, summary=tuple(summary),
-                   warnings=tuple(warnings), failed_checks=tuple(failed))
+                   warnings=tuple(warnings), failed_checks=tuple(failed), files=files)
 
 
 def _build(problem: Any) -> tuple[Any, list[tuple[str, str]]]:
@@ -225,7 +244,15 @@ def _analyse(problem: Any, line: Any, step: Step) -> Outcome:
     from .model import analyse
 
     step("shaft line")
-    return outcome_of(analyse(problem, line))
+
+    def best_phases(search: Any) -> str:
+        """The problem with the cylinders' phases found, as a problem file (without the search)."""
+        from ..problem.dumper import dump_problem
+
+        cylinders = [c.model_copy(update={"phase": search.phases.get(c.name, c.phase)}) for c in problem.cylinders]
+        return dump_problem(problem.model_copy(update={"cylinders": cylinders, "phase_search": None}))
+
+    return outcome_of(analyse(problem, line), best_phases)
 
 
 KIND = ProblemKind(

@@ -21,6 +21,7 @@ from .field import two_plane as field_two
 from .frame6 import Frame6, Mount6, Response6, modes6, steady_response
 from .grades import GRADES, GradeCheck, allocate, permissible_unbalance
 from .locomotive import LocomotiveBalance, locomotive_balance
+from .phases import PhaseSearch, search_phases
 from .reciprocating import Cylinder, EngineOrders, engine_orders, reciprocating_loads
 from .rotating import Bearing, Mass, Reactions, ShaftLoads, bearing_reactions, cycle, rotating_loads
 
@@ -192,6 +193,13 @@ def build(problem: Any) -> tuple[ShaftLine | None, list[tuple[str, str]]]:
         if fs.orders >= s.positions // 2:
             problems.append(("frame.orders", f"must be < {s.positions // 2} for {s.positions} angles per turn; "
                              f"got {fs.orders}"))
+    if problem.phase_search is not None:
+        ps = problem.phase_search
+        if not cylinders:
+            problems.append(("phase_search", "the search of crank phases needs [[cylinders]]"))
+        else:
+            _try(problems, "phase_search", lambda: search_phases(cylinders, ps.cylinders, ps.objective, ps.step,
+                                                                 1.0, s.reference))
     if problems:
         return None, problems
     return ShaftLine(s.speed, s.positions, s.harmonics, s.reference, masses, cylinders, bearings, planes, holes,
@@ -216,6 +224,7 @@ class ShaftLineResult:
     field_splits: tuple[dict[int, float], ...]
     frame_frequencies: np.ndarray | None = None
     frame_response: Response6 | None = None
+    phases: PhaseSearch | None = None
 
 
 def _applied(line: ShaftLine, balance: BalanceResult, splits: tuple[dict[int, float], ...],
@@ -286,5 +295,9 @@ def analyse(problem: Any, line: ShaftLine) -> ShaftLineResult:
         freqs, _ = modes6(line.frame)
         response = steady_response(line.frame, balance.after if balance is not None else loads, fs.shaft,
                                    fs.orders, {p.name: p.position for p in fs.points})
+    phases = None
+    if problem.phase_search is not None:
+        ps = problem.phase_search
+        phases = search_phases(line.cylinders, ps.cylinders, ps.objective, ps.step, line.speed, line.reference)
     return ShaftLineResult(line, loads, reactions, engine, balance, reactions_after, splits, applied, grade, loco,
-                           field_splits, freqs, response)
+                           field_splits, freqs, response, phases)

@@ -155,6 +155,16 @@ class FrameSpec(Spec):
     points: list[PointSpec] = []
 
 
+class PhaseSearchSpec(Spec):
+    """Crank phases of the named cylinders searched on a grid of ``step`` to minimise ``objective`` (the largest
+    two-term primary_force, secondary_force, primary_couple, secondary_couple, or all four relative to their
+    largest)."""
+
+    cylinders: list[Name] = Field(min_length=1, max_length=6)
+    step: Angle = 0.2617993877991494  # 15 deg
+    objective: str = Field("all", pattern="^(primary_force|secondary_force|primary_couple|secondary_couple|all)$")
+
+
 class ShaftLineProblem(Spec):
     """A shaft-line problem."""
 
@@ -168,3 +178,4 @@ class ShaftLineProblem(Spec):
     locomotive: LocomotiveSpec | None = None
     field_balancing: FieldSpec | None = None
     frame: FrameSpec | None = None
+    phase_search: PhaseSearchSpec | None = None
