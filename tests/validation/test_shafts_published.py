@@ -148,3 +148,17 @@ def test_acoem_single_plane_vector_balancing_example():
     turn = (360.0 - math.degrees(fb.correction_angle[0])) % 360.0  # from the trial position, against the angle sense
     assert turn == pytest.approx(35.0, abs=1.0)
     assert np.isclose(fb.trial_effect[0], effect / 7.0)
+
+
+def test_iso_1940_permissible_unbalance_in_imperial_units():
+    """energy-tech.com, 'Balancing standards' (energy-tech.com/article.cfm?id=18389, p. 3): ISO 1940-1 in imperial
+    units, U_per [oz in] = 6.015 G W / N for a rotor of W lb at N rpm, and the two-plane allocation U_per =
+    U_per1 + U_per2 following the bearing loads. The printed constant 6.015 is rounded to four figures."""
+    from machdyn.shafts.grades import allocate, permissible_unbalance
+
+    oz_in = 28.349523125e-3 * 25.4e-3  # kg m
+    for grade, pounds, rpm in ((6.3, 500.0, 1800.0), (2.5, 12000.0, 3600.0), (1.0, 40.0, 12000.0)):
+        u = permissible_unbalance(grade, pounds * 0.45359237, rpm * RPM) / oz_in
+        assert u == pytest.approx(6.015 * grade * pounds / rpm, rel=1e-4)
+    ua, ub = allocate(1.0, 0.4, 0.0, 1.0)  # centre of mass 0.4 L from bearing A: A carries 0.6
+    assert (ua, ub) == (pytest.approx(0.6), pytest.approx(0.4)) and ua + ub == pytest.approx(1.0)

@@ -3,14 +3,14 @@
 A grade G names the product e_per w [mm/s] of the permissible specific unbalance and the service speed; the
 permissible residual unbalance of a rotor of mass m [kg] at speed w [rad/s] is
 
-    U_per = 1000 G m / w   [g*mm]    (ISO 21940-11:2016, eq. 2; ISO 1940-1:2003, eq. 2),
+    U_per = 1000 G m / w   [g*mm]    (ISO 21940-11:2016, with G = e_per w; ISO 1940-1:2003, sec. 6.2),
 
 i.e. U_per = G m / w in SI (G in m/s, U in kg*m). The grades run in steps of 2.5 from G 0.4 to G 4000 (ISO
 21940-11:2016, table 1 of grades; e.g. G 6.3 for fans, pumps, electric motors, G 2.5 for turbines).
 
 Allocation to the two bearing planes A and B of a rotor whose centre of mass lies between them at distances
 L_A and L_B (L = L_A + L_B): U_per,A = U_per L_B / L and U_per,B = U_per L_A / L, each kept within 0.3 ... 0.7
-of U_per (ISO 1940-1:2003, sec. 7.2, eqs. 5-6 and the limits that follow; ISO 21940-11:2016, sec. 7.2). A
+of U_per (ISO 1940-1:2003, sec. 7.2, allocation to the bearing planes; ISO 21940-11:2016 keeps it). A
 residual unbalance is carried to the bearing planes as the pair of unbalances there with the same force and
 couple (:func:`machdyn.shafts.balance.equivalent_in_planes`).
 """
@@ -35,7 +35,7 @@ def check_grade(grade: float) -> None:
 
 
 def permissible_unbalance(grade: float, rotor_mass: float, speed: float) -> float:
-    """U_per [kg*m] = G [mm/s] * 1e-3 * m / w (ISO 21940-11:2016, eq. 2).
+    """U_per [kg*m] = G [mm/s] * 1e-3 * m / w (ISO 21940-11:2016, G = e_per w, U_per = e_per m).
 
     Parameters: grade G [mm/s] (one of :data:`GRADES`); rotor_mass m [kg] > 0; speed w [rad/s] > 0 (the
     maximum service speed).
