@@ -19,6 +19,7 @@ KINDS: dict[str, str] = {
     "rotary_screen": "machdyn.pipelines.rotary_screen:KIND",
     "screw_conveyor": "machdyn.conveyor.kind:KIND",
     "cam": "machdyn.cams.stage:KIND",
+    "shaft_line": "machdyn.shafts.kind:KIND",
 }
 
 #: optional table -> the :class:`~machdyn.pipeline.Capability`
@@ -31,6 +32,7 @@ CAPABILITIES: dict[str, str] = {
     "optimise": "machdyn.optimise.stage:CAPABILITY",
     "drivetrain": "machdyn.drivetrain.stage:CAPABILITY",
     "parts": "machdyn.drivetrain.parts_stage:CAPABILITY",
+    "field_records": "machdyn.shafts.record_stage:CAPABILITY",
 }
 
 

@@ -158,7 +158,7 @@ def test_examples_round_trip(path):
     assert again == problem
     if isinstance(problem, LinkageProblem):
         assert build_mechanism(again) == build_mechanism(problem)
-    else:
+    elif isinstance(problem, RotaryScreenProblem):
         assert isinstance(again, RotaryScreenProblem)
         assert again.mechanism() == problem.mechanism()
 
