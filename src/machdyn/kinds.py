@@ -18,6 +18,7 @@ KINDS: dict[str, str] = {
     "mechanism": "machdyn.pipelines.mechanism:KIND",
     "rotary_screen": "machdyn.pipelines.rotary_screen:KIND",
     "screw_conveyor": "machdyn.conveyor.kind:KIND",
+    "synthesis": "machdyn.synthesis.kind:KIND",
 }
 
 #: optional table -> the :class:`~machdyn.pipeline.Capability`

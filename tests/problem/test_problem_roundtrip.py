@@ -17,7 +17,7 @@ from machdyn.problem.schema import LinkageProblem
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
-LINKAGE_EXAMPLES = [p for p in EXAMPLES if "conveyor" not in p.name]
+LINKAGE_EXAMPLES = [p for p in EXAMPLES if "conveyor" not in p.name and "synthesis" not in p.name]
 
 DRIVE = '\n[drive]\nspeed = "300 rpm"\npositions = 72\n'
 

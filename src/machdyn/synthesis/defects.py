@@ -86,6 +86,22 @@ def errors(c: Candidate, targets: Targets) -> tuple[float, float]:
     return pos, ang
 
 
+def _other_branch_closer(c: Candidate, targets: Targets) -> bool:
+    """True if at some precision position the other assembly of the closure meets the target better."""
+    from dataclasses import replace
+
+    other = replace(c, branch=-c.branch)
+    for j in range(c.angles.size):
+        one = replace(c, angles=c.angles[j:j + 1])
+        two = replace(other, angles=c.angles[j:j + 1])
+        t = Targets(*(None if v is None else v[j:j + 1] for v in (targets.points, targets.coupler_angles,
+                                                                    targets.outputs)), targets.scale)
+        e1, e2 = errors(one, t), errors(two, t)
+        if e2[0] / targets.scale + e2[1] < e1[0] / targets.scale + e1[1] - 1e-12:
+            return True
+    return False
+
+
 def check(c: Candidate, targets: Targets, *, transmission_limit: float = np.radians(30.0),
           need_full_turn: bool = True, tolerance: float = 1e-9, samples: int = 361) -> Report:
     """The defects of ``c`` for ``targets``: see the module. ``tolerance`` is relative to ``targets.scale`` for
@@ -96,7 +112,7 @@ def check(c: Candidate, targets: Targets, *, transmission_limit: float = np.radi
     _, _, closes = c.joints(c.angles)
     if not np.all(closes):
         defects.append("assembly: cannot be assembled at every precision position")
-    elif pos > tolerance * targets.scale or ang > tolerance:
+    elif (pos > tolerance * targets.scale or ang > tolerance) and _other_branch_closer(c, targets):
         defects.append("branch: the positions lie on different branches of the closure")
     if c.angles.size >= 3:
         steps = np.mod(c.direction * (c.angles - c.angles[0]), TWO_PI)[1:]

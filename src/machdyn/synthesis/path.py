@@ -78,10 +78,15 @@ def _from_params(x: np.ndarray, like: Candidate) -> Candidate:
                    ground=float(x[5]), ground_angle=float(x[6]), coupler_point=(float(x[7]), float(x[8])))
 
 
-def refine(seed: Candidate, points: Any, *, timing: Any = None, tol: float = 1e-13) -> tuple[Candidate, float]:
+def refine(seed: Candidate, points: Any, *, timing: Any = None, tol: float = 1e-13, max_nfev: int = 250,
+           transmission_limit: float = 0.0, full_turn: bool = False) -> tuple[Candidate, float]:
     """The seed's dimensions and crank angles adjusted by least squares until its coupler point passes the
     ``points`` [m] (complex); ``timing`` = crank rotations from the first point [rad] (N - 1 values) or None.
-    Returns the candidate and its largest distance from a target [m]."""
+
+    With ``transmission_limit`` [rad] > 0 the residuals also hold the shortfall of the transmission angle below
+    the limit at 8 crank angles between consecutive points (or over a full turn with ``full_turn``): where the
+    points leave freedom (fewer than nine), the fit moves along it to a linkage that transmits well. Returns the
+    candidate and its largest distance from a target [m]."""
     from scipy.optimize import least_squares
 
     p = np.asarray(points, dtype=complex)
@@ -92,6 +97,7 @@ def refine(seed: Candidate, points: Any, *, timing: Any = None, tol: float = 1e-
     if not ok.any():
         return seed, np.inf
     near = np.array([curve_phi[ok][np.argmin(np.abs(curve[ok] - q))] for q in p])
+    near = near[0] + seed.direction * np.mod(seed.direction * (near - near[0]), 2 * np.pi)  # in the seed's order
     t = None if timing is None else np.concatenate([[0.0], np.asarray(timing, dtype=float)])
     if t is not None and t.size != p.size:
         raise InputError(f"The timing needs one crank rotation per point after the first: {p.size - 1}; got "
@@ -102,6 +108,19 @@ def refine(seed: Candidate, points: Any, *, timing: Any = None, tol: float = 1e-
         return x[9:] if t is None else x[9] + t
 
     branch = seed.branch
+    between = np.linspace(0.0, 1.0, 8, endpoint=False)[1:]
+    turn = np.linspace(0.0, 2 * np.pi, 36, endpoint=False)
+
+    def shortfall(x, phi):
+        if full_turn:
+            q = phi[0] + turn
+        else:
+            q = (phi[:-1, None] + np.diff(phi)[:, None] * between[None, :]).ravel()
+        o2 = x[0] + 1j * x[1]
+        length = np.abs(o2 + x[5] * np.exp(1j * x[6]) - o2 - x[2] * np.exp(1j * q))
+        cos_mu = (x[3] ** 2 + x[4] ** 2 - length**2) / (2.0 * x[3] * x[4])
+        mu = np.arccos(np.clip(np.abs(cos_mu), 0.0, 1.0)) - np.maximum(np.abs(cos_mu) - 1.0, 0.0)
+        return np.maximum(transmission_limit - mu, 0.0)
 
     def residual(x):  # the closure of Candidate.joints, written out for speed
         phi = phis(x)
@@ -113,9 +132,12 @@ def refine(seed: Candidate, points: Any, *, timing: Any = None, tol: float = 1e-
         ab = np.exp(1j * (np.angle(r) + branch * np.arccos(np.clip(cos_g, -1.0, 1.0))))
         e = a + (x[7] + 1j * x[8]) * ab - p
         e = np.where(np.abs(cos_g) <= 1.0, e, e + 10.0 * scale * (np.abs(cos_g) - 1.0))
-        return np.concatenate([e.real, e.imag]) / scale
+        rows = [e.real / scale, e.imag / scale]
+        if transmission_limit > 0.0:
+            rows.append(0.1 * shortfall(x, phi))
+        return np.concatenate(rows)
 
-    sol = least_squares(residual, x0, method="trf", xtol=tol, ftol=tol, gtol=tol, max_nfev=600)
+    sol = least_squares(residual, x0, method="trf", xtol=tol, ftol=tol, gtol=tol, max_nfev=max_nfev)
     x = sol.x
     if min(x[2], x[3], x[4], x[5]) <= 0:
         return seed, np.inf
@@ -130,11 +152,13 @@ def refine(seed: Candidate, points: Any, *, timing: Any = None, tol: float = 1e-
 
 
 def path_candidates(points: Any, *, timing: Any = None, count: int = 60, seed: int = 0, seeds: int | None = None,
-                    max_length: float | None = None, min_length: float | None = None) -> list[Candidate]:
+                    max_length: float | None = None, min_length: float | None = None,
+                    transmission_limit: float = 0.0, full_turn: bool = False) -> list[Candidate]:
     """Four-bars whose coupler point passes the ``points`` [m] (complex; 3 or more), with ``timing`` (crank
     rotations from the first point [rad]) or without. Three points: :func:`three_points`; more: ``seeds``
     (default ``count``) closed-form seeds through the first, middle and last point refined by :func:`refine`,
-    the exact ones (error < 1e-9 of the task's size) kept."""
+    the exact ones (error < 1e-9 of the task's size) kept; ``transmission_limit`` and ``full_turn`` as
+    :func:`refine`."""
     p = np.asarray(points, dtype=complex)
     if p.size < 3:
         raise InputError(f"Path generation needs at least 3 points; got {p.size}.")
@@ -152,7 +176,7 @@ def path_candidates(points: Any, *, timing: Any = None, count: int = 60, seed: i
     lo = 0.02 * scale if min_length is None else float(min_length)
     out: list[Candidate] = []
     for s in starts:
-        cand, err = refine(s, p, timing=t)
+        cand, err = refine(s, p, timing=t, transmission_limit=transmission_limit, full_turn=full_turn)
         lengths = np.array(list(cand.lengths().values()))
         if err < 1e-9 * scale and lengths.max() <= hi and lengths.min() >= lo:
             out.append(cand)
