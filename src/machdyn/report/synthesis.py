@@ -53,7 +53,8 @@ def plot_candidates(ax: Any, result: Any) -> Any:
                 ax.annotate("", (q.real + size * np.cos(t), q.imag + size * np.sin(t)), (q.real, q.imag),
                             arrowprops={"arrowstyle": "->", "color": "black"})
     if "swing" in curve:
-        t = np.linspace(*curve["swing"], 60)
+        lo, hi = curve["swing"]
+        t = np.linspace(float(lo), float(hi), 60)
         r = curve["rocker"]
         ax.plot(r * np.cos(t), r * np.sin(t), "k--", linewidth=1.2, label="required swing")
     if "stroke" in curve:

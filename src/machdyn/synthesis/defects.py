@@ -94,8 +94,8 @@ def _other_branch_closer(c: Candidate, targets: Targets) -> bool:
     for j in range(c.angles.size):
         one = replace(c, angles=c.angles[j:j + 1])
         two = replace(other, angles=c.angles[j:j + 1])
-        t = Targets(*(None if v is None else v[j:j + 1] for v in (targets.points, targets.coupler_angles,
-                                                                    targets.outputs)), targets.scale)
+        pick = [None if v is None else v[j:j + 1] for v in (targets.points, targets.coupler_angles, targets.outputs)]
+        t = Targets(points=pick[0], coupler_angles=pick[1], outputs=pick[2], scale=targets.scale)
         e1, e2 = errors(one, t), errors(two, t)
         if e2[0] / targets.scale + e2[1] < e1[0] / targets.scale + e1[1] - 1e-12:
             return True

@@ -123,9 +123,10 @@ def evaluate(cands: list[Candidate], reports: list[Report], drive: Drive = Drive
             mu = np.minimum(mu, np.pi - mu)
             k = len(idx)
             bad = ~np.isfinite(torque[:k]).all(axis=1)
-            out["peak_torque"][idx] = np.where(bad, np.nan, np.nanmax(np.abs(torque[:k]), axis=1))
-            out["peak_shaking_force"][idx] = np.where(bad, np.nan, np.nanmax(shake[:k], axis=1))
-            out["min_transmission"][idx] = np.where(bad, np.nan, np.nanmin(mu[:k], axis=1))
+            # fmax / fmin skip NaN without warning (a design that cannot close is NaN throughout)
+            out["peak_torque"][idx] = np.where(bad, np.nan, np.fmax.reduce(np.abs(torque[:k]), axis=1))
+            out["peak_shaking_force"][idx] = np.where(bad, np.nan, np.fmax.reduce(shake[:k], axis=1))
+            out["min_transmission"][idx] = np.where(bad, np.nan, np.fmin.reduce(mu[:k], axis=1))
             if turns:
                 grid = np.linspace(0.0, TWO_PI, drive.positions, endpoint=False)
                 de = energy_fluctuation(np.where(np.isfinite(torque[:k]), torque[:k], 0.0), grid)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -12,7 +13,7 @@ from .candidate import Candidate
 from .defects import Report, Targets, check
 from .rank import QUANTITIES, Drive, evaluate, order
 
-FUNCS = {
+FUNCS: dict[str, Callable[[Any], Any]] = {
     "log10": np.log10, "ln": np.log, "exp": np.exp, "sqrt": np.sqrt, "square": np.square,
     "cube": lambda x: np.asarray(x) ** 3, "reciprocal": lambda x: 1.0 / np.asarray(x), "sin": np.sin,
     "cos": np.cos, "tan": np.tan,
