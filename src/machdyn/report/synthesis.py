@@ -93,7 +93,12 @@ def plot_population(ax: Any, result: Any) -> Any:
     ax.scatter(ee[~ok], shown[~ok], s=12, facecolors="none", edgecolors="#999999", label="with defects")
     ax.scatter(ee[ok], shown[ok], s=14, color=PALETTE[0], label="free of defects")
     ax.scatter(ee[:1], shown[:1], s=60, marker="*", color=PALETTE[1], label="best", zorder=3)
-    ax.set_xscale("log")
+    finite = ee[np.isfinite(ee)]
+    if finite.size and finite.max() > 100.0 * finite.min():
+        ax.set_xscale("log")
+    positive = shown[np.isfinite(shown) & (shown > 0)]
+    if positive.size and positive.max() > 100.0 * np.median(positive):
+        ax.set_yscale("log")
     ax.set_xlabel("kinematic error at the positions")
     ax.set_ylabel(f"{label.lower()} [{'deg' if unit == 'rad' else unit}]")
     return _finish(ax, "The population")
