@@ -34,15 +34,26 @@ def four_bar_from_dyads(crank: Dyad, rocker: Dyad, angles: Any, *, method: str, 
                                 coupler_offset=offset, free=dict(free or {}), method=method)
 
 
+def _crank_turns(crank: Dyad, rocker: Dyad) -> bool:
+    """True if the four-bar of the two dyads is Grashof with the crank shortest (its crank turns fully)."""
+    links = np.array([abs(crank.w), abs(rocker.moving_pivot - crank.moving_pivot), abs(rocker.w),
+                      abs(rocker.ground_pivot - crank.ground_pivot)])
+    s, l_ = links.min(), links.max()
+    return bool(links[0] <= s and s + l_ <= links.sum() - s - l_)
+
+
 def _scale(points: np.ndarray) -> float:
     span = float(np.max(np.abs(points - points.mean()))) if points.size > 1 else 0.0
     return span if span > 0 else 1.0
 
 
 def sampled_dyads(points: Any, angles: Any, count: int, rng: np.random.Generator,
-                  betas: tuple[float, ...] | None = None) -> list[Dyad]:
+                  betas: tuple[float, ...] | None = None, role: str = "crank") -> list[Dyad]:
     """Dyads through the positions: ``count`` samples of the free choices (two or three positions; the given
-    ``betas`` instead, when not None), the sampled Burmester curves (four) or the Burmester points (five)."""
+    ``betas`` instead, when not None), the sampled Burmester curves (four) or the Burmester points (five).
+
+    For two and three positions a ``role`` "crank" dyad turns one way by 10 to 160 deg between positions, a
+    "rocker" dyad swings by at most 70 deg either way (what a crank-rocker's links do)."""
     p = np.asarray(points, dtype=complex)
     t = np.asarray(angles, dtype=float)
     n = p.size
@@ -61,8 +72,11 @@ def sampled_dyads(points: Any, angles: Any, count: int, rng: np.random.Generator
         out = []
         while len(out) < count:
             sign = rng.choice([-1, 1])
-            b2 = sign * rng.uniform(np.radians(10), np.radians(160))
-            b3 = b2 + sign * rng.uniform(np.radians(10), np.radians(160))
+            if role == "crank":
+                b2 = sign * rng.uniform(np.radians(10), np.radians(160))
+                b3 = b2 + sign * rng.uniform(np.radians(10), np.radians(160))
+            else:
+                b2, b3 = rng.uniform(-np.radians(70), np.radians(70), 2)
             d = solve(p, t, [b2, b3])
             if d is not None:
                 out.append(d)
@@ -89,13 +103,17 @@ def motion_candidates(points: Any, angles: Any, *, count: int = 200, seed: int =
     scale = _scale(p)
     hi = 5.0 * scale if max_length is None else float(max_length)
     lo = 0.02 * scale if min_length is None else float(min_length)
-    pool = max(8, int(np.sqrt(count)) * 3)
-    cranks = sampled_dyads(p, t, pool, rng, crank_betas)
-    rockers = cranks if (rocker_betas is None and p.size >= 4) else sampled_dyads(p, t, pool, rng, rocker_betas)
+    pool = max(8, int(np.sqrt(count)) * 4)
+    cranks = sampled_dyads(p, t, pool, rng, crank_betas, role="crank")
+    rockers = cranks if (rocker_betas is None and p.size >= 4) else sampled_dyads(p, t, pool, rng, rocker_betas,
+                                                                                  role="rocker")
     name = method or {2: "two positions", 3: "three positions", 4: "Burmester, four positions",
                       5: "Burmester, five positions"}[p.size]
     pairs = [(i, j) for i in range(len(cranks)) for j in range(len(rockers)) if cranks[i] is not rockers[j]]
-    order = rng.permutation(len(pairs)) if len(pairs) > count * 4 else np.arange(len(pairs))
+    order = rng.permutation(len(pairs))
+    # Pairs whose crank can turn fully (Grashof, crank shortest) first: the cheap part of the defect check.
+    turns = np.array([_crank_turns(cranks[i], rockers[j]) for i, j in pairs], dtype=bool)
+    order = np.concatenate([order[turns[order]], order[~turns[order]]])
     out: list[Candidate] = []
     for k in order:
         i, j = pairs[k]
