@@ -216,3 +216,15 @@ def test_path_through_five_points_by_least_squares_passes_them_in_the_engine():
     assert cands
     for c in cands:
         assert np.max(np.abs(engine_point(c, c.angles) - p)) < 1e-9
+
+
+def test_structural_error_vanishes_at_the_precision_points_of_the_function():
+    """Three Chebyshev points for log10 on [1, 2], the error measured through the function's own mapping of x to
+    the input angle: zero at the three points (to rounding), not zero between them."""
+    ranges = ((np.radians(30), np.radians(120)), (np.radians(60), np.radians(150)))
+    x = chebyshev_spacing(1.0, 2.0, 3)
+    c = freudenstein(*function_angles(np.log10, (1.0, 2.0), *ranges, x), 0.1)
+    at_points = output_error(c, *function_angles(np.log10, (1.0, 2.0), *ranges, x))
+    assert np.max(np.abs(at_points)) < 1e-12
+    between = output_error(c, *function_angles(np.log10, (1.0, 2.0), *ranges, np.array([1.0, 1.25, 2.0])))
+    assert np.all(np.abs(between) > 1e-6)

@@ -98,7 +98,7 @@ def from_coefficients(k: Any, theta2: Any, ground: float = 1.0, *, method: str =
     return Candidate(kind="four_bar", origin=0j, crank=abs(a), coupler=float(np.sqrt(b2)), rocker=abs(c), ground=d,
                      ground_angle=0.0, coupler_point=(float(np.sqrt(b2)), 0.0), angles=angles,
                      direction=1 if t2[-1] >= t2[0] else -1, output_offset=-flip4, method=method,
-                     free={"ground": d, "K1": k1, "K2": k2, "K3": k3})
+                     free={"ground": d, "K1": k1, "K2": k2, "K3": k3, "input_offset": np.pi if a < 0 else 0.0})
 
 
 def _branch_at(a1: complex, d: float, c: float, rocker_angle: float) -> int:
@@ -127,9 +127,10 @@ def _with_branch(cand: Candidate, theta4: np.ndarray) -> Candidate:
 def output_error(cand: Candidate, theta2: Any, theta4: Any) -> np.ndarray:
     """The candidate's rocker angle minus the wanted ``theta4`` [rad] at the crank angles ``theta2`` [rad] of the
     task (NaN where it cannot assemble)."""
-    phi = np.asarray(theta2, dtype=float) + (cand.angles[0] - float(np.asarray(theta2, dtype=float).ravel()[0]))
     from .candidate import wrap
 
+    # the crank's angle is the task's input angle, turned by pi where Freudenstein's crank length came out < 0
+    phi = np.asarray(theta2, dtype=float) + float(cand.free.get("input_offset", 0.0))
     return wrap(cand.output_angle(phi) + cand.output_offset - np.asarray(theta4, dtype=float))
 
 
