@@ -62,8 +62,10 @@ def analyse(problem: Any, _model: Any, step: Step) -> Outcome:
         v = float(result.values[key][0])
         if np.isfinite(v):
             scalars[f"synthesis.best.{key}"] = v
-    labels = {"synthesis.best.error": Label("Best: kinematic error at the positions",
-                                            "m" if spec.task in ("motion", "path", "slider_quick_return") else "rad")}
+    labels = {"synthesis.best.error": Label(
+        "Best: largest output-angle error over the range" if spec.task == "function"
+        else "Best: kinematic error at the positions",
+        "m" if spec.task in ("motion", "path", "slider_quick_return") else "rad")}
     summary = [k for k in ("synthesis.candidates", "synthesis.defect_free", "synthesis.best.crank",
                            "synthesis.best.coupler", "synthesis.best.rocker", "synthesis.best.ground",
                            "synthesis.best.offset", "synthesis.best.error", f"synthesis.best.{result.ranked_by}",
