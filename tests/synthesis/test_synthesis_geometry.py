@@ -228,3 +228,39 @@ def test_structural_error_vanishes_at_the_precision_points_of_the_function():
     assert np.max(np.abs(at_points)) < 1e-12
     between = output_error(c, *function_angles(np.log10, (1.0, 2.0), *ranges, np.array([1.0, 1.25, 2.0])))
     assert np.all(np.abs(between) > 1e-6)
+
+
+@SETTINGS
+@given(seed=st.integers(0, 10_000), gx=st.floats(-0.2, 0.2), gy=st.floats(-0.2, 0.2))
+def test_a_dyad_with_a_given_ground_pivot_keeps_its_circle_point_on_a_circle_about_it(seed, gx, gy):
+    """Norton §5.9 by construction: the circle point found for a chosen ground pivot takes its three positions
+    at one distance from that pivot, and its rotations solve the standard form (the non-trivial root)."""
+    from machdyn.synthesis.dyads import solve as solve_dyad
+    from machdyn.synthesis.dyads import with_ground_pivot
+
+    p, t = _poses(seed, 3)
+    d = with_ground_pivot(p, t, complex(gx, gy))
+    assume(d is not None and abs(d.w) > 1e-3)
+    moving = p - d.z * np.exp(1j * (t - t[0]))
+    r = np.abs(moving - complex(gx, gy))
+    assert np.ptp(r) < 1e-9 * max(1.0, r.max())
+    again = solve_dyad(p, t, d.beta[1:])
+    assume(again is not None)
+    assert abs(again.ground_pivot - complex(gx, gy)) < 1e-9
+
+
+def test_motion_with_both_ground_pivots_given_runs_through_the_positions_in_the_engine():
+    p = np.array([0j, 0.08 + 0.06j, 0.18 + 0.04j])
+    t = np.radians([0.0, -30.0, -90.0])
+    found = []
+    grid = [complex(x, y) for x in np.linspace(-0.1, 0.3, 5) for y in (-0.15, -0.05)]
+    for o2, o4 in ((a, b) for a in grid for b in grid if abs(a - b) > 0.05):
+        (c,) = motion_candidates(p, t, crank_pivot=o2, rocker_pivot=o4, max_length=2.0, min_length=1e-6)
+        assert abs(c.origin - o2) < 1e-12 and abs(c.rocker_pivot - o4) < 1e-12
+        report = check(c, Targets(points=p, coupler_angles=t, scale=0.1), need_full_turn=False)
+        if not any(d.startswith(("branch", "assembly")) for d in report.defects):
+            found.append(c)
+    assert found
+    for c in found[:5]:
+        assert np.max(np.abs(engine_point(c, c.angles) - p)) < 1e-9
+        assert np.max(np.abs(wrap(engine_coupler_angle(c, c.angles) - t))) < 1e-9

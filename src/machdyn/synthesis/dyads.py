@@ -95,6 +95,42 @@ def three_positions(points: Any, angles: Any, beta2: float, beta3: float) -> Dya
     return solve(points, angles, [beta2, beta3])
 
 
+def with_ground_pivot(points: Any, angles: Any, pivot: complex) -> Dyad | None:
+    """The dyad through three positions whose ground pivot is ``pivot`` [m] (Norton §5.9, "synthesis for a
+    specified fixed pivot location"; the inversion construction of the circle point).
+
+    The circle point's offset q from P_1 (complex, [m], in the first position) keeps its three positions
+    X_j = P_j + q e^{i alpha_j} at one distance from the pivot: |X_j - pivot|^2 = |X_1 - pivot|^2 for j = 2, 3,
+    two equations linear in q,
+
+        2 Re(q [conj(P_j - pivot) e^{i alpha_j} - conj(P_1 - pivot)]) = |P_1 - pivot|^2 - |P_j - pivot|^2.
+
+    The link's rotations follow as beta_j = arg((X_j - pivot) / (X_1 - pivot)): the non-trivial root of
+    Norton's eq. 5.34 (the other being beta_j = alpha_j). None when the system is singular (the pivot at a pole).
+    """
+    p = np.asarray(points, dtype=complex)
+    t = np.asarray(angles, dtype=float)
+    if p.size != 3 or t.size != 3:
+        raise InputError(f"A dyad with a given ground pivot takes 3 positions; got {p.size}.")
+    r = p - pivot
+    rows, rhs = [], []
+    for j in (1, 2):
+        c = np.conj(r[j]) * np.exp(1j * (t[j] - t[0])) - np.conj(r[0])
+        rows.append([2.0 * c.real, -2.0 * c.imag])  # Re(q c) = qx cx - qy cy
+        rhs.append(abs(r[0]) ** 2 - abs(r[j]) ** 2)
+    a = np.array(rows)
+    scale = max(float(np.max(np.abs(r))), 1e-300)
+    if abs(np.linalg.det(a)) < 1e-12 * scale**2:
+        return None
+    qx, qy = np.linalg.solve(a, np.array(rhs))
+    q = complex(qx, qy)
+    x = p + q * np.exp(1j * (t - t[0]))
+    if abs(x[0] - pivot) < 1e-12 * scale:
+        return None
+    beta = np.angle((x - pivot) / (x[0] - pivot))
+    return Dyad(complex(x[0] - pivot), complex(-q), beta, complex(p[0]))
+
+
 def dyad_positions(dyad: Dyad, points: Any, angles: Any) -> np.ndarray:
     """The dyad's coupler point in every position [m]: ground pivot + W e^{i beta_j} + Z e^{i alpha_j} (it equals
     the given points when the dyad satisfies its equations)."""

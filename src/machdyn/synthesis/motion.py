@@ -19,7 +19,7 @@ import numpy as np
 from ..errors import InputError
 from .burmester import curves, points_five
 from .candidate import Candidate, four_bar_from_points
-from .dyads import Dyad, solve, two_positions
+from .dyads import Dyad, solve, two_positions, with_ground_pivot
 
 
 def four_bar_from_dyads(crank: Dyad, rocker: Dyad, angles: Any, *, method: str, free: dict | None = None
@@ -91,12 +91,14 @@ def sampled_dyads(points: Any, angles: Any, count: int, rng: np.random.Generator
 def motion_candidates(points: Any, angles: Any, *, count: int = 200, seed: int = 0,
                       crank_betas: tuple[float, ...] | None = None, rocker_betas: tuple[float, ...] | None = None,
                       max_length: float | None = None, min_length: float | None = None,
-                      method: str | None = None) -> list[Candidate]:
+                      method: str | None = None, crank_pivot: complex | None = None,
+                      rocker_pivot: complex | None = None) -> list[Candidate]:
     """Up to ``count`` four-bars through the positions (points [m] complex, coupler angles [rad]).
 
     ``crank_betas`` / ``rocker_betas`` fix the free rotations of the crank's / rocker's dyad (three positions);
-    otherwise they are sampled. Links outside [min_length, max_length] [m] (default 2 % and 5 times the size of
-    the task) are refused."""
+    ``crank_pivot`` / ``rocker_pivot`` [m] fix its ground pivot instead (three positions,
+    :func:`~machdyn.synthesis.dyads.with_ground_pivot`); otherwise the free choices are sampled. Links outside
+    [min_length, max_length] [m] (default 2 % and 5 times the size of the task) are refused."""
     p = np.asarray(points, dtype=complex)
     t = np.asarray(angles, dtype=float)
     rng = np.random.default_rng(seed)
@@ -104,11 +106,26 @@ def motion_candidates(points: Any, angles: Any, *, count: int = 200, seed: int =
     hi = 5.0 * scale if max_length is None else float(max_length)
     lo = 0.02 * scale if min_length is None else float(min_length)
     pool = max(8, int(np.sqrt(count)) * 4)
+    if (crank_pivot is not None or rocker_pivot is not None) and p.size != 3:
+        raise InputError(f"Ground pivots can be prescribed for three positions; got {p.size} positions.")
     cranks = sampled_dyads(p, t, pool, rng, crank_betas, role="crank")
     rockers = cranks if (rocker_betas is None and p.size >= 4) else sampled_dyads(p, t, pool, rng, rocker_betas,
                                                                                   role="rocker")
+    for pivot, side in ((crank_pivot, "crank"), (rocker_pivot, "rocker")):
+        if pivot is not None:
+            fixed = with_ground_pivot(p, t, complex(pivot))
+            if fixed is None:
+                raise InputError(f"No dyad through the three positions has its ground pivot at the {side} pivot "
+                                 f"({complex(pivot).real:.6g}, {complex(pivot).imag:.6g}) m (a pole of the "
+                                 "positions); move it.")
+            if side == "crank":
+                cranks = [fixed]
+            else:
+                rockers = [fixed]
     name = method or {2: "two positions", 3: "three positions", 4: "Burmester, four positions",
                       5: "Burmester, five positions"}[p.size]
+    if crank_pivot is not None or rocker_pivot is not None:
+        name += ", given ground pivots"
     pairs = [(i, j) for i in range(len(cranks)) for j in range(len(rockers)) if cranks[i] is not rockers[j]]
     order = rng.permutation(len(pairs))
     # Pairs whose crank can turn fully (Grashof, crank shortest) first: the cheap part of the defect check.

@@ -74,6 +74,8 @@ class SynthesisSpec(Spec):
     positions: list[tuple[Length, Length, Angle]] = []
     points: list[tuple[Length, Length]] = []
     timing: list[Angle] = []
+    crank_pivot: tuple[Length, Length] | None = None
+    rocker_pivot: tuple[Length, Length] | None = None
     max_length: PositiveLength | None = None
     # every task
     candidates: int = Field(60, ge=1, le=100_000, strict=True)
@@ -113,6 +115,10 @@ def problems(spec: SynthesisSpec) -> list[tuple[str, str]]:
     if spec.task == "motion" and not 2 <= len(spec.positions) <= 5:
         out.append(("synthesis.positions", f"motion generation takes 2 to 5 positions [x, y, angle]; got "
                                            f"{len(spec.positions)}"))
+    for name in ("crank_pivot", "rocker_pivot"):
+        if getattr(spec, name) is not None and not (spec.task == "motion" and len(spec.positions) == 3):
+            out.append((f"synthesis.{name}", f"can be given for a motion task of 3 positions only; the task is "
+                                             f"'{spec.task}' with {len(spec.positions)} positions"))
     if spec.task == "path":
         if len(spec.points) < 3:
             out.append(("synthesis.points", f"path generation needs at least 3 points [x, y]; got "

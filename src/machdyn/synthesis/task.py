@@ -108,7 +108,9 @@ def candidates_of(spec: Any) -> tuple[list[Candidate], list[Targets], dict]:
     if spec.task == "motion":
         pos = np.array(spec.positions, dtype=float)
         p = pos[:, 0] + 1j * pos[:, 1]
-        cands = motion_candidates(p, pos[:, 2], count=n, seed=spec.seed, max_length=spec.max_length)
+        pivots = [None if v is None else complex(v[0], v[1]) for v in (spec.crank_pivot, spec.rocker_pivot)]
+        cands = motion_candidates(p, pos[:, 2], count=n, seed=spec.seed, max_length=spec.max_length,
+                                  crank_pivot=pivots[0], rocker_pivot=pivots[1])
         t = Targets(points=p, coupler_angles=pos[:, 2], scale=_size(p))
         return cands, [t] * len(cands), {"points": p, "angles": pos[:, 2]}
     pts = np.array(spec.points, dtype=float)
