@@ -31,6 +31,7 @@ bench: $(BENCH_STAMP)
 	$(BIN)/python bench/dynamics.py
 	$(BIN)/python bench/explore.py throughput
 	$(BIN)/python bench/optimise.py
+	$(BIN)/python bench/synthesis.py
 	$(BIN)/python bench/cli.py
 
 lint: $(STAMP)

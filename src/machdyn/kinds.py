@@ -20,6 +20,7 @@ KINDS: dict[str, str] = {
     "screw_conveyor": "machdyn.conveyor.kind:KIND",
     "cam": "machdyn.cams.stage:KIND",
     "shaft_line": "machdyn.shafts.kind:KIND",
+    "synthesis": "machdyn.synthesis.kind:KIND",
 }
 
 #: optional table -> the :class:`~machdyn.pipeline.Capability`

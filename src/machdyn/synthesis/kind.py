@@ -1,0 +1,112 @@
+"""The ``[synthesis]`` problem kind: a task in, ranked candidate linkages out (summary, CSV, problem files).
+
+Registered in :mod:`machdyn.kinds` as ``"synthesis": "machdyn.synthesis.kind:KIND"``. The run's results:
+``synthesis.candidates`` and ``synthesis.defect_free`` (counts), the best candidate's dimensions
+(``synthesis.best.<link>``) and quantities (``synthesis.best.<quantity>``); the series
+``synthesis_candidates.csv`` lists every candidate ranked; ``best_<k>.toml`` are the best ``keep`` candidates as
+mechanism problem files. No candidate free of defects is a failed design check (exit code 3).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from ..pipeline import Outcome, ProblemKind, Step
+from ..results.labels import Label
+from .rank import QUANTITIES
+from .schema import SynthesisProblem, problems
+
+LABELS: dict[str, Label] = {
+    "synthesis.candidates": Label("Candidates synthesised"),
+    "synthesis.defect_free": Label("Candidates free of defects"),
+    "synthesis.best.crank": Label("Best: crank length", "m", "mm"),
+    "synthesis.best.coupler": Label("Best: coupler (rod) length", "m", "mm"),
+    "synthesis.best.rocker": Label("Best: rocker length", "m", "mm"),
+    "synthesis.best.ground": Label("Best: ground length", "m", "mm"),
+    "synthesis.best.offset": Label("Best: slider offset", "m", "mm"),
+    **{f"synthesis.best.{k}": Label(f"Best: {text[0].lower()}{text[1:]}", unit) for k, (text, unit, _) in
+       QUANTITIES.items() if k != "error"},
+}
+
+
+def build(problem: Any) -> tuple[Any, list[tuple[str, str]]]:
+    """No model before the synthesis: only the task's own rules are checked here."""
+    return None, problems(problem.synthesis)
+
+
+def check(problem: Any, _model: Any) -> list[str]:
+    return []
+
+
+def analyse(problem: Any, _model: Any, step: Step) -> Outcome:
+    from ..errors import InputError
+    from .files import problem_text
+    from .task import synthesise
+
+    step("synthesis")
+    spec = problem.synthesis
+    try:
+        result = synthesise(spec)
+    except InputError as exc:  # a valid task without a linkage: a failed design, not bad input
+        return Outcome(scalars={"synthesis.candidates": 0.0, "synthesis.defect_free": 0.0},
+                       summary=("synthesis.candidates",), failed_checks=(str(exc),))
+    best = result.best
+    assert best is not None
+    scalars: dict[str, Any] = {"synthesis.candidates": float(len(result.candidates)),
+                               "synthesis.defect_free": float(result.defect_free)}
+    for name, value in best.lengths().items():
+        scalars[f"synthesis.best.{name}"] = float(value)
+    for key in QUANTITIES:
+        v = float(result.values[key][0])
+        if np.isfinite(v):
+            scalars[f"synthesis.best.{key}"] = v
+    labels = {"synthesis.best.error": Label(
+        "Best: largest output-angle error over the range" if spec.task == "function"
+        else "Best: kinematic error at the positions",
+        "m" if spec.task in ("motion", "path", "slider_quick_return") else "rad")}
+    summary = [k for k in ("synthesis.candidates", "synthesis.defect_free", "synthesis.best.crank",
+                           "synthesis.best.coupler", "synthesis.best.rocker", "synthesis.best.ground",
+                           "synthesis.best.offset", "synthesis.best.error", f"synthesis.best.{result.ranked_by}",
+                           "synthesis.best.min_transmission") if k in scalars]
+    files = {}
+    for k, c in enumerate(result.candidates[:spec.ranking.keep]):
+        turns = result.reports[k].full_turn and spec.full_turn
+        files[f"best_{k + 1}.toml"] = problem_text(
+            c, result.drive, name=f"{problem.meta.name}: candidate {k + 1}",
+            note=f"Rank {k + 1} of {len(result.candidates)} by {result.ranked_by}; defects: "
+                 f"{'; '.join(result.reports[k].defects) or 'none'}.", full_turn=turns)
+    failed = () if result.defect_free else (
+        f"none of the {len(result.candidates)} candidates is free of defects (the best has: "
+        f"{'; '.join(result.reports[0].defects)})",)
+    return Outcome(results=result, scalars=scalars, labels=labels, series={"synthesis_candidates": _series(result)},
+                   files=files, summary=tuple(dict.fromkeys(summary)), failed_checks=failed)
+
+
+def _series(result: Any) -> dict[str, tuple[Any, str]]:
+    cands = result.candidates
+    cols: dict[str, tuple[Any, str]] = {"rank": (np.arange(1, len(cands) + 1), "")}
+    for name in ("crank", "coupler", "rocker", "ground", "offset"):
+        cols[name] = (np.array([getattr(c, name) for c in cands], dtype=float), "m")
+    cols["pivot_x"] = (np.array([c.origin.real for c in cands]), "m")
+    cols["pivot_y"] = (np.array([c.origin.imag for c in cands]), "m")
+    cols["ground_angle"] = (np.array([c.ground_angle for c in cands]), "rad")
+    cols["branch"] = (np.array([c.branch for c in cands]), "")
+    for key, (_, unit, _) in QUANTITIES.items():
+        cols[key] = (np.asarray(result.values[key], dtype=float), unit)
+    cols["defects"] = (np.array([len(r.defects) for r in result.reports]), "")
+    return cols
+
+
+KIND = ProblemKind(
+    name="synthesis",
+    schema=SynthesisProblem,
+    build=build,
+    check=check,
+    analyse=analyse,
+    title=lambda problem: problem.meta.name,
+    steps=("synthesis",),
+    labels=LABELS,
+    report="machdyn.report.synthesis:sections",
+)
