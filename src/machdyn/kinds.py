@@ -18,6 +18,7 @@ KINDS: dict[str, str] = {
     "mechanism": "machdyn.pipelines.mechanism:KIND",
     "rotary_screen": "machdyn.pipelines.rotary_screen:KIND",
     "screw_conveyor": "machdyn.conveyor.kind:KIND",
+    "signals": "machdyn.vibration.records:KIND",  # records alone; beside a machine, [signals] is a capability
 }
 
 #: optional table -> the :class:`~machdyn.pipeline.Capability`

@@ -121,16 +121,16 @@ def plot_predicted_vs_measured(study, ax=None):
     on one plot (bars: measured; diamonds: predicted)."""
     ax = _axes(ax)
     names = [c.name for c in study.before.channels if c.name in study.predicted_before]
-    runs = [("before", study.before, study.predicted_before, study.labels[0])]
+    runs = [("before", study.before, study.predicted_before, study.labels[0], study.predicted_labels[0])]
     if study.after is not None and study.predicted_after:
-        runs.append(("after", study.after, study.predicted_after, study.labels[1]))
+        runs.append(("after", study.after, study.predicted_after, study.labels[1], study.predicted_labels[1]))
     width = 0.8 / len(runs)
-    for i, (tag, analysis, predicted, label) in enumerate(runs):
+    for i, (tag, analysis, predicted, label, predicted_label) in enumerate(runs):
         x = np.arange(len(names)) + (i - (len(runs) - 1) / 2) * width
         ax.bar(x, [analysis.channel(n).velocity_rms * 1e3 for n in names], width, color=_COLOURS[tag], alpha=0.6,
                label=f"measured, {label}")
         ax.plot(x, [predicted[n] * 1e3 for n in names], "D", color=_COLOURS[tag], markeredgecolor="black",
-                label=f"predicted, {label}")
+                label=f"predicted, {predicted_label}")
     ax.set_xticks(np.arange(len(names)), names)
     ax.set_ylabel("RMS velocity [mm/s]")
     ax.set_title("Predicted against measured")
@@ -238,6 +238,21 @@ def frame_sections(outcome: Any) -> list[tuple[str, str]]:
     return sections
 
 
+def predicted_note(study) -> str:
+    """What the predicted column holds: which prediction stands next to which record, and in which band (with
+    why it differs from the frame section's RMS velocities when the bands differ)."""
+    pairs = f"'{study.labels[0]}' is set next to the prediction for '{study.predicted_labels[0]}'"
+    if study.after is not None and study.predicted_after:
+        pairs += f", '{study.labels[1]}' next to the one for '{study.predicted_labels[1]}'"
+    text = (f"Predicted RMS velocity at the frame point named like each channel: {pairs}. The predictions are "
+            f"taken in the records' band {study.band[0]:g}–{study.band[1]:g} Hz, to compare like with like.")
+    if study.frame_band is not None and tuple(study.frame_band) != tuple(study.band):
+        text += (f" The frame section's RMS velocities use the [frame] band {study.frame_band[0]:g}–"
+                 f"{study.frame_band[1]:g} Hz, so they differ from these by the orders in one band and not in the "
+                 f"other.")
+    return text
+
+
 def signal_sections(outcome: Any) -> list[tuple[str, str]]:
     """Report sections of a ``[signals]`` outcome."""
     study = outcome.results
@@ -255,17 +270,23 @@ def signal_sections(outcome: Any) -> list[tuple[str, str]]:
                          "–" if pred is None else format_value(pred * 1e3)])
     head = ["record", "channel", "measured", "RMS velocity [mm/s]", "peak velocity [mm/s]", "RMS acc. [m/s²]",
             "crest factor", "zone", "predicted RMS velocity [mm/s]"]
+    if not study.predicted_before:
+        head, rows = head[:-1], [r[:-1] for r in rows]
     table = rows_html(rows, head).replace('class="summary"', 'class="figures"', 1)
     first = study.severity_before[0]
-    intro = (f"<p>Record <code>{escape(study.before.source)}</code>: {study.before.sampling_rate:.6g} Hz, "
-             f"{study.before.duration:.4g} s; band {study.before.channels[0].band[0]:g}–"
-             f"{study.before.channels[0].band[1]:g} Hz; judged by {escape(first.standard)}, class "
-             f"{escape(first.machine_class)}.</p>")
+    band = study.before.channels[0].band
+    intro = (f"<p>Record <code>{escape(study.before.source)}</code> ({escape(study.labels[0])}): "
+             f"{study.before.sampling_rate:.6g} Hz, {study.before.duration:.4g} s; band {band[0]:g}–{band[1]:g} Hz; "
+             f"judged by {escape(first.standard)}, class {escape(first.machine_class)}.</p>")
+    if study.running_speed is not None:
+        f1 = abs(study.running_speed) / (2 * np.pi)
+        intro += f"<p>Running speed of the machine: {f1 * 60:.4g} rpm ({f1:.4g} Hz, the 1× order).</p>"
     if study.reduction is not None:
-        intro += (f"<p>Reduction of the mean RMS velocity from <code>{escape(study.before.source)}</code> to "
-                  f"<code>{escape(study.after.source if study.after else '')}</code>: "
-                  f"<b>{study.reduction['mean']:.4g} %</b>.</p>")
-
+        intro += (f"<p>Reduction of the mean RMS velocity from <code>{escape(study.before.source)}</code> "
+                  f"({escape(study.labels[0])}) to <code>{escape(study.after.source if study.after else '')}</code> "
+                  f"({escape(study.labels[1])}): <b>{study.reduction['mean']:.4g} %</b>.</p>")
+    if study.predicted_before:
+        intro += "<p>" + escape(predicted_note(study)) + "</p>"
     def draw_zones(fig):
         a1, a2 = fig.subplots(1, 2)
         names = [c.name for c in study.before.channels]

@@ -1,0 +1,60 @@
+"""Which orders of a machine's running speed a measuring band leaves out, said as a warning.
+
+A broad-band RMS velocity counts only the frequencies inside its band (ISO 10816-1:1995 §3 and ISO 2954:2012
+§4: 10-1000 Hz; ISO 2954 notes that some parts of ISO 10816, those for slow machines under 600 r/min, use a
+lower edge of 2 Hz or less). A machine
+turning at 5 Hz (300 r/min) has its 1x order, the one unbalance excites, below a 10 Hz lower edge: the RMS then
+leaves out the largest part of the vibration without a word. :func:`band_order_warnings` says so, naming the
+orders and the band.
+"""
+
+from __future__ import annotations
+
+import math
+
+__all__ = ["band_order_warnings", "orders_outside_band"]
+
+
+def orders_outside_band(band, running_speed: float, orders: int | None = None) -> tuple[list[int], list[int]]:
+    """The orders of the running speed below and above ``band``.
+
+    band : (low, high) [Hz], the band's edges count as inside (as in the band-limited RMS).
+    running_speed : Omega [rad/s] > 0, the machine's running (crank) speed.
+    orders : the highest order analysed (a frame study's harmonics); None for a record, whose content has no
+        highest order: then only the orders below the band are returned (there are finitely many).
+    """
+    low, high = (float(v) for v in band)
+    f1 = running_speed / (2 * math.pi)
+    if not (math.isfinite(f1) and f1 > 0):
+        return [], []
+    top = orders if orders is not None else max(0, math.ceil(low / f1) - 1)
+    below = [k for k in range(1, top + 1) if k * f1 < low * (1 - 1e-12)]
+    above = [k for k in range(1, (orders or 0) + 1) if k * f1 > high * (1 + 1e-12)]
+    return below, above
+
+
+def _name(orders: list[int], f1: float) -> str:
+    if len(orders) == 1:
+        return f"order {orders[0]} ({orders[0] * f1:.3g} Hz)"
+    return f"orders {orders[0]} to {orders[-1]} ({orders[0] * f1:.3g}–{orders[-1] * f1:.3g} Hz)"
+
+
+def band_order_warnings(band, running_speed: float, orders: int | None = None, *,
+                        what: str = "The band") -> tuple[str, ...]:
+    """A warning for each run of orders of ``running_speed`` [rad/s] that ``band`` (low, high) [Hz] leaves out,
+    naming the orders, their frequencies and the band; ``what`` starts the sentence (``"[frame] band"``)."""
+    below, above = orders_outside_band(band, running_speed, orders)
+    low, high = (float(v) for v in band)
+    f1 = running_speed / (2 * math.pi)
+    speed = f"the running speed of {f1 * 60:.4g} rpm ({f1:.3g} Hz)"
+    out = []
+    if below:
+        out.append(f"{what} {low:g}–{high:g} Hz leaves out {_name(below, f1)} of {speed}: the RMS values do not "
+                   f"count {'it' if len(below) == 1 else 'them'}. To count {'it' if len(below) == 1 else 'them'}, "
+                   f"set the band's lower edge below {below[0] * f1:.3g} Hz (the record must then span 5 periods "
+                   f"of the new edge).")
+    if above:
+        out.append(f"{what} {low:g}–{high:g} Hz leaves out {_name(above, f1)} of {speed}: the RMS values do not "
+                   f"count {'it' if len(above) == 1 else 'them'}. Raise the band's top above "
+                   f"{above[-1] * f1:.3g} Hz or keep fewer orders.")
+    return tuple(out)
