@@ -87,12 +87,13 @@ def _zone_warnings(severities, what: str) -> tuple[str, ...]:
 
 def frame_outcome(study: FrameStudy) -> Outcome:
     """The outcome of a frame study: flat results, labels, summary keys, series and zone-D warnings."""
-    from .orders import band_order_warnings
+    from .orders import band_order_warnings, resonance_warnings
 
     values, labels, summary = _frame_values(study)
     loads = study.before.loads
-    warnings = band_order_warnings(study.band, abs(loads.crank_speed), int(np.max(loads.orders)),
-                                   what="The [frame] band")
+    orders = int(np.max(loads.orders))
+    warnings = resonance_warnings(study.modes.frequencies, abs(loads.crank_speed), orders)
+    warnings += band_order_warnings(study.band, abs(loads.crank_speed), orders, what="The [frame] band")
     warnings += _zone_warnings(study.severity_before, f"Predicted vibration ({study.labels[0]})")
     if study.severity_after is not None:
         warnings += _zone_warnings(study.severity_after, f"Predicted vibration ({study.labels[1]})")
