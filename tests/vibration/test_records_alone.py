@@ -168,3 +168,13 @@ def test_record_labels_are_the_users_not_the_frames(slow_machine, tmp_path):
     study = study_signals(loaded.spec.signals, source=str(path), crank_speed=loaded.spec.drive.speed,
                           frame_study=fs)
     assert study.labels == ("tamper_before", "tamper_after")
+
+
+def test_records_alone_are_judged_as_beside_the_machine():
+    """The shipped records-alone example holds the records of vibration_record.toml: every measured value (RMS,
+    zones, crest factors, reduction) is the same to the last bit; only the predictions are absent."""
+    alone = run_problem(read_problem(ROOT / "examples" / "vibration_records_alone.toml"))
+    beside = run_problem(read_problem(EXAMPLE))
+    measured = {k: v for k, v in beside.outcomes["signals"].scalars.items() if not k.startswith("signals.predicted")}
+    assert alone.outcomes["signals"].scalars == measured
+    assert alone.kind == "signals" and not alone.failed_checks

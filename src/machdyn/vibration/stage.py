@@ -167,7 +167,8 @@ def signal_outcome(study: SignalStudy) -> Outcome:
 def run_signals(ctx: StageContext) -> Outcome:
     """Stage of ``[signals]``: the records judged; next to the ``[frame]`` prediction when the file has one."""
     frame = ctx.outcomes.get("frame")
-    speed = float(np.ravel(ctx.analysis.kinematics.speed)[0]) if ctx.analysis is not None else None
+    # the running speed's magnitude: a crank turning clockwise (negative speed) has the same orders
+    speed = abs(float(np.ravel(ctx.analysis.kinematics.speed)[0])) if ctx.analysis is not None else None
     study = study_signals(ctx.table, source=ctx.source, crank_speed=speed,
                           frame_study=frame.results if frame is not None else None)
     return signal_outcome(study)
