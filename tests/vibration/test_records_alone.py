@@ -178,3 +178,21 @@ def test_records_alone_are_judged_as_beside_the_machine():
     measured = {k: v for k, v in beside.outcomes["signals"].scalars.items() if not k.startswith("signals.predicted")}
     assert alone.outcomes["signals"].scalars == measured
     assert alone.kind == "signals" and not alone.failed_checks
+
+
+def test_order_levels_of_a_record_are_its_lines_rms(tmp_path):
+    """With the running speed known, the order table gives the RMS of each line: A1/sqrt 2 at 1x, A3/sqrt 2 at 3x
+    (flat-top window, amplitude-correct within 0.1 %, Brandt 2011 §9.3.4), ~0 at 2x; the CSV holds the spectrum."""
+    from machdyn.vibration.orders import order_levels
+
+    path = _file(tmp_path, 'band = ["2 Hz", "1000 Hz"]\nspeed = "300 rpm"\n')
+    result = run_problem(read_problem(path))
+    c = result.outcomes["signals"].results.before.channel("bearing")
+    first, second, third = order_levels(c.orders, c.order_rms, 3)
+    assert first == pytest.approx(A1 / math.sqrt(2), rel=1e-3)
+    assert third == pytest.approx(A3 / math.sqrt(2), rel=1e-3)
+    assert second < 1e-3 * A3
+    assert "signals_orders" in result.frames
+    result.write(tmp_path / "out")
+    html = (tmp_path / "out" / "report.html").read_text()
+    assert "Orders of the running speed" in html

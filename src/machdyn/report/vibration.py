@@ -256,6 +256,24 @@ def predicted_note(study) -> str:
     return text
 
 
+def order_table(runs, count: int = 6) -> str:
+    """HTML table of the RMS velocity [mm/s] of the first ``count`` orders of the running speed per record and
+    channel (empty without a running speed); the orders below the band's lower edge read 0."""
+    from ..vibration.orders import order_levels
+
+    rows = []
+    for _, analysis, _, label in runs:
+        for c in analysis.channels:
+            if c.orders is None:
+                return ""
+            levels = order_levels(c.orders, c.order_rms, count)
+            rows.append([label, c.name] + ["–" if v is None else format_value(v * 1e3) for v in levels])
+    head = ["record", "channel"] + [f"{k}× [mm/s]" for k in range(1, count + 1)]
+    table = rows_html(rows, head).replace('class="summary"', 'class="figures"', 1)
+    return ("<h3>Orders of the running speed</h3><p>RMS velocity of each order in the band (flat-top order "
+            "spectrum); the whole order spectra are in <code>signals_orders.csv</code>.</p>" + table)
+
+
 def signal_sections(outcome: Any) -> list[tuple[str, str]]:
     """Report sections of a ``[signals]`` outcome."""
     study = outcome.results
@@ -290,6 +308,7 @@ def signal_sections(outcome: Any) -> list[tuple[str, str]]:
                   f"({escape(study.labels[1])}): <b>{study.reduction['mean']:.4g} %</b>.</p>")
     if study.predicted_before:
         intro += "<p>" + escape(predicted_note(study)) + "</p>"
+    orders = order_table(runs)
     def draw_zones(fig):
         a1, a2 = fig.subplots(1, 2)
         names = [c.name for c in study.before.channels]
@@ -299,7 +318,7 @@ def signal_sections(outcome: Any) -> list[tuple[str, str]]:
         plot_velocity_psd(study.before, a2, study.before.channels[0].band)
 
     sections = [("Measured vibration", intro + table + _figure("signals", "Zones and spectra", (10.0, 3.8),
-                                                                draw_zones))]
+                                                                draw_zones) + orders)]
     if study.predicted_before:
         def draw_pred(fig):
             plot_predicted_vs_measured(study, fig.subplots())

@@ -87,3 +87,24 @@ def resonance_warnings(frequencies, running_speed: float, orders: int, margin: f
                  f"({fk:.3g} Hz; {100 * d:+.1f} %): near resonance, the response there is magnified "
                  f"(at least {1 / abs(1 - (1 + d) ** 2):.2g} times the static response without damping)."
                  for j, f, k, fk, d in near_resonances(frequencies, running_speed, orders, margin))
+
+
+def order_levels(orders, order_rms, count: int = 6) -> list[float | None]:
+    """The RMS amplitude of each order 1..``count`` of an order spectrum (:func:`~machdyn.vibration.signals.
+    order_spectrum`: flat-top window, amplitude-correct for a line between two bins, Brandt 2011 §9.3.4): the
+    largest value within three spectral lines (and half an order) of the order, None beyond the spectrum.
+
+    orders : the spectrum's orders [-], increasing and evenly spaced; order_rms : RMS per line [unit].
+    """
+    import numpy as np
+
+    k_all = np.asarray(orders, dtype=float)
+    a_all = np.asarray(order_rms, dtype=float)
+    if k_all.size < 2:
+        return [None] * count
+    reach = min(0.5, 3.0 * float(k_all[1] - k_all[0]))
+    out: list[float | None] = []
+    for k in range(1, count + 1):
+        near = np.abs(k_all - k) <= reach
+        out.append(float(a_all[near].max()) if near.any() and k_all[-1] >= k else None)
+    return out

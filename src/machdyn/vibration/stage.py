@@ -159,8 +159,15 @@ def signal_outcome(study: SignalStudy) -> Outcome:
     psd: dict = {"frequency": (first.frequencies, "Hz")}
     for c in study.before.channels:
         psd[c.name] = (np.asarray(c.velocity_psd), "m^2/s^2/Hz")
+    series: dict = {"signals_psd": psd}
+    for tag, record in (("", study.before), ("_after", study.after)):
+        if record is not None and record.channels[0].orders is not None:
+            columns: dict = {"order": (record.channels[0].orders, "")}
+            for c in record.channels:
+                columns[c.name] = (np.asarray(c.order_rms), "m/s")
+            series[f"signals_orders{tag}"] = columns
     warnings = (*study.warnings, *_zone_warnings(study.severity_before, f"Measured vibration ({study.labels[0]})"))
-    return Outcome(results=study, scalars=values, labels=labels, series={"signals_psd": psd}, summary=summary,
+    return Outcome(results=study, scalars=values, labels=labels, series=series, summary=summary,
                    warnings=warnings)
 
 
