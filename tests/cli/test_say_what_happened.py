@@ -103,7 +103,8 @@ def test_mode_near_the_first_order_is_a_warning_on_the_command_line(tmp_path):
     said = [line for line in result.output.splitlines() if "within 15 % of order 1" in line]
     assert len(said) == 1 and said[0].startswith("warning: Frame mode 3 (13.9 Hz)")
     assert "+4.4 %" in said[0]
-    assert "Near resonance</b> (a mode within 15 % of an order)" in (tmp_path / "out" / "report.html").read_text()
+    report = (tmp_path / "out" / "report.html").read_text()
+    assert "Near resonance:</b> mode 3 (13.9 Hz) near order 1 (13.3 Hz, +4.4 %, within 15 %)" in report
 
 
 def test_near_dead_position_names_the_crank_angle_and_the_margin(tmp_path):

@@ -187,7 +187,8 @@ def frame_sections(outcome: Any) -> list[tuple[str, str]]:
     orders = study.before.loads.orders
     from ..vibration.orders import RESONANCE_MARGIN, near_resonances
 
-    near = [f"mode {j} ({f:.3g} Hz) near order {k} ({fk:.3g} Hz, {100 * d:+.1f} %)" for j, f, k, fk, d in
+    near = [f"mode {j} ({f:.3g} Hz) near order {k} ({fk:.3g} Hz, {100 * d:+.1f} %, within "
+            f"{100 * RESONANCE_MARGIN:.0f} %)" for j, f, k, fk, d in
             near_resonances(study.modes.frequencies, abs(study.before.loads.crank_speed), int(np.max(orders)))]
     direction = ("the vector of x and y" if study.direction is None
                  else f"the direction {np.degrees(study.direction):.4g}° from the x axis")
@@ -196,8 +197,7 @@ def frame_sections(outcome: Any) -> list[tuple[str, str]]:
              f"{crank_hz:.4g} Hz. RMS values along {escape(direction)}, in the band "
              f"{study.band[0]:g}–{study.band[1]:g} Hz.</p>")
     if near:
-        intro += (f"<p><b>Near resonance</b> (a mode within {100 * RESONANCE_MARGIN:.0f} % of an order): "
-                  f"{escape('; '.join(near))}.</p>")
+        intro += f"<p><b>Near resonance:</b> {escape('; '.join(near))}.</p>"
     sections = [("Frame modes", intro + mode_table(study))]
     names = list(study.points)
     rows = []
