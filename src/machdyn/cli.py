@@ -271,14 +271,21 @@ def run(
         if open_report and done.exit_code == EXIT_CHECKS_FAILED:  # the outputs are written: show them
             _open_in_browser(out / "report.html")
         raise
-    except KeyboardInterrupt:
-        raise
+    except KeyboardInterrupt as stop:
+        raise _interrupted(stop, out) from None
     except Exception as exc:  # noqa: BLE001 - anything unexpected becomes exit 4 without a traceback
         raise _internal_error(exc, debug) from None
 
 
     if open_report:
         _open_in_browser(out / "report.html")
+
+
+def _interrupted(stop: KeyboardInterrupt, out: Path) -> typer.Exit:
+    """Ctrl-C during ``run``: say what is on disk and how to go on; exit 130 (128 + SIGINT), as shells do."""
+    said = getattr(stop, "message", None)
+    kept = f"the outputs in {out}/ were not replaced (a run writes them as one set at its end)"
+    return _fail(f"interrupted: {said}; {kept}" if said else f"interrupted: {kept}", 130)
 
 
 def _open_in_browser(report: Path) -> None:
@@ -360,6 +367,10 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
             raise _fail(f"error: the outputs of {file} could not be produced: {exc}", EXIT_FAILED) from None
     if not quiet:
         _print_rows(result.summary, format, result.warnings)
+        explored: Any = getattr(result.outcomes.get("sweep"), "results", None)
+        if getattr(explored, "reused", 0):
+            typer.echo(f"resumed: {explored.reused} partition(s) reused from {explored.store}, "
+                       f"{explored.computed} computed", err=True)
         if format is TableFormat.table:
             elapsed = time.perf_counter() - started
             typer.echo(f"wrote {len(paths)} file(s) to {out}/ ({', '.join(p.name for p in paths)}) in "

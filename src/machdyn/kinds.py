@@ -21,6 +21,7 @@ KINDS: dict[str, str] = {
     "cam": "machdyn.cams.stage:KIND",
     "shaft_line": "machdyn.shafts.kind:KIND",
     "synthesis": "machdyn.synthesis.kind:KIND",
+    "signals": "machdyn.vibration.records:KIND",  # records alone; beside a machine, [signals] is a capability
 }
 
 #: optional table -> the :class:`~machdyn.pipeline.Capability`

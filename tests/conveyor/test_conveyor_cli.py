@@ -24,6 +24,9 @@ def test_conveyor_examples_run_and_report_si_results(example, tmp_path):
 def test_failed_check_exits_3_and_is_said_once(tmp_path):
     text = (ROOT / "examples" / "conveyor_lift_torque.toml").read_text().replace('torque = "140 N*m"',
                                                                                   'torque = "2000 N*m"')
+    # the whole axial force on one flight turn (seed 004, eq 2.56), so that the flight fails too
+    text = text.replace('[screw_conveyor.screw]\n', '[screw_conveyor.screw]\nflight_load = "one_turn"\n', 1)
+    assert 'flight_load = "one_turn"' in text
     problem = tmp_path / "overloaded.toml"
     problem.write_text(text)
     result = CliRunner().invoke(app, ["run", str(problem), "--out", str(tmp_path / "out")])

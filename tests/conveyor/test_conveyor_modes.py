@@ -20,8 +20,9 @@ def test_check_an_existing_conveyor_from_diameter_pitch_speed_and_filling(base_p
     sc["screw"].update({"diameter": "250 mm", "speed": "80 rpm"})
     result = evaluate(validate(base_problem))
     s = result.scalars
-    # the duty is the screw's capacity: 15π·D²·S·n·φ·C·ρ [t/h] (seed 004, eq 2.83)
-    cap = 15 * math.pi * 0.25**2 * 0.8 * 0.25 * 80 * 0.4 * 0.8 * 1.2 / 3.6  # kg/s
+    # the duty is the screw's capacity: 15π·(D² − d_o²)·S·n·φ·C·ρ [t/h] (seed 004, eq 2.83, with the pipe
+    # deducted as in CEMA 350: the base problem's 100 mm pipe)
+    cap = 15 * math.pi * (0.25**2 - 0.1**2) * 0.8 * 0.25 * 80 * 0.4 * 0.8 * 1.2 / 3.6  # kg/s
     assert s["mass_flow"] == pytest.approx(cap, rel=1e-12)
     assert s["check_throughput_<=_capacity_utilisation"] == pytest.approx(1.0)
     assert s["torque"] == pytest.approx(s["shaft_power"] / (80 * math.pi / 30))

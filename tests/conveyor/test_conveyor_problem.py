@@ -171,6 +171,9 @@ def test_duty_beyond_the_largest_screw_is_refused_at_validation(base_problem):
 
 
 def test_pipe_larger_than_the_chosen_screw_is_refused_at_validation(base_problem):
+    # with the whole circle as the capacity's section the duty chooses 200 mm whatever the pipe (with the pipe
+    # deducted, the default, the duty chooses a screw around the pipe: see test_capacity_deducts_the_pipe...)
+    base_problem["screw_conveyor"]["screw"]["capacity_section"] = "circle"
     base_problem["screw_conveyor"]["screw"]["pipe_outer_diameter"] = "250 mm"
     problems = _problems(base_problem)
     assert problems["screw_conveyor.screw.pipe_outer_diameter"] == "must be < the screw diameter 0.2 m; got 0.25 m"

@@ -469,6 +469,46 @@ def flight_pressure(axial, diameter, pipe_outer_diameter):
     return axial / (math.pi * ((diameter / 2.0) ** 2 - (pipe_outer_diameter / 2.0) ** 2))
 
 
+def flight_turn_pressure(axial, diameter, pipe_outer_diameter, pitch, length, material_area):
+    """Pressure on one flight turn when the axial force is shared by the turns along the screw [Pa]:
+    p = (F_a·S/L)/A_m, A_m the material's cross-section in the annulus.
+
+    The axial force builds up along the screw with the uniform intensity p_d = F_a/L (seed 004, eq 2.92, which
+    the seed itself uses for the pipe), so one pitch S of length, one flight turn, carries F_a·S/L (all of it
+    for a screw shorter than one pitch). That share is pressed on the part of the flight's face in contact with
+    the material; projected on the cross-section, that part is the material's cross-section A_m (φ times the
+    annulus π(R1² − R2²) when the screw is filled to φ of it), so the contact pressure is (F_a·S/L)/A_m. The
+    flight's plate model is axisymmetric: it takes this pressure on the whole face, which bounds the sector load
+    from above for the clamped-edge moment. CEMA 350 and the manufacturers' guides (KWS, Martin) size flights
+    from thickness tables instead of a stress; seed 004 (eq 2.56) puts the whole axial force on one turn's whole
+    face (:func:`flight_pressure`, kept as the ``one_turn`` option).
+
+    Parameters
+    ----------
+    axial : float or array
+        Axial force F_a [N] at the drive end.
+    diameter, pipe_outer_diameter : float or array
+        D = 2·R1 and d_o = 2·R2 [m].
+    pitch, length : float or array
+        S and the screw length L [m], > 0.
+    material_area : float or array
+        A_m [m²] > 0, the material's cross-section (at most the annulus, to which it is clipped).
+
+    Returns
+    -------
+    float or array
+        p [Pa].
+
+    Examples
+    --------
+    >>> round(float(flight_turn_pressure(1000.0, 0.2, 0.1, 0.2, 10.0, 0.3 * math.pi * (0.1**2 - 0.05**2))), 3)
+    2829.421
+    """
+    annulus = math.pi * ((diameter / 2.0) ** 2 - (pipe_outer_diameter / 2.0) ** 2)
+    share = np.minimum(1.0, pitch / length)
+    return axial * share / np.minimum(material_area, annulus)
+
+
 def lift_height(length, inclination):
     """Lift of an inclined screw H = L·sin β [m] (seed 004, worked example: 21·sin 10° = 3.65 m).
 

@@ -18,11 +18,17 @@ _MIN = 60.0
 
 
 def volume_capacity(diameter: float, pitch: float, speed_rpm: float, filling: float,
-                    inclination_factor: float = 1.0) -> float:
-    """Volumetric capacity of a screw conveyor Q_v = (π/4)·D²·S·n·φ·C/60 [m³/s].
+                    inclination_factor: float = 1.0, pipe_diameter: float = 0.0) -> float:
+    """Volumetric capacity of a screw conveyor Q_v = (π/4)·(D² − d_o²)·S·n·φ·C/60 [m³/s].
 
-    Seed 004, eq 2.83 divided by ρ (Q in t/h there is 60·(π/4)·D²·S·n·φ·C·ρ); the whole flight cross-section
-    (no pipe deduction), as in the seed and in Alexandrov, *Materials Handling Equipment*.
+    With ``pipe_diameter`` d_o = 0 this is seed 004, eq 2.83 divided by ρ (Q in t/h there is
+    60·(π/4)·D²·S·n·φ·C·ρ), the whole circle as in Alexandrov, *Materials Handling Equipment* (his worked
+    example: F = (π/4)·0.3²·0.8 = 0.057 m²), where φ is the filled fraction of the whole circle. With the pipe's
+    outer diameter d_o, the annulus the material can occupy, as CEMA 350 and its manufacturers' guides compute
+    capacity (KWS *Screw Conveyor Engineering Guide*, "Screw conveyor capacity": ft³/h per rpm =
+    0.7854·(D_s² − D_p²)·P·K·60/1728, K the trough loading); the CEMA capacity tables follow it (a 12-inch screw
+    on its 3½-inch pipe at 45 % loading: 19.4 ft³/h per rpm, against 21.2 for the whole circle). φ is then the
+    filled fraction of the annulus.
 
     Parameters
     ----------
@@ -36,6 +42,8 @@ def volume_capacity(diameter: float, pitch: float, speed_rpm: float, filling: fl
         Filling coefficient φ [-], 0 < φ <= 1.
     inclination_factor : float
         C [-] (1.0 horizontal … 0.65 at 20°).
+    pipe_diameter : float or array
+        Pipe (shaft) outer diameter d_o [m], 0 <= d_o < D; 0 for the whole circle.
 
     Returns
     -------
@@ -46,8 +54,10 @@ def volume_capacity(diameter: float, pitch: float, speed_rpm: float, filling: fl
     --------
     >>> round(volume_capacity(0.2, 0.16, 100.62306, 0.4, 0.8) * 3600, 4)  # seed 004: 9.71 m³/h
     9.7111
+    >>> round(volume_capacity(0.2, 0.16, 100.62306, 0.4, 0.8, 0.1) * 3600, 4)  # the 100 mm pipe deducted
+    7.2833
     """
-    return math.pi / 4.0 * diameter**2 * pitch * speed_rpm / _MIN * filling * inclination_factor
+    return math.pi / 4.0 * (diameter**2 - pipe_diameter**2) * pitch * speed_rpm / _MIN * filling * inclination_factor
 
 
 def speed_limit(diameter: float, speed_coefficient: float) -> float:
@@ -75,12 +85,15 @@ def speed_limit(diameter: float, speed_coefficient: float) -> float:
 
 
 def diameter_for_duty(volume_flow: float, pitch_ratio: float, speed_coefficient: float, filling: float,
-                      inclination_factor: float = 1.0) -> float:
+                      inclination_factor: float = 1.0, pipe_diameter: float = 0.0, pipe_ratio: float = 0.0) -> float:
     """Smallest screw diameter that carries ``volume_flow`` at the speed limit n = k/√D [m].
 
     With S = s·D and n = k/√D, eq 2.83 gives Q = 15π·s·k·φ·C·D^{5/2} [m³/h], so
     D = (Q/(15π·s·k·φ·C))^{2/5} (seed 004, eq 2.84; 37.7 = 15π·0.8 there). Seed 004 prints the mass flow divided
     by ρ twice over (ρ cancels) and labels k = 45 as the filling; the result 164.96 mm is the same.
+    With the pipe deducted (:func:`volume_capacity`): a pipe in proportion d_o = η·D (``pipe_ratio`` η) divides
+    the right-hand side by 1 − η²; a pipe of fixed size d_o (``pipe_diameter``) makes
+    Q = 15π·s·k·φ·C·√D·(D² − d_o²), increasing in D > d_o, solved by bisection.
 
     Parameters
     ----------
@@ -94,6 +107,10 @@ def diameter_for_duty(volume_flow: float, pitch_ratio: float, speed_coefficient:
         φ [-].
     inclination_factor : float
         C [-].
+    pipe_diameter : float
+        d_o [m] of a given pipe, or 0.
+    pipe_ratio : float
+        η = d_o/D [-], 0 <= η < 1, when the pipe scales with the screw (used if ``pipe_diameter`` is 0).
 
     Returns
     -------
@@ -106,7 +123,21 @@ def diameter_for_duty(volume_flow: float, pitch_ratio: float, speed_coefficient:
     164.96
     """
     q_h = volume_flow * 3600.0
-    return (q_h / (15.0 * math.pi * pitch_ratio * speed_coefficient * filling * inclination_factor)) ** 0.4
+    base = q_h / (15.0 * math.pi * pitch_ratio * speed_coefficient * filling * inclination_factor)
+    if pipe_diameter <= 0.0:
+        return (base / (1.0 - pipe_ratio**2)) ** 0.4
+    low, high = pipe_diameter, max(2.0 * pipe_diameter, base**0.4 + pipe_diameter)
+    while math.sqrt(high) * (high**2 - pipe_diameter**2) < base:
+        high *= 2.0
+    for _ in range(200):  # bisection to rounding: the function rises monotonically above d_o
+        mid = 0.5 * (low + high)
+        if math.sqrt(mid) * (mid**2 - pipe_diameter**2) < base:
+            low = mid
+        else:
+            high = mid
+        if high - low <= 1e-15 * high:
+            break
+    return high
 
 
 def next_standard_diameter(diameter: float) -> float:
@@ -153,12 +184,14 @@ class ScrewDesign:
 
 def design_screw(*, mass_flow: float, bulk_density: float, filling: float, speed_coefficient: float,
                  pitch_ratio: float, inclination_factor: float, diameter: float | None = None,
-                 speed: float | None = None) -> ScrewDesign:
+                 speed: float | None = None, pipe_diameter: float = 0.0, pipe_ratio: float = 0.0) -> ScrewDesign:
     """Size the screw for a duty: required and standard diameter, pitch, speed, capacity.
 
     mass_flow [kg/s], bulk_density [kg/m³], filling φ [-] (≤ 1), speed_coefficient k [rpm·m^0.5],
     pitch_ratio S/D [-], inclination_factor C [-]; ``diameter`` [m] forces a size (otherwise the next
     standard size), ``speed`` [rpm] forces a speed (otherwise the speed limit k/√D, as in seed 004).
+    ``pipe_diameter`` [m] (a given pipe) or ``pipe_ratio`` d_o/D [-] (a pipe scaling with the screw) is deducted
+    from the capacity (:func:`volume_capacity`); both 0: the whole circle, as in seed 004.
     """
     check_positive("throughput", mass_flow, "kg/s")
     check_positive("bulk density", bulk_density, "kg/m^3")
@@ -171,13 +204,18 @@ def design_screw(*, mass_flow: float, bulk_density: float, filling: float, speed
     if inclination_factor > 1.0:
         raise InputError(f"The inclination factor must be <= 1; got {inclination_factor:g}.")
     volume_flow = mass_flow / bulk_density
-    d_req = diameter_for_duty(volume_flow, pitch_ratio, speed_coefficient, filling, inclination_factor)
+    d_req = diameter_for_duty(volume_flow, pitch_ratio, speed_coefficient, filling, inclination_factor,
+                              pipe_diameter, pipe_ratio)
+
+    def pipe(d: float) -> float:
+        return pipe_diameter if pipe_diameter > 0.0 else pipe_ratio * d
+
     if diameter is None:
         sizes = tables.standard_diameters()
         if d_req > sizes[-1]:
             biggest = sizes[-1]
             n_big = speed_limit(biggest, speed_coefficient)
-            cap = volume_capacity(biggest, pitch_ratio * biggest, n_big, filling, inclination_factor)
+            cap = volume_capacity(biggest, pitch_ratio * biggest, n_big, filling, inclination_factor, pipe(biggest))
             raise InputError(
                 f"The throughput {mass_flow * 3.6:.4g} t/h ({volume_flow * 3600:.4g} m^3/h) exceeds the "
                 f"capacity of the largest standard screw ({biggest * 1000:.0f} mm at {n_big:.1f} rpm): "
@@ -191,7 +229,7 @@ def design_screw(*, mass_flow: float, bulk_density: float, filling: float, speed
     n_lim = speed_limit(d, speed_coefficient)
     n = n_lim if speed is None else speed
     check_positive("screw speed", n, "rpm")
-    cap_v = volume_capacity(d, pitch, n, filling, inclination_factor)
+    cap_v = volume_capacity(d, pitch, n, filling, inclination_factor, min(pipe(d), d))
     return ScrewDesign(
         diameter_required=d_req, diameter=d, pitch=pitch, speed_limit=n_lim, speed=n,
         inclination_factor=inclination_factor, filling=filling, volume_flow=volume_flow,

@@ -84,14 +84,19 @@ class ConveyorResult:
 def choose_screw(p: ConveyorProblem) -> ScrewDesign:
     """The screw for the duty, or the given screw with its capacity as the duty (check mode)."""
     mass_flow = p.mass_flow
+    # the pipe deducted from the capacity: the given one, else half the screw (as the checks assume)
+    annulus = p.capacity_section == "annulus"
+    pipe = (p.pipe_outer_diameter or 0.0) if annulus else 0.0
+    ratio = 0.5 if annulus and p.pipe_outer_diameter is None else 0.0
     if mass_flow is None:
         if p.diameter is None or p.speed is None:
             raise InputError("The throughput is required unless screw.diameter and screw.speed are given.")
         mass_flow = volume_capacity(p.diameter, p.pitch_ratio * p.diameter, p.speed, p.filling,
-                                    p.inclination_factor) * p.bulk_density
+                                    p.inclination_factor, min(pipe or ratio * p.diameter, p.diameter)) * p.bulk_density
     return design_screw(mass_flow=mass_flow, bulk_density=p.bulk_density, filling=p.filling,
                         speed_coefficient=p.speed_coefficient, pitch_ratio=p.pitch_ratio,
-                        inclination_factor=p.inclination_factor, diameter=p.diameter, speed=p.speed)
+                        inclination_factor=p.inclination_factor, diameter=p.diameter, speed=p.speed,
+                        pipe_diameter=pipe, pipe_ratio=ratio)
 
 
 def evaluate(problem: ConveyorProblem, *, bending: bool = True) -> ConveyorResult:

@@ -33,7 +33,7 @@ LABELS: dict[str, Label] = {
     "screw_mass_per_length": Label("Screw mass per length", "kg/m", "kg/m"),
     "screw_mass": Label("Screw mass", "kg", "kg"),
     "deflection": Label("Deflection between hangers", "m", "mm"),
-    "flight_pressure": Label("Flight pressure (all axial force on one turn)", "Pa", "kPa"),
+    "flight_pressure": Label("Flight contact pressure (screw.flight_load)", "Pa", "kPa"),
     "pipe_outer_diameter": Label("Pipe outer diameter", "m", "mm"),
     "pipe_inner_diameter": Label("Pipe inner diameter", "m", "mm"),
     "flight_thickness": Label("Flight thickness", "m", "mm"),

@@ -101,6 +101,11 @@ class ConveyorProblem:
     base_bolts: BaseBolts | None = None
     search: DesignSearch | None = None
     source: str | None = None
+    #: "annulus": the pipe's section deducted from the capacity (CEMA 350); "circle": the whole D² (seed 004).
+    capacity_section: str = "annulus"
+    #: "per_pitch": each flight turn carries the axial force of its own pitch, F_a·S/L, on the material's
+    #: cross-section; "one_turn": the whole axial force on one turn's whole face (seed 004, eq 2.56).
+    flight_load: str = "per_pitch"
 
     @property
     def lift_height(self) -> float:

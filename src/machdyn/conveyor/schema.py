@@ -9,7 +9,7 @@ the shared error collector of :mod:`machdyn.problem.errors` (every mistake with 
 from __future__ import annotations
 
 import math
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
 from pydantic import AfterValidator, BaseModel, BeforeValidator, ConfigDict, Field, ValidationError
 
@@ -139,6 +139,8 @@ class ScrewIn(_Table):
     hanger_bearing: Annotated[str, _name_in(tables.cema_hanger_bearing_factor)] = "bronze"
     flight_type: Annotated[str, _name_in(lambda t: tables.cema_flight_factor(t, 0.95))] = "standard"
     paddles: Annotated[int, Field(ge=0, le=4)] = 0
+    capacity_section: Literal["annulus", "circle"] = "annulus"
+    flight_load: Literal["per_pitch", "one_turn"] = "per_pitch"
 
 
 class DriveIn(_Table):
@@ -348,7 +350,8 @@ def validate(data: dict[str, Any], source: str | None = None) -> ConveyorProblem
         pipe_outer_diameter=s.pipe_outer_diameter, pipe_wall=s.pipe_wall, flight_thickness=s.flight_thickness,
         hanger_spacing=s.hanger_spacing, force_radius_ratio=s.force_radius_ratio,
         lateral_load_factor=s.lateral_load_factor, hanger_bearing=s.hanger_bearing, flight_type=s.flight_type,
-        paddles=s.paddles, drive_efficiency=eta, coupling_service_factor=d.coupling_service_factor,
+        paddles=s.paddles, capacity_section=s.capacity_section, flight_load=s.flight_load,
+        drive_efficiency=eta, coupling_service_factor=d.coupling_service_factor,
         shear_modulus=st.shear_modulus, elastic_modulus=st.elastic_modulus, poisson_ratio=st.poisson_ratio,
         steel_density=st.steel_density, allowable_shear_stress=st.allowable_shear_stress,
         allowable_stress=st.allowable_stress, allowable_twist=st.allowable_twist,

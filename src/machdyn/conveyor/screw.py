@@ -24,13 +24,14 @@ _RPM = math.pi / 30.0  # rad/s per rpm
 #: The design checks every candidate must pass: key -> (name, SI unit, display unit, basis).
 CHECKS: dict[str, tuple[str, str, str, str]] = {
     "speed": ("Screw speed n <= k/sqrt(D)", "rad/s", "rpm", "seed 004, n = k/sqrt(D)"),
-    "capacity": ("Throughput <= capacity", "kg/s", "t/h", "seed 004, eq 2.83"),
+    "capacity": ("Throughput <= capacity", "kg/s", "t/h", "seed 004, eq 2.83; pipe deducted as in CEMA 350"),
     "motor": ("Motor load", "W", "kW", "IEC 60072-1 rating"),
     "twist": ("Pipe twist rate at the drive", "rad/m", "deg/m", "T/(G·Jp), pipe section"),
     "shear": ("Pipe torsional shear stress", "Pa", "MPa", "T·(d_o/2)/Jp"),
     "stress": ("Pipe equivalent stress (Tresca)", "Pa", "MPa", "seed 004, eq 2.48, pipe section"),
     "deflection": ("Deflection between hangers", "m", "mm", "5ql^4/(384EI), simply supported span"),
-    "flight": ("Flight bending stress at the pipe", "Pa", "MPa", "seed 004, eqs 2.66-2.70 (corrected)"),
+    "flight": ("Flight bending stress at the pipe", "Pa", "MPa",
+               "seed 004, eqs 2.66-2.70 (corrected); load of one pitch, eq 2.92"),
 }
 
 
@@ -109,7 +110,12 @@ def screw_states(problem: ConveyorProblem, diameter: Any, pitch: Any, speed: Any
     p = problem
     d, s, n, phi, m_dot = (_arr(x) for x in (diameter, pitch, speed, filling, mass_flow))
     out: dict[str, Any] = {}
-    cap_v = volume_capacity(d, s, n, phi, p.inclination_factor)
+    d_o: Any
+    wall: Any
+    t_f: Any
+    d_o = p.pipe_outer_diameter if p.pipe_outer_diameter is not None else 0.5 * d
+    deducted = d_o if p.capacity_section == "annulus" else 0.0 * d_o
+    cap_v = volume_capacity(d, s, n, phi, p.inclination_factor, deducted)
     v_dot = m_dot / p.bulk_density
     fill_actual = phi * v_dot / cap_v
     n_lim = speed_limit(d, p.speed_coefficient)
@@ -119,10 +125,6 @@ def screw_states(problem: ConveyorProblem, diameter: Any, pitch: Any, speed: Any
     motor = tables.motor_ratings_for(motor_required)
     torque = ck.torque_from_power(shaft, n) if p.torque is None else p.torque + 0 * d
 
-    d_o: Any
-    wall: Any
-    t_f: Any
-    d_o = p.pipe_outer_diameter if p.pipe_outer_diameter is not None else 0.5 * d
     wall = p.pipe_wall if p.pipe_wall is not None else d_o / 12.0
     d_i = d_o - 2 * wall
     t_f = p.flight_thickness if p.flight_thickness is not None else np.maximum(0.003, d / 50.0)
@@ -137,7 +139,11 @@ def screw_states(problem: ConveyorProblem, diameter: Any, pitch: Any, speed: Any
     q = np.hypot(mass_len * pw.G, dist["p_n"])
     sigma_eq = ck.pipe_equivalent_stress(q, span, f_axial, torque, d_o, d_i)
     deflection = ck.span_deflection(q, span, p.elastic_modulus, jp / 2.0)
-    pressure = ck.flight_pressure(f_axial, d, d_o)
+    if p.flight_load == "one_turn":
+        pressure = ck.flight_pressure(f_axial, d, d_o)
+    else:  # the material's section: the filled fraction of the section its filling refers to
+        material = fill_actual * math.pi / 4.0 * (d**2 - deducted**2)
+        pressure = ck.flight_turn_pressure(f_axial, d, d_o, s, length, material)
     known = np.isfinite(pressure)  # NaN where the selected power method does not apply to a candidate
     sigma_flight = np.where(known, flight_max_stress(_arr(np.where(known, pressure, 0.0)), d / 2, d_o / 2, t_f,
                                                      p.poisson_ratio), np.nan)

@@ -115,6 +115,21 @@ class Exploration:
         return pd.DataFrame(self.digest.sample_in_design_order())
 
 
+class ExplorationInterrupted(KeyboardInterrupt):
+    """An exploration stopped by Ctrl-C: ``done`` of ``total`` partitions are complete in ``store`` (each
+    partition file is written whole or not at all); running the same problem again resumes from them."""
+
+    def __init__(self, store: Path, done: int, total: int):
+        super().__init__(f"{done} of {total} partitions in {store}")
+        self.store, self.done, self.total = store, done, total
+
+    @property
+    def message(self) -> str:
+        return (f"{self.done} of {self.total} partition(s) of the design-space exploration are on disk in "
+                f"{self.store}; run the same command again to resume: they are reused, only the other "
+                f"{self.total - self.done} computed")
+
+
 def _store_folder(plan: ExplorePlan, given: str | os.PathLike | None, default: str | os.PathLike | None,
                   source: str | None) -> Path:
     """The Parquet folder: the one given to the call, else ``[sweep] store`` (relative to the problem file), else
@@ -180,6 +195,9 @@ def explore(
     with contextlib.ExitStack() as stack:
         if report is True:
             report = stack.enter_context(progress_bar(f"{plan.space.size:,} designs"))
-        stats = run_partitions(plan, keeper, units, workers=workers, scheduler=scheduler,
-                               progress=report or None, on_partition=on_partition)
+        try:
+            stats = run_partitions(plan, keeper, units, workers=workers, scheduler=scheduler,
+                                   progress=report or None, on_partition=on_partition)
+        except KeyboardInterrupt:
+            raise ExplorationInterrupted(folder, len(keeper.done()), plan.space.partitions) from None
     return Exploration(plan, folder, stats.digest, stats.computed, stats.reused, stats.seconds, stats.where, units)

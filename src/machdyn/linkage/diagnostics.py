@@ -166,7 +166,13 @@ def _diagnose(mech: Mechanism, kin: Kinematics, window: tuple[float, float] | No
     dead = [d for d in dead if bool(in_window(d, window))]
     t_min, t_max = np.inf, -np.inf
     per_dyad: list[tuple[float, float] | None] = []
+    closest = (np.inf, 0.0)  # (angle to a dead position: min(mu, 180 deg - mu) [rad], crank angle [rad])
     for rep in kin.dyad_reports:
+        mu_all = np.asarray(rep.transmission, dtype=float)
+        if mu_all.shape == phi.shape:
+            margin = np.where(ok & np.isfinite(mu_all), np.minimum(mu_all, np.pi - mu_all), np.inf)
+            if margin.size and np.isfinite(margin.min()) and margin.min() < closest[0]:
+                closest = (float(margin.min()), float(phi[int(np.argmin(margin))]))
         mu = np.asarray(rep.transmission)[ok]
         mu = mu[np.isfinite(mu)]
         per_dyad.append((float(mu.min()), float(mu.max())) if mu.size else None)
@@ -200,7 +206,10 @@ def _diagnose(mech: Mechanism, kin: Kinematics, window: tuple[float, float] | No
         warnings.append(
             f"The transmission angle ranges {np.degrees(t_min):.1f}°–{np.degrees(t_max):.1f}°; below "
             f"{MIN_GOOD_TRANSMISSION_DEG:.0f}° (or above {180 - MIN_GOOD_TRANSMISSION_DEG:.0f}°) force "
-            "transmission is poor."
+            "transmission is poor"
+            + (f"; nearest a dead position (0° or 180°) at crank angle {np.degrees(closest[1]) % 360:.1f}°, "
+               f"{np.degrees(closest[0]):.1f}° away: the joint forces grow as 1/sin of that angle."
+               if np.isfinite(closest[0]) else ".")
         )
     if dead:
         warnings.append(

@@ -153,10 +153,13 @@ def parse_toml(text: str, source: str | None = None) -> dict[str, Any]:
 
 
 def kind_of(data: dict[str, Any], source: str | None = None) -> str:
-    """The kind of a parsed file: the one registered main table it has."""
-    from ..kinds import KINDS
+    """The kind of a parsed file: the one registered main table it has. A main table that is also a capability
+    table (``[signals]``: records judged alone) names the kind only when no other main table is there."""
+    from ..kinds import CAPABILITIES, KINDS
 
     found = [k for k in KINDS if k in data]
+    if len(found) > 1:
+        found = [k for k in found if k not in CAPABILITIES] or found
     if len(found) == 1:
         return found[0]
     if len(found) > 1:

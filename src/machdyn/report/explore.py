@@ -86,6 +86,13 @@ def plot_design_space(fig: Any, done: Any) -> Any:
     return axes
 
 
+def _resumed(done) -> str:
+    """``"; this run computed 4 partition(s) and reused 2 from disk"`` when a run resumed, else empty."""
+    if not getattr(done, "reused", 0):
+        return ""
+    return f"; this run computed {done.computed:,} partition(s) and reused {done.reused:,} from an earlier run"
+
+
 def exploration_section(done: Any) -> str:
     """An HTML fragment for an exploration: what was explored, the scatter matrix and the best designs."""
     space, digest = done.plan.space, done.digest
@@ -99,7 +106,8 @@ def exploration_section(done: Any) -> str:
              f"{space.partitions:,} partition(s) of up to {space.partition:,} designs; {digest.regular:,} regular "
              f"(assemble everywhere and pass no dead position). Objective: lowest <code>{escape(done.plan.objective)}"
              f"</code>. Every design is in <code>{escape(str(done.store))}</code> (Parquet, SI units in the "
-             f"schema).</p><p>Shown: a uniform sample of {len(digest.sample.get('design', [])):,} regular designs, "
+             f"schema){_resumed(done)}.</p><p>Shown: a uniform sample of "
+             f"{len(digest.sample.get('design', [])):,} regular designs, "
              "coloured by the objective; the best designs ringed in red.</p>")
     if len(space.names) > MATRIX_QUANTITIES:
         intro += f"<p>The matrix shows the first {MATRIX_QUANTITIES} quantities; the table lists all.</p>"

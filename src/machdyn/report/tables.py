@@ -200,9 +200,16 @@ def write_csv(frames: dict[str, pd.DataFrame], directory, prefix: str = "") -> l
 
 
 def series_frame(columns: Any) -> pd.DataFrame:
-    """A table of a stage's series (column -> (values, SI unit)) as a DataFrame, the unit in each header."""
-    return pd.DataFrame({(f"{name} [{unit}]" if unit else name): np.asarray(values).ravel()
-                         for name, (values, unit) in columns.items()})
+    """A table of a stage's series (column -> (values, SI unit)) as a DataFrame, the unit in each header.
+
+    Angles are written in degrees, as in every other table (``crank_angle [deg]``); rates stay in rad/s."""
+    out = {}
+    for name, (values, unit) in columns.items():
+        data = np.asarray(values).ravel()
+        if unit == "rad":
+            data, unit = np.degrees(data), "deg"
+        out[f"{name} [{unit}]" if unit else name] = data
+    return pd.DataFrame(out)
 
 
 def scalars_frame(scalars: dict[str, dict[str, Any]]) -> pd.DataFrame:

@@ -122,16 +122,16 @@ def plot_predicted_vs_measured(study, ax=None):
     on one plot (bars: measured; diamonds: predicted)."""
     ax = _axes(ax)
     names = [c.name for c in study.before.channels if c.name in study.predicted_before]
-    runs = [("before", study.before, study.predicted_before, study.labels[0])]
+    runs = [("before", study.before, study.predicted_before, study.labels[0], study.predicted_labels[0])]
     if study.after is not None and study.predicted_after:
-        runs.append(("after", study.after, study.predicted_after, study.labels[1]))
+        runs.append(("after", study.after, study.predicted_after, study.labels[1], study.predicted_labels[1]))
     width = 0.8 / len(runs)
-    for i, (tag, analysis, predicted, label) in enumerate(runs):
+    for i, (tag, analysis, predicted, label, predicted_label) in enumerate(runs):
         x = np.arange(len(names)) + (i - (len(runs) - 1) / 2) * width
         ax.bar(x, [analysis.channel(n).velocity_rms * 1e3 for n in names], width, color=_COLOURS[tag], alpha=0.6,
                label=f"measured, {label}")
         ax.plot(x, [predicted[n] * 1e3 for n in names], "D", color=_COLOURS[tag], markeredgecolor="black",
-                label=f"predicted, {label}")
+                label=f"predicted, {predicted_label}")
     ax.set_xticks(np.arange(len(names)), names)
     ax.set_ylabel("RMS velocity [mm/s]")
     ax.set_title("Predicted against measured")
@@ -186,8 +186,11 @@ def frame_sections(outcome: Any) -> list[tuple[str, str]]:
     study = outcome.results
     crank_hz = study.before.loads.crank_speed / (2 * np.pi)
     orders = study.before.loads.orders
-    near = [f"mode {j + 1} ({f:.3g} Hz) near order {k} ({k * crank_hz:.3g} Hz)"
-            for j, f in enumerate(study.modes.frequencies) for k in orders if abs(f / (k * crank_hz) - 1) < 0.15]
+    from ..vibration.orders import RESONANCE_MARGIN, near_resonances
+
+    near = [f"mode {j} ({f:.3g} Hz) near order {k} ({fk:.3g} Hz, {100 * d:+.1f} %, within "
+            f"{100 * RESONANCE_MARGIN:.0f} %)" for j, f, k, fk, d in
+            near_resonances(study.modes.frequencies, abs(study.before.loads.crank_speed), int(np.max(orders)))]
     direction = ("the vector of x and y" if study.direction is None
                  else f"the direction {np.degrees(study.direction):.4g}° from the x axis")
     intro = (f"<p>Rigid frame of {format_value(study.frame.mass)} kg on {len(study.frame.mounts)} mount lines, "
@@ -240,6 +243,39 @@ def frame_sections(outcome: Any) -> list[tuple[str, str]]:
     return sections
 
 
+def predicted_note(study) -> str:
+    """What the predicted column holds: which prediction stands next to which record, and in which band (with
+    why it differs from the frame section's RMS velocities when the bands differ)."""
+    pairs = f"'{study.labels[0]}' is set next to the prediction for '{study.predicted_labels[0]}'"
+    if study.after is not None and study.predicted_after:
+        pairs += f", '{study.labels[1]}' next to the one for '{study.predicted_labels[1]}'"
+    text = (f"Predicted RMS velocity at the frame point named like each channel: {pairs}. The predictions are "
+            f"taken in the records' band {study.band[0]:g}–{study.band[1]:g} Hz, to compare like with like.")
+    if study.frame_band is not None and tuple(study.frame_band) != tuple(study.band):
+        text += (f" The frame section's RMS velocities use the [frame] band {study.frame_band[0]:g}–"
+                 f"{study.frame_band[1]:g} Hz, so they differ from these by the orders in one band and not in the "
+                 f"other.")
+    return text
+
+
+def order_table(runs, count: int = 6) -> str:
+    """HTML table of the RMS velocity [mm/s] of the first ``count`` orders of the running speed per record and
+    channel (empty without a running speed); the orders below the band's lower edge read 0."""
+    from ..vibration.orders import order_levels
+
+    rows = []
+    for _, analysis, _, label in runs:
+        for c in analysis.channels:
+            if c.orders is None:
+                return ""
+            levels = order_levels(c.orders, c.order_rms, count)
+            rows.append([label, c.name] + ["–" if v is None else format_value(v * 1e3) for v in levels])
+    head = ["record", "channel"] + [f"{k}× [mm/s]" for k in range(1, count + 1)]
+    table = rows_html(rows, head).replace('class="summary"', 'class="figures"', 1)
+    return ("<h3>Orders of the running speed</h3><p>RMS velocity of each order in the band (flat-top order "
+            "spectrum); the whole order spectra are in <code>signals_orders.csv</code>.</p>" + table)
+
+
 def signal_sections(outcome: Any) -> list[tuple[str, str]]:
     """Report sections of a ``[signals]`` outcome."""
     study = outcome.results
@@ -257,17 +293,24 @@ def signal_sections(outcome: Any) -> list[tuple[str, str]]:
                          "–" if pred is None else format_value(pred * 1e3)])
     head = ["record", "channel", "measured", "RMS velocity [mm/s]", "peak velocity [mm/s]", "RMS acc. [m/s²]",
             "crest factor", "zone", "predicted RMS velocity [mm/s]"]
+    if not study.predicted_before:
+        head, rows = head[:-1], [r[:-1] for r in rows]
     table = rows_html(rows, head).replace('class="summary"', 'class="figures"', 1)
     first = study.severity_before[0]
-    intro = (f"<p>Record <code>{escape(study.before.source)}</code>: {study.before.sampling_rate:.6g} Hz, "
-             f"{study.before.duration:.4g} s; band {study.before.channels[0].band[0]:g}–"
-             f"{study.before.channels[0].band[1]:g} Hz; judged by {escape(first.standard)}, class "
-             f"{escape(first.machine_class)}.</p>")
+    band = study.before.channels[0].band
+    intro = (f"<p>Record <code>{escape(study.before.source)}</code> ({escape(study.labels[0])}): "
+             f"{study.before.sampling_rate:.6g} Hz, {study.before.duration:.4g} s; band {band[0]:g}–{band[1]:g} Hz; "
+             f"judged by {escape(first.standard)}, class {escape(first.machine_class)}.</p>")
+    if study.running_speed is not None:
+        f1 = abs(study.running_speed) / (2 * np.pi)
+        intro += f"<p>Running speed of the machine: {f1 * 60:.4g} rpm ({f1:.4g} Hz, the 1× order).</p>"
     if study.reduction is not None:
-        intro += (f"<p>Reduction of the mean RMS velocity from <code>{escape(study.before.source)}</code> to "
-                  f"<code>{escape(study.after.source if study.after else '')}</code>: "
-                  f"<b>{study.reduction['mean']:.4g} %</b>.</p>")
-
+        intro += (f"<p>Reduction of the mean RMS velocity from <code>{escape(study.before.source)}</code> "
+                  f"({escape(study.labels[0])}) to <code>{escape(study.after.source if study.after else '')}</code> "
+                  f"({escape(study.labels[1])}): <b>{study.reduction['mean']:.4g} %</b>.</p>")
+    if study.predicted_before:
+        intro += "<p>" + escape(predicted_note(study)) + "</p>"
+    orders = order_table(runs)
     def draw_zones(fig):
         a1, a2 = fig.subplots(1, 2)
         names = [c.name for c in study.before.channels]
@@ -277,7 +320,7 @@ def signal_sections(outcome: Any) -> list[tuple[str, str]]:
         plot_velocity_psd(study.before, a2, study.before.channels[0].band)
 
     sections = [("Measured vibration", intro + table + _figure("signals", "Zones and spectra", (10.0, 3.8),
-                                                                draw_zones))]
+                                                                draw_zones) + orders)]
     if study.predicted_before:
         def draw_pred(fig):
             plot_predicted_vs_measured(study, fig.subplots())

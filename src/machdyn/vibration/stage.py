@@ -76,6 +76,10 @@ def _frame_series(study: FrameStudy, samples: int = 360) -> dict:
     return {"frame_spectrum": spectrum, "frame_time": time}
 
 
+def _band(band) -> str:
+    return f"{band[0]:g}–{band[1]:g} Hz"
+
+
 def _zone_warnings(severities, what: str) -> tuple[str, ...]:
     return tuple(f"{what}: {s.velocity_rms * 1e3:.3g} mm/s RMS is in zone {s.zone} of {s.standard}, class "
                  f"{s.machine_class} ({s.meaning})." for s in severities if s.index == 3)
@@ -83,8 +87,14 @@ def _zone_warnings(severities, what: str) -> tuple[str, ...]:
 
 def frame_outcome(study: FrameStudy) -> Outcome:
     """The outcome of a frame study: flat results, labels, summary keys, series and zone-D warnings."""
+    from .orders import band_order_warnings, resonance_warnings
+
     values, labels, summary = _frame_values(study)
-    warnings = _zone_warnings(study.severity_before, f"Predicted vibration ({study.labels[0]})")
+    loads = study.before.loads
+    orders = int(np.max(loads.orders))
+    warnings = resonance_warnings(study.modes.frequencies, abs(loads.crank_speed), orders)
+    warnings += band_order_warnings(study.band, abs(loads.crank_speed), orders, what="The [frame] band")
+    warnings += _zone_warnings(study.severity_before, f"Predicted vibration ({study.labels[0]})")
     if study.severity_after is not None:
         warnings += _zone_warnings(study.severity_after, f"Predicted vibration ({study.labels[1]})")
     return Outcome(results=study, scalars=values, labels=labels, series=_frame_series(study), summary=summary,
@@ -130,14 +140,14 @@ def signal_outcome(study: SignalStudy) -> Outcome:
                     f"Measured RMS acceleration, {c.name}, {label}", "m/s^2")
         values[f"signals.mean_velocity_rms.{tag}"] = analysis.mean_velocity_rms
         labels[f"signals.mean_velocity_rms.{tag}"] = Label(f"Mean measured RMS velocity, {label}", "m/s", "mm/s")
-    for name, value in study.predicted_before.items():
-        values[f"signals.predicted_velocity_rms.before.{name}"] = value
-        labels[f"signals.predicted_velocity_rms.before.{name}"] = Label(
-            f"Predicted RMS velocity, {name}, {study.labels[0]}", "m/s", "mm/s")
-    for name, value in study.predicted_after.items():
-        values[f"signals.predicted_velocity_rms.after.{name}"] = value
-        labels[f"signals.predicted_velocity_rms.after.{name}"] = Label(
-            f"Predicted RMS velocity, {name}, {study.labels[1]}", "m/s", "mm/s")
+    # in the records' band; said in the label when the frame's own RMS values use another band
+    band = "" if study.frame_band in (None, study.band) else f" in the records' band {_band(study.band)}"
+    for tag, predicted, label in (("before", study.predicted_before, study.predicted_labels[0]),
+                                  ("after", study.predicted_after, study.predicted_labels[1])):
+        for name, value in predicted.items():
+            values[f"signals.predicted_velocity_rms.{tag}.{name}"] = value
+            labels[f"signals.predicted_velocity_rms.{tag}.{name}"] = Label(
+                f"Predicted RMS velocity{band}, {name}, {label}", "m/s", "mm/s")
     if study.reduction is not None:
         for name, r in study.reduction.items():
             key = "signals.mean_reduction" if name == "mean" else f"signals.reduction.{name}"
@@ -149,15 +159,23 @@ def signal_outcome(study: SignalStudy) -> Outcome:
     psd: dict = {"frequency": (first.frequencies, "Hz")}
     for c in study.before.channels:
         psd[c.name] = (np.asarray(c.velocity_psd), "m^2/s^2/Hz")
-    warnings = _zone_warnings(study.severity_before, f"Measured vibration ({study.labels[0]})")
-    return Outcome(results=study, scalars=values, labels=labels, series={"signals_psd": psd}, summary=summary,
+    series: dict = {"signals_psd": psd}
+    for tag, record in (("", study.before), ("_after", study.after)):
+        if record is not None and record.channels[0].orders is not None:
+            columns: dict = {"order": (record.channels[0].orders, "")}
+            for c in record.channels:
+                columns[c.name] = (np.asarray(c.order_rms), "m/s")
+            series[f"signals_orders{tag}"] = columns
+    warnings = (*study.warnings, *_zone_warnings(study.severity_before, f"Measured vibration ({study.labels[0]})"))
+    return Outcome(results=study, scalars=values, labels=labels, series=series, summary=summary,
                    warnings=warnings)
 
 
 def run_signals(ctx: StageContext) -> Outcome:
     """Stage of ``[signals]``: the records judged; next to the ``[frame]`` prediction when the file has one."""
     frame = ctx.outcomes.get("frame")
-    speed = float(np.ravel(ctx.analysis.kinematics.speed)[0]) if ctx.analysis is not None else None
+    # the running speed's magnitude: a crank turning clockwise (negative speed) has the same orders
+    speed = abs(float(np.ravel(ctx.analysis.kinematics.speed)[0])) if ctx.analysis is not None else None
     study = study_signals(ctx.table, source=ctx.source, crank_speed=speed,
                           frame_study=frame.results if frame is not None else None)
     return signal_outcome(study)
@@ -193,15 +211,19 @@ def check_frame(problem, table, source: str | None = None) -> list[tuple[str, st
     return problems
 
 
-def check_signals(_problem, table, source: str | None = None) -> list[tuple[str, str]]:
+def check_signals(problem, table, source: str | None = None) -> list[tuple[str, str]]:
     """Every record is read and checked against the band: ``machdyn:`` names a shipped record, an absolute path
     is read as it is, a relative one against the problem file's folder (``source``; for TOML text given directly,
-    against the working folder)."""
+    against the working folder). In a machine's file the running speed is the machine's: ``speed`` is refused."""
     from ..errors import InputError
     from .signals import check_band, read_record
     from .study import resolve_record
 
     problems: list[tuple[str, str]] = []
+    if table.speed is not None and getattr(problem, "drive", None) is not None:
+        problems.append(("signals.speed", f"the records' running speed is the machine's ([drive] speed) in a "
+                                          f"file with a machine; got {table.speed:g} rad/s here too: leave "
+                                          f"signals.speed out (it is for a file with [signals] alone)"))
     for field in ("record", "after"):
         name = getattr(table, field)
         if name is None:

@@ -154,7 +154,13 @@ def _banded_compare(before, after, points, quantity, direction, band) -> Compari
 @dataclass(frozen=True)
 class SignalStudy:
     """Measured records analysed and judged: ``before`` (and ``after``) analyses, the severity of each channel,
-    the reduction per channel [%] and the predicted RMS velocity [m/s] at channels named like frame points."""
+    the reduction per channel [%] and the predicted RMS velocity [m/s] at channels named like frame points.
+
+    ``labels`` name the records (the user's, or their file names); ``predicted_labels`` name the frame study's
+    analysed mechanism and its variant, whose predictions stand next to the first and the second record.
+    The predictions are RMS values in the records' ``band`` [Hz]; ``frame_band`` [Hz] is the band of the frame
+    study's own RMS values (None without a frame study). ``running_speed`` [rad/s] is the machine's speed (None
+    if unknown); ``warnings`` say which of its orders the band leaves out."""
 
     before: RecordAnalysis
     after: RecordAnalysis | None
@@ -164,6 +170,11 @@ class SignalStudy:
     predicted_before: dict
     predicted_after: dict
     labels: tuple[str, str] = ("before", "after")
+    predicted_labels: tuple[str, str] = ("before", "after")
+    band: tuple[float, float] = (10.0, 1000.0)
+    frame_band: tuple[float, float] | None = None
+    running_speed: float | None = None
+    warnings: tuple[str, ...] = ()
 
 
 #: Prefix of a record shipped with machdyn: ``"machdyn:examples/signals/tamper_before.csv"``.
@@ -183,15 +194,24 @@ def resolve_record(name: str, source=None) -> Path:
     return p
 
 
+def record_label(name: str) -> str:
+    """The default label of a record: its file name without folder and extension."""
+    return Path(name[len(PACKAGE_PREFIX):] if name.startswith(PACKAGE_PREFIX) else name).stem or name
+
+
 def study_signals(table, *, source=None, crank_speed: float | None = None,
                   frame_study: FrameStudy | None = None) -> SignalStudy:
     """Read and judge the records of a validated ``[signals]`` table (file names relative to ``source``'s
-    folder); with a ``frame_study``, predicted RMS velocities at the channels named like its points."""
-    band = tuple(table.band)
+    folder); with a ``frame_study``, predicted RMS velocities in the records' band at the channels named like
+    its points. ``crank_speed`` [rad/s] is the machine's running speed (the table's ``speed`` when None)."""
+    from .orders import band_order_warnings
+
+    band = (float(table.band[0]), float(table.band[1]))
+    speed = crank_speed if crank_speed is not None else table.speed
 
     def analyse_file(name, field):
         try:
-            return analyse_record(read_record(resolve_record(name, source)), band, crank_speed=crank_speed)
+            return analyse_record(read_record(resolve_record(name, source)), band, crank_speed=speed)
         except InputError as exc:
             raise InputError(f"signals.{field}: {exc}") from None
 
@@ -201,16 +221,22 @@ def study_signals(table, *, source=None, crank_speed: float | None = None,
 
     before = analyse_file(table.record, "record")
     after = analyse_file(table.after, "after") if table.after else None
+    labels = (table.label or record_label(table.record),
+              table.after_label or (record_label(table.after) if table.after else "after"))
     pred_b: dict = {}
     pred_a: dict = {}
-    labels = ("before", "after")
+    predicted_labels = ("before", "after")
+    frame_band: tuple[float, float] | None = None
     if frame_study is not None:
-        labels = (frame_study.labels[0], frame_study.labels[1] or "after")
+        predicted_labels = (frame_study.labels[0], frame_study.labels[1] or "after")
+        frame_band = (float(frame_study.band[0]), float(frame_study.band[1]))
         for c in before.channels:
             if c.name in frame_study.points:
                 p = frame_study.points[c.name]
                 pred_b[c.name] = frame_study.before.rms(p, "velocity", frame_study.direction, band)
                 if frame_study.after is not None:
                     pred_a[c.name] = frame_study.after.rms(p, "velocity", frame_study.direction, band)
+    warnings = band_order_warnings(band, abs(speed), what="The records' band") if speed is not None else ()
     return SignalStudy(before, after, judge(before), judge(after) if after else None,
-                       compare_records(before, after) if after else None, pred_b, pred_a, labels)
+                       compare_records(before, after) if after else None, pred_b, pred_a, labels,
+                       predicted_labels, band, frame_band, speed, warnings)

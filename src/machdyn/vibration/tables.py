@@ -12,6 +12,7 @@ from pydantic import Field, field_validator, model_validator
 
 from ..problem.fields import (
     Angle,
+    AngularVelocity,
     FieldError,
     Frequency,
     Inertia,
@@ -146,14 +147,29 @@ class FrameTable(Spec):
 class SignalsTable(Spec):
     """``[signals]``: a measured ``record`` (CSV: ``time [s]`` and channels with units) judged by ``standard``
     for ``machine_class`` in ``band``; an optional ``after`` record is compared with it (reduction in %).
-    Channels named like a ``[frame.points]`` entry are shown next to the predicted RMS velocity there."""
+    Channels named like a ``[frame.points]`` entry are shown next to the predicted RMS velocity there.
+
+    ``label`` / ``after_label`` name the records in tables and plots (default: the records' file names);
+    ``speed`` is the running speed of the machine the records come from, for a file without a machine (a
+    machine's own speed is used otherwise): it adds order spectra and a warning when the band leaves out an
+    order of it."""
 
     record: str
     after: str | None = None
+    label: str | None = None
+    after_label: str | None = None
+    speed: AngularVelocity | None = None
     band: tuple[Frequency, Frequency] = (10.0, 1000.0)
     machine_class: MachineClass = "I"
     standard: Standard = "ISO 10816-1"
     boundaries: tuple[Velocity, Velocity, Velocity] | None = None
+
+    @field_validator("speed")
+    @classmethod
+    def _speed(cls, speed):
+        if speed is not None and not speed > 0:
+            raise FieldError(f"must be > 0 rad/s (the machine's running speed, e.g. '300 rpm'); got {speed:g} rad/s")
+        return speed
 
     @field_validator("band")
     @classmethod
