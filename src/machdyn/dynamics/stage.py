@@ -124,6 +124,7 @@ LABELS = {
     "flywheel.motor_rated_power": Label("Motor: rated power", "W", "kW"),
     "flywheel.motor_breakdown_torque": Label("Motor: breakdown torque at the crank", "N*m"),
     "flywheel.gear_ratio": Label("Motor: gear ratio (motor / crank speed)", ""),
+    "flywheel.motor_rms_load": Label("Motor: RMS torque over the cycle / rated torque (duty S1)", ""),
     "flywheel.torque_peak_constant_speed": Label("Driving torque into the linkage: peak at constant speed", "N*m"),
     "flywheel.torque_peak_real_speed": Label("Driving torque into the linkage: peak at the real speed", "N*m"),
     "flywheel.joint_force_change": Label("Largest change of a joint's peak force at the real speed", ""),
@@ -131,6 +132,7 @@ LABELS = {
 
 SUMMARY = ("flywheel.inertia", "flywheel.target_delta", "flywheel.delta", "flywheel.method_difference",
            "flywheel.mean_speed", "flywheel.peak_drive_torque", "flywheel.mean_power", "flywheel.motor_rated_power",
+           "flywheel.motor_rms_load",
            "flywheel.time_to_steady", "flywheel.diameter", "flywheel.mass", "flywheel.rim_speed")
 
 
@@ -177,7 +179,8 @@ def _drive(motor: MotorTable, machine, flywheel: float, speed: float, mean_torqu
             ss = steady_state(machine, candidate, flywheel)
         except ValueError:
             continue
-        if float(np.max(ss.drive_torque)) * 1.3 <= float(candidate.breakdown_torque) and not ss.warnings:
+        if (float(np.max(ss.drive_torque)) * 1.3 <= float(candidate.breakdown_torque) and not ss.warnings
+                and not _overloaded(candidate, ss)):
             try:
                 start_up(machine, candidate, flywheel, steady=ss)
             except ValueError:
@@ -189,9 +192,51 @@ def _drive(motor: MotorTable, machine, flywheel: float, speed: float, mean_torqu
                           motor.breakdown_ratio, choice.motor.ratio, motor.efficiency, motor.rotor_inertia)
 
 
+def check_flywheel(problem: Any, table: FlywheelTable, source: str | None = None) -> list[tuple[str, str]]:
+    """The validations of ``[flywheel]`` that need more than its schema, so that ``check`` and ``run`` agree: a
+    crank turning forwards, and a motor whose data describe a real induction motor (its drive object builds)."""
+    from ..errors import InputError
+    from .drives import InductionMotor
+
+    found: list[tuple[str, str]] = []
+    speed = float(problem.drive.speed)
+    if not speed > 0:
+        found.append(("drive.speed", f"must be > 0 for [flywheel] (the crank turns counter-clockwise); got "
+                                     f"{speed:g} rad/s"))
+    motor = table.motor
+    if motor.kind in ("select", "induction") and not motor.synchronous_speed > 0:
+        found.append(("flywheel.motor.synchronous_speed", f"must be > 0 rad/s; got {motor.synchronous_speed:g} rad/s"))
+    elif motor.kind == "induction":
+        try:
+            InductionMotor(float(motor.rated_power or 0.0), float(motor.rated_speed or 0.0), motor.synchronous_speed,
+                           motor.breakdown_ratio, motor.ratio or 1.0, motor.efficiency, motor.rotor_inertia)
+        except InputError as exc:
+            text = str(exc).rstrip(".")
+            found.append(("flywheel.motor", text[:1].lower() + text[1:]))
+    return found
+
+
+def _overloaded(drive, steady) -> list[str]:
+    """The thermal check of an induction motor in continuous duty S1 (IEC 60034-1:2022, 4.2.1): the RMS over
+    time of the torque it gives, referred to the crank, must not exceed its rated torque at the crank
+    T_r i eta [N*m] (the equivalent-torque method: the winding losses, and so the temperature rise, grow with
+    the square of the current, nearly proportional to the torque near rated load; Vogel, Elektrische Antriebe,
+    or Pyrhönen, Jokinen & Hrabovcová, Design of Rotating Electrical Machines, 2nd ed. 2014, sec. 10.1)."""
+    if getattr(drive, "name", "") != "induction motor":
+        return []
+    rated = float(np.max(drive.rated_torque * drive.ratio * drive.efficiency))
+    rms = float(steady.rms_drive_torque)
+    if rms > rated * (1.0 + 1e-9):
+        return [f"the induction motor is overloaded for continuous duty S1 (IEC 60034-1): the RMS torque over the "
+                f"cycle {rms:.4g} N*m at the crank is {100.0 * rms / rated:.4g} % of its rated torque {rated:.4g} "
+                f"N*m at the crank ({float(np.max(drive.rated_power)) / 1000:g} kW); it will overheat. Choose a "
+                "larger motor."]
+    return []
+
+
 def run_flywheel(ctx: StageContext) -> Outcome:
     """The stage: size or take the flywheel, choose or take the drive, steady state, start-up, real-speed forces."""
-    from ..errors import ProblemFileError
+    from ..errors import InputError, ProblemFileError
     from .equivalent import equivalent_machine
     from .flywheel import disc_flywheel, rim_flywheel, rim_speed_limit, size_flywheel
     from .motion import start_up
@@ -212,11 +257,18 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     else:
         flywheel = float(sizing.exact[0] if table.method == "exact" else sizing.classic[0])
     mean_torque = float(sizing.drive_torque[0])
-    drive = _drive(table.motor, machine, flywheel, speed, mean_torque)
-    steady = steady_state(machine, drive, flywheel,
-                          mean_speed=speed if table.motor.kind == "constant_torque" else None)
+    try:
+        drive = _drive(table.motor, machine, flywheel, speed, mean_torque)
+        steady = steady_state(machine, drive, flywheel,
+                              mean_speed=speed if table.motor.kind == "constant_torque" else None)
+    except InputError as exc:
+        if not str(exc).startswith(_CANNOT_CARRY):
+            raise
+        # a drive too small for the machine is a design that fails, not bad input: say so with the figures
+        return Outcome(results=None, scalars={"flywheel.inertia": flywheel}, summary=("flywheel.inertia",),
+                       failed_checks=(str(exc).rstrip("."),))
     warnings = list(steady.warnings)
-    failed: list[str] = [*steady.warnings]
+    failed: list[str] = [*steady.warnings, *_overloaded(drive, steady)]
     run = None
     if table.start_up and table.motor.kind != "constant_torque":
         try:
@@ -253,7 +305,9 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     if hasattr(drive, "breakdown_torque") and drive.name == "induction motor":
         values |= {"flywheel.motor_rated_power": float(drive.rated_power),
                    "flywheel.motor_breakdown_torque": float(drive.breakdown_torque),
-                   "flywheel.gear_ratio": float(drive.ratio)}
+                   "flywheel.gear_ratio": float(drive.ratio),
+                   "flywheel.motor_rms_load": float(steady.rms_drive_torque)
+                   / float(np.max(drive.rated_torque * drive.ratio * drive.efficiency))}
     part = None
     if flywheel > 0:
         limit = table.rim_speed_limit or rim_speed_limit(table.allowable_stress, table.density, table.shape)
@@ -282,6 +336,10 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     present = tuple(k for k in SUMMARY if k in values)
     return Outcome(results=result, scalars=values, series=series, summary=present, warnings=tuple(warnings),
                    failed_checks=tuple(failed))
+
+
+#: the start of the message of :func:`~machdyn.dynamics.simulate.steady_state` for a drive too weak for the load
+_CANNOT_CARRY = ("The drive cannot carry the load", "No standard motor up to")
 
 
 def _cycle_columns(r) -> dict[str, tuple[Any, str]]:
@@ -323,4 +381,5 @@ CAPABILITY = Capability(
     kinds=("mechanism", "rotary_screen"),
     labels=LABELS,
     report="machdyn.report.dynamics:sections",
+    check=check_flywheel,
 )
