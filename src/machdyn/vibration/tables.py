@@ -155,6 +155,14 @@ class SignalsTable(Spec):
     standard: Standard = "ISO 10816-1"
     boundaries: tuple[Velocity, Velocity, Velocity] | None = None
 
+    @field_validator("boundaries")
+    @classmethod
+    def _increasing(cls, boundaries):
+        if boundaries is not None and not 0 < boundaries[0] < boundaries[1] < boundaries[2]:
+            raise FieldError("must be three increasing velocities > 0 (the A/B, B/C and C/D zone boundaries); got "
+                             f"({', '.join(f'{1e3 * b:g}' for b in boundaries)}) mm/s")
+        return boundaries
+
     @field_validator("band")
     @classmethod
     def _band(cls, band):
