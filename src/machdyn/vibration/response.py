@@ -347,7 +347,7 @@ def check_resonance(frame: Frame, angular_frequencies, orders) -> None:
     >>> try:
     ...     check_resonance(f, [31.6227766 * (1 + 1e-6)], [1])
     ... except InputError as exc:
-    ...     print(str(exc)[:78])
+    ...     print(str(exc)[:77])
     Order 1 at 5.033 Hz is within 0.0001 % of mode 1 of frame 'frame' (5.033 Hz,
     """
     from .modes import modes
