@@ -234,6 +234,26 @@ def _overloaded(drive, steady) -> list[str]:
     return []
 
 
+#: The largest relative departure of the steady mean crank speed from the nominal ``[drive] speed`` accepted: the
+#: constant-speed analysis (joint forces, driving torque, shaking) is made at the nominal speed, and its inertia
+#: loads grow with the square of the speed (1.2^2 = 1.44 at the limit).
+SPEED_TOLERANCE = 0.2
+
+
+def _off_speed(steady, nominal: float) -> list[str]:
+    """A failed check when the machine under its drive settles far from its nominal speed (a load that drives it,
+    a drive too slow or too fast for it): the results at the nominal speed would not describe it."""
+    mean = float(steady.mean_speed)
+    if abs(mean / nominal - 1.0) <= SPEED_TOLERANCE:
+        return []
+    why = ("a load drives the machine faster than its drive (a process load of the wrong sign or window?)"
+           if mean > nominal else "the drive does not hold the machine near its nominal speed")
+    rpm = 30.0 / np.pi
+    return [f"the steady mean crank speed {mean * rpm:.4g} rpm is {mean / nominal:.3g} times the nominal "
+            f"{nominal * rpm:.4g} rpm of [drive] (more than {100 * SPEED_TOLERANCE:g} % off): {why}, and the "
+            "constant-speed results at the nominal speed do not describe it"]
+
+
 def run_flywheel(ctx: StageContext) -> Outcome:
     """The stage: size or take the flywheel, choose or take the drive, steady state, start-up, real-speed forces."""
     from ..errors import InputError, ProblemFileError
@@ -268,7 +288,7 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         return Outcome(results=None, scalars={"flywheel.inertia": flywheel}, summary=("flywheel.inertia",),
                        failed_checks=(str(exc).rstrip("."),))
     warnings = list(steady.warnings)
-    failed: list[str] = [*steady.warnings, *_overloaded(drive, steady)]
+    failed: list[str] = [*steady.warnings, *_overloaded(drive, steady), *_off_speed(steady, speed)]
     run = None
     if table.start_up and table.motor.kind != "constant_torque":
         try:
