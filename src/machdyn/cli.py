@@ -23,7 +23,8 @@ from . import __version__
 EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT, EXIT_CHECKS_FAILED, EXIT_INTERNAL = 0, 1, 2, 3, 4
 
 EXIT_CODES_HELP = (
-    "Exit codes: 0 success; 1 the analysis failed; 2 bad input; 3 the design fails a check; 4 internal error."
+    "Exit codes: 0 success; 1 the analysis failed; 2 bad input; 3 the design fails a check (an infeasible "
+    "optimisation included); 4 internal error."
 )
 
 app = typer.Typer(

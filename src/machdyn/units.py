@@ -106,9 +106,10 @@ def parse_quantity(value: str | float | int, unit: str, *, field: str = "value")
         raise InputError(f"The {field} must be a quantity in {unit or 'no unit'}; got {value!r}.")
     if isinstance(value, int | float):
         magnitude = float(value)
-        if target != ureg.dimensionless and not _is_angle(target):
+        if target != ureg.dimensionless:
             raise InputError(
-                f"The {field} needs a unit (e.g. \"{value} {unit}\"); got the bare number {value!r}."
+                f"The {field} needs a unit (e.g. \"{value} {_hint_unit(target, unit)}\"); got the bare number "
+                f"{value!r}."
             )
     else:
         text = str(value)
@@ -125,11 +126,19 @@ def parse_quantity(value: str | float | int, unit: str, *, field: str = "value")
             raise InputError(f"The {field} is not a quantity with a unit; got {value!r} ({exc}).") from None
         if not isinstance(quantity, pint.Quantity):
             quantity = Q_(float(quantity), "")
+        if _is_angle(target) and not dict(quantity.to_root_units().unit_items()):
+            # pint converts any pure number to radians: "40" would silently be 40 rad, "40 %" 0.4 rad.
+            number = text.strip() if quantity.unitless else f"{quantity.magnitude:g}"
+            raise InputError(
+                f"The {field} is an angle and needs its unit (a bare number could be degrees or radians): "
+                f"write '{number} deg' (or '{number} rad'); got {value!r}."
+            )
         try:
             magnitude = float(quantity.to(target).magnitude)
         except pint.DimensionalityError:
             raise InputError(
-                f"The {field} must be in units of {_describe(target)} (like {unit}); "
+                f"The {field} must be in units of {'an angle' if _is_angle(target) else _describe(target)} "
+                f"(like {unit}); "
                 f"got {value!r}, which is {_describe(quantity.units)}."
             ) from None
     if magnitude != magnitude or magnitude in (float("inf"), float("-inf")):
@@ -140,8 +149,15 @@ def parse_quantity(value: str | float | int, unit: str, *, field: str = "value")
     return magnitude
 
 
+@lru_cache(maxsize=64)
 def _is_angle(unit: pint.Unit) -> bool:
-    return unit.dimensionality == ureg.radian.dimensionality and str(unit) in ("radian", "degree")
+    """True for an angle unit (radian, degree): pint counts angles as pure numbers, so they need their own test."""
+    return unit != ureg.dimensionless and dict(ureg.Quantity(1.0, unit).to_root_units().unit_items()) == {
+        "radian": 1}
+
+
+def _hint_unit(target: pint.Unit, unit: str) -> str:
+    return "deg" if _is_angle(target) else unit
 
 
 def _describe(unit) -> str:

@@ -71,7 +71,7 @@ def _search_problem(base_problem, objective, throughput="7.2 t/h"):
     data = copy.deepcopy(base_problem)
     data["screw_conveyor"]["throughput"] = throughput
     data["screw_conveyor"]["power_method"] = "cema"  # depends on diameter, speed and filling alike
-    data["screw_conveyor"]["screw"] = {"flight_thickness": "4 mm"}
+    data["screw_conveyor"]["screw"] = {}  # the search sizes the flights of each candidate
     # a heavy motor per kW, so that the cost proxy weighs the drive against the screw
     data["screw_conveyor"]["optimise"] = dict(SEARCH, objective=objective, motor_mass_per_kw=300.0)
     return validate(data)

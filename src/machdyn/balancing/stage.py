@@ -247,6 +247,8 @@ def check(problem: Any, table: BalanceSpec, source: str | None = None) -> list[t
         return found
     try:
         _check_method(mech, table, abs(float(problem.drive.speed)))
+        if table.method == "counterweights" and table.objective is None and not table.states and not found:
+            _closed_form(mech, table, abs(float(problem.drive.speed)))
     except InputError as exc:
         found.append(("balance", str(exc)))
     names = {c.name for c in problem.counterweights if c.name}
@@ -268,6 +270,19 @@ def check(problem: Any, table: BalanceSpec, source: str | None = None) -> list[t
         except InputError as exc:
             found.append((f"balance.states[{i}]", str(exc)))
     return found
+
+
+def _closed_form(mech: Any, table: BalanceSpec, speed: float):
+    """The closed-form (least-squares) counterweights of the slots; a solution that cannot be built (a negative
+    or zero mass carrying a first moment on a floating body) is an input the method cannot serve: InputError."""
+    from ..errors import AnalysisError
+    from .frame import cycle
+    from .general import least_squares_counterweights
+
+    try:
+        return least_squares_counterweights(mech, _slots(table), cycle(table.positions), speed)
+    except AnalysisError as exc:
+        raise InputError(str(exc)) from None
 
 
 def _check_method(mech: Any, table: BalanceSpec, speed: float) -> None:
@@ -305,7 +320,7 @@ def run(ctx: StageContext) -> Outcome:
     from .berkof_lowen import berkof_lowen
     from .counterweights import crank_counterweight, tradeoff_curve
     from .frame import cycle
-    from .general import Weights, least_squares_counterweights, optimise_counterweights
+    from .general import Weights, optimise_counterweights
     from .robust import robust_counterweights
     from .springs import spring_compensation
 
@@ -336,7 +351,7 @@ def run(ctx: StageContext) -> Outcome:
             result = optimise_counterweights(mech, _slots(table), Weights(o.force, o.moment, o.torque, o.joint,
                                                                           o.measure), phi, speed)
         else:
-            result = least_squares_counterweights(mech, _slots(table), phi, speed)
+            result = _closed_form(mech, table, speed)
     except InputError as exc:
         raise ProblemFileError([("balance", str(exc))]) from None
     done = BalanceRun(table.method, result, tradeoff, table.reference_reduction, table.reference_source,

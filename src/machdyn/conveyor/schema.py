@@ -262,6 +262,13 @@ def _presence(data: dict[str, Any]) -> list[tuple[str, str]]:
                                        "its capacity is then the duty)"))
     if isinstance(sc, dict) and sc.get("optimise") is not None and sc.get("throughput") is None:
         out.append((f"{p}.throughput", "required to choose a design (the duty every candidate must meet)"))
+    if isinstance(sc, dict) and sc.get("optimise") is not None:
+        # the search sets these for every candidate: a value given here would be silently replaced
+        for key in ("diameter", "speed", "pitch_ratio", "pipe_outer_diameter", "pipe_wall", "flight_thickness"):
+            if key in s:
+                out.append((f"{p}.screw.{key}", f"is chosen by [{p}.optimise] for every candidate, so the value "
+                                                f"given would be ignored; got {s[key]!r}. Remove it, or remove "
+                                                f"[{p}.optimise] to check this screw"))
     if isinstance(sc, dict) and sc.get("inclination") is not None and sc.get("lift") is not None:
         out.append((f"{p}.lift", "give either the lift or the inclination, not both"))
     return out

@@ -153,6 +153,7 @@ def run(ctx: StageContext) -> Outcome:
     if problems:
         raise ProblemFileError(problems)
     flywheel = ctx.outcomes.get("flywheel")
+    flywheel = flywheel if flywheel is not None and flywheel.results is not None else None  # no steady state
     forces = flywheel.results.real.real if flywheel is not None else ctx.analysis.forces
     done = size_parts(forces, **_specs(ctx.table))
     scalars, labels = {}, {}

@@ -192,6 +192,7 @@ def run(ctx: StageContext) -> Outcome:
     table: DriveTrainSpec = ctx.table
     train = train_of(table)
     flywheel = ctx.outcomes.get("flywheel")
+    flywheel = flywheel if flywheel is not None and flywheel.results is not None else None  # no steady state
     forces = flywheel.results.real.real if flywheel is not None else ctx.analysis.forces
     torque = np.asarray(forces.driving_torque, dtype=float)
     if torque.ndim != 1:

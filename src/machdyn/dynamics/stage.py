@@ -131,6 +131,7 @@ LABELS = {
     "flywheel.motor_rated_power": Label("Motor: rated power", "W", "kW"),
     "flywheel.motor_breakdown_torque": Label("Motor: breakdown torque at the crank", "N*m"),
     "flywheel.gear_ratio": Label("Motor: gear ratio (motor / crank speed)", ""),
+    "flywheel.motor_rms_load": Label("Motor: RMS torque over the cycle / rated torque (duty S1)", ""),
     "flywheel.torque_peak_constant_speed": Label("Driving torque into the linkage: peak at constant speed", "N*m"),
     "flywheel.torque_peak_real_speed": Label("Driving torque into the linkage: peak at the real speed", "N*m"),
     "flywheel.joint_force_change": Label("Largest change of a joint's peak force at the real speed", ""),
@@ -139,6 +140,7 @@ LABELS = {
 SUMMARY = ("flywheel.inertia", "flywheel.inertia_constant_torque", "flywheel.motor_slip_saving",
            "flywheel.target_delta", "flywheel.delta", "flywheel.method_difference",
            "flywheel.mean_speed", "flywheel.peak_drive_torque", "flywheel.mean_power", "flywheel.motor_rated_power",
+           "flywheel.motor_rms_load",
            "flywheel.time_to_steady", "flywheel.diameter", "flywheel.mass", "flywheel.rim_speed")
 
 
@@ -185,7 +187,8 @@ def _drive(motor: MotorTable, machine, flywheel: float, speed: float, mean_torqu
             ss = steady_state(machine, candidate, flywheel)
         except ValueError:
             continue
-        if float(np.max(ss.drive_torque)) * 1.3 <= float(candidate.breakdown_torque) and not ss.warnings:
+        if (float(np.max(ss.drive_torque)) * 1.3 <= float(candidate.breakdown_torque) and not ss.warnings
+                and not _overloaded(candidate, ss)):
             try:
                 start_up(machine, candidate, flywheel, steady=ss)
             except ValueError:
@@ -195,6 +198,67 @@ def _drive(motor: MotorTable, machine, flywheel: float, speed: float, mean_torqu
             return candidate
     return InductionMotor(ratings[-1], choice.motor.rated_speed, choice.motor.synchronous_speed,
                           motor.breakdown_ratio, choice.motor.ratio, motor.efficiency, motor.rotor_inertia)
+
+
+def check_flywheel(problem: Any, table: FlywheelTable, source: str | None = None) -> list[tuple[str, str]]:
+    """The validations of ``[flywheel]`` that need more than its schema, so that ``check`` and ``run`` agree: a
+    crank turning forwards, and a motor whose data describe a real induction motor (its drive object builds)."""
+    from .drives import InductionMotor
+
+    found: list[tuple[str, str]] = []
+    speed = float(problem.drive.speed)
+    if not speed > 0:
+        found.append(("drive.speed", f"must be > 0 for [flywheel] (the crank turns counter-clockwise); got "
+                                     f"{speed:g} rad/s"))
+    motor = table.motor
+    if motor.kind in ("select", "induction") and not motor.synchronous_speed > 0:
+        found.append(("flywheel.motor.synchronous_speed", f"must be > 0 rad/s; got {motor.synchronous_speed:g} rad/s"))
+    elif motor.kind == "induction":
+        try:
+            InductionMotor(float(motor.rated_power or 0.0), float(motor.rated_speed or 0.0), motor.synchronous_speed,
+                           motor.breakdown_ratio, motor.ratio or 1.0, motor.efficiency, motor.rotor_inertia)
+        except InputError as exc:
+            text = str(exc).rstrip(".")
+            found.append(("flywheel.motor", text[:1].lower() + text[1:]))
+    return found
+
+
+def _overloaded(drive, steady) -> list[str]:
+    """The thermal check of an induction motor in continuous duty S1 (IEC 60034-1:2022, 4.2.1): the RMS over
+    time of the torque it gives, referred to the crank, must not exceed its rated torque at the crank
+    T_r i eta [N*m] (the equivalent-torque method: the winding losses, and so the temperature rise, grow with
+    the square of the current, nearly proportional to the torque near rated load; Vogel, Elektrische Antriebe,
+    or Pyrhönen, Jokinen & Hrabovcová, Design of Rotating Electrical Machines, 2nd ed. 2014, sec. 10.1)."""
+    if getattr(drive, "name", "") != "induction motor":
+        return []
+    rated = float(np.max(drive.rated_torque * drive.ratio * drive.efficiency))
+    rms = float(steady.rms_drive_torque)
+    if rms > rated * (1.0 + 1e-9):
+        return [f"the induction motor is overloaded for continuous duty S1 (IEC 60034-1): the RMS torque over the "
+                f"cycle {rms:.4g} N*m at the crank is {100.0 * rms / rated:.4g} % of its rated torque {rated:.4g} "
+                f"N*m at the crank ({float(np.max(drive.rated_power)) / 1000:g} kW); it will overheat. Choose a "
+                "larger motor."]
+    return []
+
+
+#: The largest relative departure of the steady mean crank speed from the nominal ``[drive] speed`` accepted: the
+#: constant-speed analysis (joint forces, driving torque, shaking) is made at the nominal speed, and its inertia
+#: loads grow with the square of the speed (1.2^2 = 1.44 at the limit).
+SPEED_TOLERANCE = 0.2
+
+
+def _off_speed(steady, nominal: float) -> list[str]:
+    """A failed check when the machine under its drive settles far from its nominal speed (a load that drives it,
+    a drive too slow or too fast for it): the results at the nominal speed would not describe it."""
+    mean = float(steady.mean_speed)
+    if abs(mean / nominal - 1.0) <= SPEED_TOLERANCE:
+        return []
+    why = ("a load drives the machine faster than its drive (a process load of the wrong sign or window?)"
+           if mean > nominal else "the drive does not hold the machine near its nominal speed")
+    rpm = 30.0 / np.pi
+    return [f"the steady mean crank speed {mean * rpm:.4g} rpm is {mean / nominal:.3g} times the nominal "
+            f"{nominal * rpm:.4g} rpm of [drive] (more than {100 * SPEED_TOLERANCE:g} % off): {why}, and the "
+            "constant-speed results at the nominal speed do not describe it"]
 
 
 def run_flywheel(ctx: StageContext) -> Outcome:
@@ -225,20 +289,29 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     else:
         flywheel = float(sizing.exact[0] if table.method == "exact" else sizing.classic[0])
     mean_torque = float(sizing.drive_torque[0])
-    drive = _drive(table.motor, machine, flywheel, speed, mean_torque)
-    for_motor = None
-    if table.delta is not None and table.size_for == "motor" and table.motor.kind != "constant_torque":
-        from .motor_flywheel import flywheel_for_drive
+    try:
+        drive = _drive(table.motor, machine, flywheel, speed, mean_torque)
+        for_motor = None
+        if table.delta is not None and table.size_for == "motor" and table.motor.kind != "constant_torque":
+            from .motor_flywheel import flywheel_for_drive
 
-        try:
-            for_motor = flywheel_for_drive(machine, drive, table.delta, flywheel)
-        except InputError as exc:
-            raise ProblemFileError([("flywheel.size_for", str(exc))]) from None
-        flywheel = for_motor.inertia
-    steady = steady_state(machine, drive, flywheel,
-                          mean_speed=speed if table.motor.kind == "constant_torque" else None)
+            try:
+                for_motor = flywheel_for_drive(machine, drive, table.delta, flywheel)
+            except InputError as exc:
+                raise ProblemFileError([("flywheel.size_for", str(exc))]) from None
+            flywheel = for_motor.inertia
+        steady = steady_state(machine, drive, flywheel,
+                              mean_speed=speed if table.motor.kind == "constant_torque" else None)
+    except ProblemFileError:
+        raise
+    except InputError as exc:
+        if not str(exc).startswith(_CANNOT_CARRY):
+            raise
+        # a drive too small for the machine is a design that fails, not bad input: say so with the figures
+        return Outcome(results=None, scalars={"flywheel.inertia": flywheel}, summary=("flywheel.inertia",),
+                       failed_checks=(str(exc).rstrip("."),))
     warnings = list(steady.warnings)
-    failed: list[str] = [*steady.warnings]
+    failed: list[str] = [*steady.warnings, *_overloaded(drive, steady), *_off_speed(steady, speed)]
     run = None
     if table.start_up and table.motor.kind != "constant_torque":
         try:
@@ -280,7 +353,9 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     if hasattr(drive, "breakdown_torque") and drive.name == "induction motor":
         values |= {"flywheel.motor_rated_power": float(drive.rated_power),
                    "flywheel.motor_breakdown_torque": float(drive.breakdown_torque),
-                   "flywheel.gear_ratio": float(drive.ratio)}
+                   "flywheel.gear_ratio": float(drive.ratio),
+                   "flywheel.motor_rms_load": float(steady.rms_drive_torque)
+                   / float(np.max(drive.rated_torque * drive.ratio * drive.efficiency))}
     part = None
     if flywheel > 0:
         limit = table.rim_speed_limit or rim_speed_limit(table.allowable_stress, table.density, table.shape)
@@ -309,6 +384,10 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     present = tuple(k for k in SUMMARY if k in values)
     return Outcome(results=result, scalars=values, series=series, summary=present, warnings=tuple(warnings),
                    failed_checks=tuple(failed))
+
+
+#: the start of the message of :func:`~machdyn.dynamics.simulate.steady_state` for a drive too weak for the load
+_CANNOT_CARRY = ("The drive cannot carry the load", "No standard motor up to")
 
 
 def _cycle_columns(r) -> dict[str, tuple[Any, str]]:
@@ -351,4 +430,5 @@ CAPABILITY = Capability(
     kinds=("mechanism", "rotary_screen", "cam"),
     labels=LABELS,
     report="machdyn.report.dynamics:sections",
+    check=check_flywheel,
 )

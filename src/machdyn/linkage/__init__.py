@@ -42,9 +42,9 @@ from .effort import CrankEffort, PistonEffort, crank_effort, piston_effort  # no
 from .fluctuation import energy_fluctuation  # noqa: E402
 from .inverse import InversePosition, inverse_position  # noqa: E402
 from .loading import with_loads  # noqa: E402
-from .mass_centre import MassCentre, mass_centre  # noqa: E402
+from .mass_centre import MassCentre, inertial_force, mass_centre  # noqa: E402
 
 __all__ += [
     "CrankEffort", "InversePosition", "MassCentre", "PistonEffort", "crank_effort", "energy_fluctuation",
-    "inverse_position", "mass_centre", "piston_effort", "with_loads",
+    "inertial_force", "inverse_position", "mass_centre", "piston_effort", "with_loads",
 ]

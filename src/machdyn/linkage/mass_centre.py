@@ -92,3 +92,23 @@ def mass_centre(kin: Kinematics) -> MassCentre:
     return MassCentre(
         total, *(np.broadcast_to(sums[key] / total, shape) for key in ("x", "y", "vx", "vy", "ax", "ay"))
     )
+
+
+def inertial_force(kin: Kinematics) -> tuple[np.ndarray, np.ndarray]:
+    """-sum m_i a_i [N]: the resultant inertia (d'Alembert) force of the moving bodies and point masses, equal to
+    -M a_G where there is mass, and zero for a massless (statics) model, which has no centre of mass (Uicker,
+    Pennock & Shigley, 5th ed., chapter "Balancing": the shaking force is the sum of the inertia forces).
+
+    >>> import numpy as np
+    >>> from machdyn.linkage import kinematics, slider_crank
+    >>> fx, fy = inertial_force(kinematics(slider_crank(0.1, 0.3, masses=(0.0, 0.0, 0.0)), np.linspace(0, 6, 5)))
+    >>> float(np.max(np.abs(fx))), float(np.max(np.abs(fy)))
+    (0.0, 0.0)
+    """
+    if not isinstance(kin, Kinematics):
+        raise InputError(f"inertial_force needs the result of kinematics; got {type(kin).__name__}.")
+    elements = mass_elements(kin)
+    zero = np.zeros(kin.shape)
+    fx = sum((-np.asarray(e.mass, dtype=float) * e.motion.ax for e in elements), zero)
+    fy = sum((-np.asarray(e.mass, dtype=float) * e.motion.ay for e in elements), zero)
+    return np.broadcast_to(fx, kin.shape), np.broadcast_to(fy, kin.shape)

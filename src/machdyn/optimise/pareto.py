@@ -35,7 +35,7 @@ def nsga2(evaluator: Evaluator, *, population: int, generations: int, seed: int 
             out["F"] = np.where(np.isfinite(costs), costs, INFEASIBLE)
             out["G"] = viol.sum(axis=1, keepdims=True)
 
-    rows: dict[str, list] = {"evaluations": [], "best": [], "feasible": []}
+    rows: dict[str, list] = {"evaluations": [], "best": [], "feasible": [], "fronts": []}
 
     class _Record(Callback):
         def notify(self, algorithm):
@@ -45,6 +45,9 @@ def nsga2(evaluator: Evaluator, *, population: int, generations: int, seed: int 
             ok = g <= 0
             rows["best"].append(float(f[ok].min()) if ok.any() else np.nan)
             rows["feasible"].append(float(ok.mean()))
+            opt = algorithm.opt
+            feasible = opt.get("G")[:, 0] <= 0 if opt is not None and len(opt) else np.zeros(0, dtype=bool)
+            rows["fronts"].append(np.asarray(opt.get("F"))[feasible] if feasible.any() else np.zeros((0, n_obj)))
 
     start = time.perf_counter()
     res = minimize(_Design(), NSGA2(pop_size=population), ("n_gen", generations), seed=seed,
@@ -57,5 +60,61 @@ def nsga2(evaluator: Evaluator, *, population: int, generations: int, seed: int 
     order = np.argsort(front_f[:, 0])
     gens = np.arange(1, len(rows["best"]) + 1)
     history = History(gens, np.asarray(rows["evaluations"]), np.asarray(rows["best"]),
-                      np.asarray(rows["feasible"]))
+                      np.asarray(rows["feasible"]), hypervolumes(rows["fronts"]))
     return front_x[order], front_f[order], history, seconds
+
+
+def hypervolumes(fronts: list[np.ndarray]) -> np.ndarray:
+    """The hypervolume of each generation's feasible front (Zitzler & Thiele, *Multiobjective evolutionary
+    algorithms: a comparative case study and the strength Pareto approach*, IEEE Trans. Evol. Comput. 3 (1999)
+    257-271), in the objective space normalised over every generation (0 at the best value any front reached, 1
+    at the worst) against the reference point 1.1 in each objective; NaN before the first feasible front.
+    One normalisation for all generations, so the values compare across generations."""
+    from pymoo.indicators.hv import HV
+
+    found = [f for f in fronts if len(f)]
+    out = np.full(len(fronts), np.nan)
+    if not found:
+        return out
+    stacked = np.vstack(found)
+    low, high = stacked.min(axis=0), stacked.max(axis=0)
+    scale = np.where(high > low, high - low, 1.0)
+    indicator = HV(ref_point=np.full(stacked.shape[1], 1.1))
+    for i, f in enumerate(fronts):
+        if len(f):
+            out[i] = float(indicator((f - low) / scale))
+    return out
+
+
+def hypervolume_converged(hv: np.ndarray, tolerance: float, window: int) -> tuple[bool, str]:
+    """The stated stopping criterion of the front: the hypervolume (:func:`hypervolumes`) grew by at most
+    ``tolerance`` (relative) over the last ``window`` generations — stagnation of the hypervolume, the usual
+    convergence test of a multi-objective evolutionary search (Wagner, Trautmann & Naujoks, *OCD: online
+    convergence detection for evolutionary multi-objective algorithms based on statistical testing*, EMO 2009,
+    LNCS 5467, 198-215, whose simplest form this is). Returns (converged, the reason in words)."""
+    values = np.asarray(hv, dtype=float)
+    if values.size <= window or not np.isfinite(values[-window - 1]):
+        return False, (f"the hypervolume of the front needs more than {window} generations with a feasible front "
+                       f"to judge convergence; {int(np.isfinite(values).sum())} had one")
+    last, before = float(values[-1]), float(values[-window - 1])
+    growth = (last - before) / max(abs(before), 1e-300)
+    if growth <= tolerance:
+        return True, (f"the hypervolume of the front grew by {100 * growth:.3g} % over the last {window} "
+                      f"generations (criterion: at most {100 * tolerance:.3g} %)")
+    return False, (f"the hypervolume of the front still grew by {100 * growth:.3g} % over the last {window} "
+                   f"generations (criterion: at most {100 * tolerance:.3g} %)")
+
+
+def spacing(front: np.ndarray) -> float:
+    """Schott's spacing of a front (J. R. Schott, *Fault tolerant design using single and multicriteria genetic
+    algorithm optimization*, MS thesis, MIT, 1995): the standard deviation of each member's L1 distance to its
+    nearest neighbour, in the objective space normalised to the front's own extent (0: evenly spread; NaN for
+    fewer than 3 members)."""
+    f = np.asarray(front, dtype=float)
+    if f.shape[0] < 3:
+        return float("nan")
+    low, high = f.min(axis=0), f.max(axis=0)
+    g = (f - low) / np.where(high > low, high - low, 1.0)
+    d = np.abs(g[:, None, :] - g[None, :, :]).sum(axis=2)
+    np.fill_diagonal(d, np.inf)
+    return float(np.std(d.min(axis=1), ddof=1))

@@ -17,12 +17,14 @@ class NoFeasibleDesign(InputError):
 @dataclass(frozen=True)
 class History:
     """Per generation: evaluations so far, the best objective value of a feasible design (NaN before the
-    first one), and the share of the generation that is feasible."""
+    first one), the share of the generation that is feasible and, for a Pareto front, the hypervolume of the
+    feasible front (normalised; :func:`machdyn.optimise.pareto.hypervolumes`)."""
 
     generation: np.ndarray
     evaluations: np.ndarray
     best: np.ndarray
     feasible_share: np.ndarray
+    hypervolume: np.ndarray | None = None
 
 
 @dataclass(frozen=True)

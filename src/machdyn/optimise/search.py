@@ -74,22 +74,29 @@ class Evaluator:
         tightest first, and the values of the design that came closest."""
         assert self.least_violation is not None and self.closest is not None
         labels = [CLOSES] + [c.describe(show(c)) for c in self.constraints]
-        order = np.argsort(-self.least_violation)
+        order = np.argsort(-self.least_violation, kind="stable")
         best = self.closest[2]
         lines = [f"No design within the bounds meets every constraint ({self.evaluations} designs evaluated). "
-                 "Constraints, tightest first (smallest relative violation any design reached):"]
+                 "Every constraint, tightest first, with the smallest relative violation any design reached and "
+                 "the value of the design that came closest to meeting them all:"]
         for k in order:
-            if self.least_violation[k] <= 0:
-                continue
             label = labels[k]
             reached = ""
             if k == 0:
-                reached = f"; the closest design closes at {100 * best['assembled_fraction']:.0f} % of the angles"
+                fraction = best.get("assembled_fraction", math.nan)
+                if math.isfinite(fraction):
+                    reached = f"; the closest design closes at {100 * fraction:.0f} % of the angles"
             else:
                 c = self.constraints[k - 1]
                 value = best.get(c.result, math.nan)
                 reached = f"; the closest design has {show(c)(value)}" if math.isfinite(value) else ""
-            lines.append(f"  {label}: violated by {self.least_violation[k]:.3g}{reached}")
+            least = self.least_violation[k]
+            said = (f"violated by at least {least:.3g}" if least > 0 else
+                    "met by some designs, but not together with the others")
+            lines.append(f"  {label}: {said}{reached}")
+        if not np.any(self.least_violation > 0):
+            lines.append("Each constraint alone is met somewhere within the bounds, but no design meets them all at "
+                         "once: they conflict.")
         lines.append("Widen the variables' bounds or relax the tightest constraint.")
         return "\n".join(lines)
 

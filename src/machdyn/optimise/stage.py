@@ -36,6 +36,8 @@ LABELS = {
     "optimise.converged": Label("Optimisation: converged (1 yes, 0 no)"),
     "optimise.verified": Label("Optimisation: best design verified feasible (1 yes, 0 no)"),
     "optimise.front_size": Label("Optimisation: designs on the Pareto front"),
+    "optimise.front_spacing": Label("Optimisation: spacing of the Pareto front (Schott; 0 = evenly spread)"),
+    "optimise.front_hypervolume": Label("Optimisation: hypervolume of the final front (normalised)"),
     "optimise.feasible": Label("Optimisation: a feasible design was found (1 yes, 0 no)"),
 }
 
@@ -108,9 +110,26 @@ def run(ctx: StageContext) -> Outcome:
         "best_cost": (h.best, ""),
         "feasible_share": (h.feasible_share, ""),
     }}
+    if h.hypervolume is not None:
+        series["optimise_history"]["hypervolume"] = (h.hypervolume, "")
     if result.front_x is not None and result.front_f is not None:
+        from .pareto import spacing
+
         scalars["optimise.front_size"] = float(len(result.front_x))
         summary.append("optimise.front_size")
+        gap = spacing(result.front_f)
+        if math.isfinite(gap):
+            scalars["optimise.front_spacing"] = gap
+            summary.append("optimise.front_spacing")
+        if h.hypervolume is not None and np.isfinite(h.hypervolume[-1]):
+            scalars["optimise.front_hypervolume"] = float(h.hypervolume[-1])
+        for j, o in enumerate(result.objectives):  # the front's extent in each objective: its spread
+            unit = "" if o.sense == "target" else o.unit
+            for end, value in (("min", np.min(result.front_f[:, j])), ("max", np.max(result.front_f[:, j]))):
+                key = f"optimise.front.{o.result}.{end}"
+                scalars[key] = float(value)
+                labels[key] = Label(f"Pareto front: {_text(o.result)}, {end}", unit)
+                summary.append(key)
         columns: dict[str, Any] = {}
         for i, (name, unit) in enumerate(zip(result.names, result.units, strict=True)):
             columns[name] = (result.front_x[:, i], unit)

@@ -22,6 +22,15 @@ from .variables import current_values, design_space
 VERIFY_TOLERANCE = 1e-9
 
 
+#: The relative growth of the front's hypervolume over the last generations below which NSGA-II has converged.
+FRONT_TOLERANCE = 1e-3
+
+
+def _window(generations: int) -> int:
+    """Generations over which the hypervolume must stagnate: a tenth of the run, at least 5 and at most 50."""
+    return int(min(50, max(5, generations // 10)))
+
+
 def show_value(unit: str):
     """Format an SI value for a message: angles in degrees, others in their SI unit."""
     if unit == "rad":
@@ -91,13 +100,15 @@ def optimise(problem: Any, spec: OptimiseSpec) -> OptimiseResult:
         )
         method = "differential_evolution"
     else:
-        from .pareto import nsga2
+        from .pareto import hypervolume_converged, nsga2
 
         front_x, front_f, history, seconds = nsga2(ev, population=spec.population, generations=spec.generations,
                                                    seed=spec.seed, show=_show)
         x = front_x[0]
-        converged, method = True, "nsga2"
-        message = f"NSGA-II ran {spec.generations} generations; {len(front_x)} designs on the front"
+        method = "nsga2"
+        assert history.hypervolume is not None
+        converged, why = hypervolume_converged(history.hypervolume, FRONT_TOLERANCE, _window(spec.generations))
+        message = f"NSGA-II ran {spec.generations} generations, {len(front_x)} designs on the front; {why}"
     if not converged:
         warnings.append(
             f"The search did not converge within {spec.generations} generations ({message}); the best design "

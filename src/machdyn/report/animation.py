@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 from markupsafe import Markup, escape
 
-from ..linkage import mass_centre
+from ..linkage import inertial_force
 from ..linkage import model as _model
 from .plotkit import PALETTE
 
@@ -214,7 +214,7 @@ def scene(analysis: Any, mechanism: Any = None, *, design: int = 0, about: tuple
             r = forces.joint(name)
             joints.append({"name": name, "at": at, "fx": _rounded(_at(r.fx, design, frames, size)),
                            "fy": _rounded(_at(r.fy, design, frames, size))})
-        ix, iy = mass_centre(kin).inertia_force
+        ix, iy = inertial_force(kin)
         moment = forces.shaking_moment(about=tuple(about))
         shaking = {"at": [float(about[0]), float(about[1])], "fx": _rounded(_at(ix, design, frames, size)),
                    "fy": _rounded(_at(iy, design, frames, size)),

@@ -196,9 +196,9 @@ def linkage_scalars(
     out["shaking_force.max"] = _reduce(np.hypot(fx, fy), "max", designs)
     # The inertial shaking force alone (what balancing removes), apart from the process loads and the weight
     # the frame also carries: -M a_G of the whole moving mechanism.
-    from ..linkage import mass_centre
+    from ..linkage import inertial_force
 
-    ix, iy = mass_centre(kin).inertia_force
+    ix, iy = inertial_force(kin)  # zero for a massless (statics) model, which has no centre of mass
     out["inertial_shaking_force.max"] = _reduce(np.hypot(ix, iy), "max", designs)
     out["shaking_moment.max_abs"] = _reduce(forces.shaking_moment(about=tuple(about)), "max_abs", designs)
     if tuple(about) != (0.0, 0.0):
@@ -253,6 +253,11 @@ def linkage_scalars(
                 if extremes is not None:
                     out[f"transmission_angle.{body}.min"] = _scalar(extremes[0], designs)
                     out[f"transmission_angle.{body}.max"] = _scalar(extremes[1], designs)
+        # A result that does not exist for the machine (the transmission angle of a crank with no dyad, the time
+        # ratio of a rotor) is absent, not NaN.
+        for key in [k for k in out if k.startswith(("transmission_angle", "time_ratio", "stroke."))]:
+            if isinstance(out[key], float) and not np.isfinite(out[key]):  # min/max over no dyad: +-inf
+                del out[key]
         dead = getattr(diag, "dead_positions", None)
         if dead is not None:
             out["dead_positions.count"] = float(len(list(_flatten(dead))))

@@ -29,6 +29,7 @@ __all__ = [
     "FrameResponse",
     "ShakingLoads",
     "compare",
+    "check_resonance",
     "harmonic_loads",
     "reduction_percent",
     "shaking_loads",
@@ -317,6 +318,58 @@ class FrameResponse:
         return total
 
 
+#: The largest dynamic magnification of a frame mode accepted [-]: 1 / (2 zeta) = 1000 at resonance means a modal
+#: damping ratio of 0.05 %, below that of any real structure (welded steel about 0.2-1 %; Harris' Shock and
+#: Vibration Handbook, 6th ed., table 37.1), so beyond it the model lacks the damping that bounds the response.
+MAX_MAGNIFICATION = 1.0e3
+
+
+def check_resonance(frame: Frame, angular_frequencies, orders) -> None:
+    """Raise :class:`~machdyn.errors.InputError` if an order of the excitation is so close to an undamped (or
+    nearly undamped) mode of ``frame`` that the response is unbounded or not physical, naming the order, the
+    mode and the margin.
+
+    The magnification of mode j at w is D = 1 / sqrt((1 - r^2)^2 + (2 zeta_j r)^2), r = w / omega_j (Rao,
+    *Mechanical Vibrations*, 5th ed., 2011, eq. (3.30)); it is refused above :data:`MAX_MAGNIFICATION`.
+
+    Parameters
+    ----------
+    frame : the frame on its mounts
+    angular_frequencies : w_k of the orders [rad/s]
+    orders : k of each frequency [-]
+
+    Examples
+    --------
+    >>> from machdyn.vibration.frame import Frame, Mount
+    >>> f = Frame(100.0, 1.0, (Mount("v", (0, 0), np.pi / 2, 1e5), Mount("h", (0, 0), 0.0, 1e5),
+    ...                        Mount("t", (1, 0), np.pi / 2, 1e5), Mount("t2", (-1, 0), np.pi / 2, 1e5)))
+    >>> check_resonance(f, [20.0], [1])   # 20 rad/s against modes from 31.6 rad/s: D = 1.7
+    >>> try:
+    ...     check_resonance(f, [31.6227766 * (1 + 1e-6)], [1])
+    ... except InputError as exc:
+    ...     print(str(exc)[:77])
+    Order 1 at 5.033 Hz is within 0.0001 % of mode 1 of frame 'frame' (5.033 Hz,
+    """
+    from .modes import modes
+
+    md = modes(frame)
+    w = np.asarray(angular_frequencies, dtype=float)
+    for k, wk in zip(np.atleast_1d(orders), np.atleast_1d(w), strict=True):
+        for j, (wn, zeta) in enumerate(zip(md.angular_frequencies, md.damping_ratios, strict=True), start=1):
+            if not wn > 0:
+                continue
+            r = wk / wn
+            den = np.hypot(1.0 - r * r, 2.0 * zeta * r)
+            if den * MAX_MAGNIFICATION < 1.0:
+                shown = "unbounded" if den == 0 else f"{1.0 / den:.3g}"
+                raise InputError(
+                    f"Order {int(k)} at {wk / (2 * np.pi):.4g} Hz is within {100 * abs(r - 1):.3g} % of mode {j} of "
+                    f"frame '{frame.name}' ({wn / (2 * np.pi):.4g} Hz, damping ratio {zeta:.3g}): the dynamic "
+                    f"magnification {shown} exceeds {MAX_MAGNIFICATION:g}, beyond which the model lacks the damping "
+                    "that bounds a real frame's response. Give the mounts' damping, or move the mode away from "
+                    "the order.")
+
+
 def steady_state(frame: Frame, loads: ShakingLoads) -> FrameResponse:
     """Steady-state response of ``frame`` to the harmonic ``loads``: (K - w^2 M + i w C) q = Q per order.
 
@@ -339,6 +392,7 @@ def steady_state(frame: Frame, loads: ShakingLoads) -> FrameResponse:
     1.666667
     """
     check_supported(frame)
+    check_resonance(frame, loads.angular_frequencies, loads.orders)
     m, k, c = frame.mass_matrix(), frame.stiffness_matrix(), frame.damping_matrix()
     q = np.empty((loads.orders.size, 3), dtype=complex)
     for i, (w, rhs) in enumerate(zip(loads.angular_frequencies, loads.vector(), strict=True)):

@@ -304,6 +304,11 @@ def _unit_of(column: str, source: str) -> tuple[str, str, float]:
                      f"unit; use one of {known}.")
 
 
+#: The largest sample magnitude read [m/s^2 or m/s]: beyond it a record is corrupt or in the wrong unit, and its
+#: squares overflow the RMS and the spectra.
+MAX_SAMPLE = 1e12
+
+
 def read_record(path, *, max_bytes: int = MAX_BYTES) -> Record:
     """Read a vibration record from a CSV file.
 
@@ -363,6 +368,12 @@ def read_record(path, *, max_bytes: int = MAX_BYTES) -> Record:
         if bad.size:
             raise InputError(f"The channel '{name}' of {p} has {bad.size} NaN or empty sample(s), the first at "
                              f"t = {t[bad[0]]:.6g} s (row {bad[0] + 1}); clean or cut the record first.")
+        huge = np.flatnonzero(np.abs(x * scale) > MAX_SAMPLE)
+        if huge.size:
+            raise InputError(f"The channel '{name}' of {p} has {huge.size} sample(s) beyond {MAX_SAMPLE:g} in SI "
+                             f"units (m/s^2 or m/s), which no machine's vibration reaches, the first "
+                             f"{x[huge[0]]:g} at t = {t[huge[0]]:.6g} s (row {huge[0] + 1}); check the record's "
+                             f"units or clean it.")
         channels[name] = x * scale
         quantities[name] = quantity
     return Record(t, channels, quantities, 1.0 / step, str(p))

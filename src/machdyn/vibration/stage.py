@@ -186,11 +186,20 @@ def check_frame(problem, table, source: str | None = None) -> list[tuple[str, st
     counterweights and springs sit on bodies and points of the mechanism."""
     from ..errors import InputError, ProblemFileError
     from .modes import check_supported
+    from .response import check_resonance
     from .study import build_frame, with_variant
 
     problems: list[tuple[str, str]] = []
+    speed = float(problem.drive.speed)
+    if not speed > 0:
+        problems.append(("drive.speed", f"must be > 0 for [frame] (the shaking loads are harmonics of the crank "
+                                        f"speed); got {speed:g} rad/s"))
     try:
-        check_supported(build_frame(table, 1.0))
+        frame = build_frame(table, abs(speed) / (2 * math.pi))
+        check_supported(frame)
+        if speed > 0:
+            orders = np.arange(1, table.orders + 1)
+            check_resonance(frame, orders * speed, orders)
     except InputError as exc:
         problems.append(("frame.mounts", str(exc)))
     if table.after is not None:
@@ -216,7 +225,7 @@ def check_signals(problem, table, source: str | None = None) -> list[tuple[str, 
     is read as it is, a relative one against the problem file's folder (``source``; for TOML text given directly,
     against the working folder). In a machine's file the running speed is the machine's: ``speed`` is refused."""
     from ..errors import InputError
-    from .signals import check_band, read_record
+    from .signals import analyse_record, read_record
     from .study import resolve_record
 
     problems: list[tuple[str, str]] = []
@@ -229,8 +238,8 @@ def check_signals(problem, table, source: str | None = None) -> list[tuple[str, 
         if name is None:
             continue
         try:
-            record = read_record(resolve_record(name, source))
-            check_band(record.sampling_rate, record.time.size, table.band, what=f"the record {name}")
+            # the same reading and analysis as the run (band, integration, dead channels): check agrees with run
+            analyse_record(read_record(resolve_record(name, source)), tuple(table.band))
         except InputError as exc:
             problems.append((f"signals.{field}", str(exc)))
     return problems

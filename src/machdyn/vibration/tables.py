@@ -170,6 +170,13 @@ class SignalsTable(Spec):
         if speed is not None and not speed > 0:
             raise FieldError(f"must be > 0 rad/s (the machine's running speed, e.g. '300 rpm'); got {speed:g} rad/s")
         return speed
+    @field_validator("boundaries")
+    @classmethod
+    def _increasing(cls, boundaries):
+        if boundaries is not None and not 0 < boundaries[0] < boundaries[1] < boundaries[2]:
+            raise FieldError("must be three increasing velocities > 0 (the A/B, B/C and C/D zone boundaries); got "
+                             f"({', '.join(f'{1e3 * b:g}' for b in boundaries)}) mm/s")
+        return boundaries
 
     @field_validator("band")
     @classmethod
