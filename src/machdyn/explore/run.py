@@ -120,13 +120,31 @@ def _store_folder(plan: ExplorePlan, given: str | os.PathLike | None, default: s
     the temporary directory (so that a rerun resumes)."""
     if given is not None:
         return Path(given)
-    spec_store = plan.problem.sweep.store
+    spec_store = store_in_file(plan.problem, source)
     if spec_store is not None:
-        base = Path(source).parent if source else Path.cwd()
-        return base / spec_store
+        return spec_store
     if default is not None:
         return Path(default)
     return Path(tempfile.gettempdir()) / f"machdyn-explore-{plan.fingerprint[:16]}"
+
+
+def store_in_file(problem: Any, source: str | os.PathLike | None) -> Path | None:
+    """The folder ``[sweep] store`` names, against the problem file's folder (the working folder for text given
+    directly), or None. It must lie inside that folder, and not be the folder itself: a problem file cannot make
+    a run write or delete files elsewhere. Raises :class:`~machdyn.errors.ProblemFileError` naming the field."""
+    name = problem.sweep.store
+    if name is None:
+        return None
+    base = Path(source).parent if source else Path.cwd()
+    folder = Path(name) if Path(name).is_absolute() else base / name
+    try:
+        resolved, inside = folder.resolve(), base.resolve()
+    except (OSError, RuntimeError):  # a loop of symbolic links
+        raise ProblemFileError([("sweep.store", f"'{name[:80]}' is a loop of symbolic links")]) from None
+    if not resolved.is_relative_to(inside) or resolved == inside:
+        raise ProblemFileError([("sweep.store", f"must name a folder inside the problem file's folder {base} "
+                                                f"(e.g. \"press.parquet\"); got '{name[:80]}'")])
+    return folder
 
 
 def _where(workers: int | None, scheduler: str | None, spec: Any) -> tuple[int | None, str | None]:
