@@ -91,6 +91,8 @@ class Exploration:
     seconds: float
     where: str
     units: dict[str, tuple[str, str]]
+    notes: tuple[str, ...] = ()
+    pending: Path | None = None
 
     @property
     def designs(self) -> int:
@@ -98,6 +100,8 @@ class Exploration:
 
     def frame(self):
         """Every design as a pandas DataFrame (SI; for spaces that fit in memory)."""
+        if self.pending is not None and self.pending.is_dir():  # not swapped into the store yet
+            return read_exploration(self.pending)
         return read_exploration(self.store)
 
     def best_frame(self):
@@ -193,9 +197,17 @@ def explore(
             "columns": {k: {"unit": u, "label": label} for k, (u, label) in units.items()}}
     keeper = PartitionStore(folder, plan.fingerprint, info)
     report = progress if progress is not None else settings.progress
-    with contextlib.ExitStack() as stack:
-        if report is True:
-            report = stack.enter_context(progress_bar(f"{plan.space.size:,} designs"))
-        stats = run_partitions(plan, keeper, units, workers=workers, scheduler=scheduler,
-                               progress=report or None, on_partition=on_partition)
-    return Exploration(plan, folder, stats.digest, stats.computed, stats.reused, stats.seconds, stats.where, units)
+    try:
+        with contextlib.ExitStack() as stack:
+            if report is True:
+                report = stack.enter_context(progress_bar(f"{plan.space.size:,} designs"))
+            stats = run_partitions(plan, keeper, units, workers=workers, scheduler=scheduler,
+                                   progress=report or None, on_partition=on_partition)
+    except BaseException:
+        keeper.close()
+        raise
+    swap = keeper.finish(defer=settings.deferred is not None)
+    if swap is not None and settings.deferred is not None:
+        settings.deferred.append(swap)
+    return Exploration(plan, folder, stats.digest, stats.computed, stats.reused, stats.seconds, stats.where, units,
+                       tuple(keeper.notes), swap[0] if swap is not None else None)

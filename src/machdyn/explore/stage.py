@@ -65,7 +65,7 @@ def outcome(done: Any) -> Outcome:
     }
     labels: dict[str, Label] = {}
     summary = ["sweep.designs", "sweep.assembled_count", "sweep.regular_count"]
-    warnings = []
+    warnings = list(done.notes)
     if plan.space.method == "sobol" and not is_power_of_two(plan.space.size):
         warnings.append(f"A Sobol' sample keeps its balance properties for 2^m designs; {plan.space.size} is not "
                         "a power of 2.")
