@@ -9,6 +9,7 @@ matplotlib) are imported only when a command needs them.
 
 from __future__ import annotations
 
+import contextlib
 import sys
 import threading
 import time
@@ -266,7 +267,7 @@ def run(
     try:
         from .explore.execution import execution
 
-        with execution(workers=workers, scheduler=scheduler, store=out / "sweep.parquet"):
+        with execution(workers=workers, scheduler=scheduler, store=out / "sweep.parquet"), _run_guard(out):
             _run(file, out, format, quiet)
     except typer.Exit as done:
         if open_report and done.exit_code == EXIT_CHECKS_FAILED:  # the outputs are written: show them
@@ -287,6 +288,51 @@ def _interrupted(stop: KeyboardInterrupt, out: Path) -> typer.Exit:
     said = getattr(stop, "message", None)
     kept = f"the outputs in {out}/ were not replaced (a run writes them as one set at its end)"
     return _fail(f"interrupted: {said}; {kept}" if said else f"interrupted: {kept}", 130)
+
+
+class _Terminated(KeyboardInterrupt):
+    """SIGTERM, turned into an interruption so that a terminated run cleans up as after Ctrl-C."""
+
+
+@contextlib.contextmanager
+def _run_guard(out: Path):
+    """Hold the output folder's lock for the whole run (a second run on it exits 1 at once) and turn SIGTERM
+    into an interruption, so that staging folders are removed; an operational failure exits 1 in one line."""
+    import signal
+
+    from .errors import OperationalError
+    from .outputs import LOCK, acquire_lock, release_lock
+
+    created = not out.exists()
+    try:
+        if out.exists() and not out.is_dir():
+            raise OperationalError(f"cannot write the outputs to '{out}': it exists and is not a folder")
+        out.mkdir(parents=True, exist_ok=True)
+        acquire_lock(out / LOCK, f"the output folder '{out}'")
+    except OperationalError as exc:
+        raise _fail(f"error: {exc}", EXIT_FAILED) from None
+    except OSError as exc:
+        raise _fail(f"error: cannot write the outputs to '{out}': {exc.strerror or exc}", EXIT_FAILED) from None
+
+    def terminated(signum, frame):
+        raise _Terminated()
+
+    previous = None
+    if threading.current_thread() is threading.main_thread():
+        previous = signal.signal(signal.SIGTERM, terminated)
+    try:
+        yield
+    except OperationalError as exc:
+        raise _fail(f"error: {exc}", EXIT_FAILED) from None
+    except _Terminated:
+        raise _fail("stopped: the run was terminated; run it again to resume", 143) from None
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGTERM, previous)
+        release_lock(out / LOCK)
+        if created:
+            with contextlib.suppress(OSError):
+                out.rmdir()  # only if the run left it empty
 
 
 def _open_in_browser(report: Path) -> None:
@@ -333,7 +379,14 @@ def _watched_run(file: Path, out: Path, stamp: str) -> int:
 
 
 def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: str | None = None) -> None:
-    from .errors import AssemblyError, InputError, MachdynError, ProblemFileError, SingularPositionError
+    from .errors import (
+        AssemblyError,
+        InputError,
+        MachdynError,
+        OperationalError,
+        ProblemFileError,
+        SingularPositionError,
+    )
     from .kinds import steps_of
 
     started = time.perf_counter()
@@ -352,8 +405,11 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
             def partitions(done: int, total: int) -> None:
                 progress.step(f"design sweep {100 * done // max(total, 1)}%")
 
-            with execution(progress=partitions):
+            deferred: list = []
+            with execution(progress=partitions, deferred=deferred):
                 result = run_problem(loaded, step=progress.step)
+        except OperationalError as exc:
+            raise _fail(f"error: {exc}", EXIT_FAILED) from None
         except (ProblemFileError, AssemblyError, InputError, SingularPositionError) as exc:
             raise _engine_error(exc, file) from None
         except MachdynError as exc:
@@ -361,7 +417,9 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
         except (ArithmeticError, ValueError, FloatingPointError, MemoryError) as exc:
             raise _engine_error(exc, file) from None
         try:
-            paths = result.write(out, step=progress.step, watch_stamp=watch_stamp)
+            paths = result.write(out, step=progress.step, watch_stamp=watch_stamp, folders=deferred)
+        except OperationalError as exc:
+            raise _fail(f"error: {exc}", EXIT_FAILED) from None
         except OSError as exc:
             raise _fail(f"error: cannot write the outputs to '{out}': {exc.strerror or exc}", EXIT_FAILED) from None
         except MachdynError as exc:

@@ -10,8 +10,10 @@ The tree::
     │   ├── ProblemFileError: a problem file's mistakes, all of them, each with its path
     │   ├── AssemblyError: the linkage cannot close at some requested crank angle
     │   └── SingularPositionError: the crank range passes a dead (toggle) position
-    └── AnalysisError: the analysis of a valid input failed (a simulation that does not settle, an optimiser
-        that does not converge)
+    ├── AnalysisError: the analysis of a valid input failed (a simulation that does not settle, an optimiser
+    │   that does not converge)
+    └── OperationalError: the machine or the network stopped the work (a scheduler that does not answer, a full
+        disk, a folder that may not be written, another run writing the same folder)
 """
 
 from __future__ import annotations
@@ -48,6 +50,12 @@ class ProblemFileError(InputError):
 class AnalysisError(MachdynError):
     """The analysis of a valid input failed: a simulation that does not settle, an optimiser that does not
     converge, a motor that cannot drive the machine. The message says what was tried and what would help."""
+
+
+class OperationalError(MachdynError):
+    """The work could not be done for a reason outside the input and outside machdyn: a Dask scheduler that does
+    not answer, a lost worker, a full disk, a folder that may not be written or is a file, another run writing
+    the same output folder. The message gives the cause in one line; the command line exits 1."""
 
 
 class MachdynWarning(UserWarning):

@@ -1,7 +1,8 @@
 """Atomic output files: each is written to a temporary file in its target directory, then renamed over.
 
 An interrupted run (Ctrl-C, a full disk, a crash) leaves either the previous file or the new one, never half
-of one; the temporary file is removed on any failure.
+of one; the temporary file is removed on any failure. A set of files (:class:`OutputSet`) is swapped in under a
+journal and a lock, so that old and new files never mix.
 """
 
 from __future__ import annotations
@@ -72,15 +73,104 @@ def write_frame_csv(path: str | os.PathLike, frame) -> Path:
 
 
 MANIFEST = ".machdyn-outputs.json"
+#: The lock file of an output folder: held (``flock``) by the run writing the folder and removed when it ends; the
+#: kernel releases the lock when the process ends, however it ends, so a killed run never leaves a stale lock.
+LOCK = ".machdyn.lock"
+#: The journal of a set being swapped in: written (and synced) before the first rename, so a run killed during
+#: the swap is completed by the next one that opens the folder.
+JOURNAL = ".commit.json"
+
+_HELD: dict[str, tuple[int, int]] = {}
+
+
+def acquire_lock(path: str | os.PathLike, what: str) -> None:
+    """Hold the lock file ``path`` (created if missing) for this process; a second process asking for it gets
+    :class:`~machdyn.errors.OperationalError` at once, naming the process that holds it. Re-entrant within a
+    process (each acquire needs a :func:`release_lock`)."""
+    import fcntl
+
+    from .errors import OperationalError
+
+    key = str(Path(path).resolve())
+    if key in _HELD:
+        fd, count = _HELD[key]
+        _HELD[key] = (fd, count + 1)
+        return
+    while True:
+        fd = os.open(key, os.O_RDWR | os.O_CREAT, 0o644)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            holder = os.pread(fd, 32, 0).decode(errors="replace").strip() or "?"
+            os.close(fd)
+            raise OperationalError(f"another machdyn run (process {holder}) is writing {what}; wait for it to end "
+                                   f"or choose another folder") from None
+        try:
+            same = os.stat(key).st_ino == os.fstat(fd).st_ino
+        except FileNotFoundError:
+            same = False
+        if same:
+            break
+        os.close(fd)  # the holder removed the file as we opened it: lock the new one
+    os.ftruncate(fd, 0)
+    os.pwrite(fd, f"{os.getpid()}\n".encode(), 0)
+    _HELD[key] = (fd, 1)
+
+
+def release_lock(path: str | os.PathLike) -> None:
+    """Release one hold of the lock file ``path`` (see :func:`acquire_lock`)."""
+    key = str(Path(path).resolve())
+    if key not in _HELD:
+        return
+    fd, count = _HELD.pop(key)
+    if count > 1:
+        _HELD[key] = (fd, count - 1)
+        return
+    try:
+        os.unlink(key)  # removed while held, so that a finished run leaves no file behind
+    except OSError:
+        pass
+    os.close(fd)
+
+
+def fsync_folder(folder: str | os.PathLike) -> None:
+    """Make the renames inside ``folder`` durable (where the system supports syncing a folder)."""
+    try:
+        fd = os.open(folder, os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        os.fsync(fd)
+    except OSError:
+        pass
+    finally:
+        os.close(fd)
+
+
+def swap_folders(new: Path, target: Path) -> None:
+    """Put the folder ``new`` in the place of ``target`` (which may not exist): ``target`` is renamed aside,
+    ``new`` renamed in, the old one removed. Idempotent: called again after a kill at any point, it completes
+    the swap (``new`` gone means it was already renamed in)."""
+    old = target.parent / f".{target.name}.old"
+    if new.exists():
+        if target.exists():
+            _remove_tree(old)
+            os.rename(target, old)
+        os.rename(new, target)
+        fsync_folder(target.parent)
+    _remove_tree(old)
 
 
 class OutputSet:
     """The files of one run, written into a hidden staging folder inside ``out_dir`` and swapped in together.
 
     Until :meth:`commit` the folder keeps the previous run's set untouched; an interrupted or failed run removes
-    its staging folder (and ``out_dir`` itself if the run created it and left it empty). At commit each new file
-    replaces its old one and the files of the previous set that this run did not write (a CSV of a capability
-    no longer in the file) are removed, as listed in the folder's manifest, so old and new never mix.
+    its staging folder (and ``out_dir`` itself if the run created it and left it empty). :meth:`commit` first
+    writes a journal of the set (the files, and folders such as an exploration's Parquet store to swap in with
+    them) and syncs it: from then on the set is committed, and a run killed while moving the files in is
+    completed by the next run that opens the folder. The files of the previous set that this run did not write
+    (a CSV of a capability no longer in the file) are removed, as listed in the folder's manifest, so old and
+    new never mix. The folder is locked (:data:`LOCK`) from the set's creation to its commit or abort.
     """
 
     def __init__(self, out_dir: str | os.PathLike):
@@ -89,9 +179,13 @@ class OutputSet:
             raise OSError(f"the output path '{self.out}' exists and is not a directory")
         self._created = not self.out.exists()
         self.out.mkdir(parents=True, exist_ok=True)
-        for stale in self.out.glob(".machdyn-partial-*"):  # left by a run that was killed
-            _remove_tree(stale)
-        self.stage = Path(tempfile.mkdtemp(dir=self.out, prefix=".machdyn-partial-"))
+        acquire_lock(self.out / LOCK, f"the output folder '{self.out}'")
+        try:
+            recover_outputs(self.out)
+            self.stage = Path(tempfile.mkdtemp(dir=self.out, prefix=".machdyn-partial-"))
+        except BaseException:
+            release_lock(self.out / LOCK)
+            raise
         self.names: list[str] = []
 
     def _target(self, name: str) -> Path:
@@ -107,35 +201,65 @@ class OutputSet:
     def frame(self, name: str, frame) -> None:
         write_frame_csv(self._target(name), frame)
 
-    def commit(self) -> list[Path]:
-        """Move the set into place; return the final paths."""
-        previous: list[str] = []
+    def commit(self, folders: list[tuple[Path, Path]] | tuple = ()) -> list[Path]:
+        """Move the set into place, with each ``(new, target)`` folder swapped in first; return the final
+        paths."""
+        journal = {"files": self.names, "folders": [[str(Path(a).resolve()), str(Path(b).resolve())]
+                                                    for a, b in folders]}
         try:
-            previous = list(json.loads((self.out / MANIFEST).read_text(encoding="utf-8")))
-        except (OSError, ValueError, TypeError):
-            previous = []
-        paths = []
-        for name in self.names:
-            os.replace(self.stage / name, self.out / name)
-            paths.append(self.out / name)
-        for name in set(previous) - set(self.names):
-            if isinstance(name, str) and "/" not in name and name not in (MANIFEST, ""):
-                try:
-                    (self.out / name).unlink()
-                except OSError:
-                    pass
-        atomic_write_text(self.out / MANIFEST, json.dumps(self.names) + "\n")
-        _remove_tree(self.stage)
-        return paths
+            atomic_write_text(self.stage / JOURNAL, json.dumps(journal) + "\n")  # the commit point
+            fsync_folder(self.stage)
+            _apply(self.out, self.stage)
+        finally:
+            release_lock(self.out / LOCK)
+        return [self.out / name for name in self.names]
 
     def abort(self) -> None:
         """Remove the staging folder (and the output folder if this run created it and it is empty)."""
         _remove_tree(self.stage)
+        release_lock(self.out / LOCK)
         if self._created:
             try:
                 self.out.rmdir()
             except OSError:
                 pass
+
+
+def recover_outputs(out: Path) -> None:
+    """Complete the sets of ``out`` that were committed but not fully moved in (a kill during a commit) and
+    remove what interrupted runs left: staging folders never committed, temporary files."""
+    for stale in sorted(out.glob(".machdyn-partial-*")):
+        if (stale / JOURNAL).is_file():
+            _apply(out, stale)
+        else:
+            _remove_tree(stale)
+    for leftover in out.glob(".*.part"):  # atomic_write's temporary files of a killed run
+        leftover.unlink(missing_ok=True)
+
+
+def _apply(out: Path, stage: Path) -> None:
+    """Move the committed set of ``stage`` into ``out`` (idempotent; see :meth:`OutputSet.commit`)."""
+    journal = json.loads((stage / JOURNAL).read_text(encoding="utf-8"))
+    for new, target in journal.get("folders", []):
+        swap_folders(Path(new), Path(target))
+    names = [n for n in journal.get("files", []) if isinstance(n, str) and "/" not in n]
+    previous: list[str] = []
+    try:
+        previous = list(json.loads((out / MANIFEST).read_text(encoding="utf-8")))
+    except (OSError, ValueError, TypeError):
+        previous = []
+    for name in names:
+        if (stage / name).exists():
+            os.replace(stage / name, out / name)
+    for name in set(previous) - set(names):
+        if isinstance(name, str) and "/" not in name and name not in (MANIFEST, LOCK, ""):
+            try:
+                (out / name).unlink()
+            except OSError:
+                pass
+    atomic_write_text(out / MANIFEST, json.dumps(names) + "\n")
+    fsync_folder(out)
+    _remove_tree(stage)
 
 
 def _remove_tree(path: Path) -> None:

@@ -132,11 +132,13 @@ class RunResult:
             sections=self.report_sections(), watch_stamp=watch_stamp,
         )
 
-    def write(self, out_dir: str | os.PathLike, *, step: Step = no_step, watch_stamp: str | None = None) -> list[Path]:
+    def write(self, out_dir: str | os.PathLike, *, step: Step = no_step, watch_stamp: str | None = None,
+              folders: list | tuple = ()) -> list[Path]:
         """Write ``results.json``, ``<series>.csv`` per time series and ``report.html`` into ``out_dir``
         (created if missing) as one set: all are written first, then swapped in together, so an interrupted
         run leaves the previous set whole. With a ``watch_stamp`` (``machdyn watch``) the set also holds
-        ``report.stamp.js``, which an open report polls to re-load itself. Returns the paths written."""
+        ``report.stamp.js``, which an open report polls to re-load itself. ``folders``: (new, target) folders
+        swapped in with the set (an exploration's Parquet store). Returns the paths written."""
         from .outputs import OutputSet
 
         outputs = OutputSet(out_dir)
@@ -155,7 +157,7 @@ class RunResult:
         except BaseException:
             outputs.abort()
             raise
-        return outputs.commit()
+        return outputs.commit(folders)
 
 
 def _loaded(problem: Any, text: str | None) -> LoadedProblem:

@@ -44,8 +44,8 @@ SI_UNITS: dict[str, str] = {
 }
 
 
-#: The longest quantity text read (``"1.2 t/m^3"`` needs a dozen characters); longer text is refused before
-#: pint parses it, so that a pathological expression cannot exhaust the parser.
+#: The longest quantity text read (``"1.2 t/m^3"`` needs a dozen characters); longer text is refused before it
+#: is parsed. Quantities are parsed by a bounded grammar (:mod:`machdyn.quantity_text`), never evaluated.
 MAX_QUANTITY_TEXT = 100
 
 #: The largest magnitude accepted for any quantity, in SI units: no machine part is 1e12 m long or turns at
@@ -120,12 +120,7 @@ def parse_quantity(value: str | float | int, unit: str, *, field: str = "value")
         if hidden is not None:
             raise InputError(f"The {field} contains the invisible character {hidden}; write the quantity in plain "
                              f"text; got {value!r}.")
-        try:
-            quantity: Any = Q_(text.strip())
-        except Exception as exc:  # pint raises several unrelated exception types for bad text
-            raise InputError(f"The {field} is not a quantity with a unit; got {value!r} ({exc}).") from None
-        if not isinstance(quantity, pint.Quantity):
-            quantity = Q_(float(quantity), "")
+        quantity: Any = quantity_of_text(text, field=field)
         if _is_angle(target) and not dict(quantity.to_root_units().unit_items()):
             # pint converts any pure number to radians: "40" would silently be 40 rad, "40 %" 0.4 rad.
             number = text.strip() if quantity.unitless else f"{quantity.magnitude:g}"
@@ -147,6 +142,50 @@ def parse_quantity(value: str | float | int, unit: str, *, field: str = "value")
         raise InputError(f"The {field} must be at most {MAX_MAGNITUDE:g} {unit or ''} in magnitude (larger values "
                          f"are not physical for a machine and overflow the analysis); got {value!r}.")
     return magnitude
+
+
+def quantity_of_text(text: str, *, field: str = "value") -> pint.Quantity:
+    """The pint quantity written in ``text``, parsed by the bounded grammar of :mod:`machdyn.quantity_text`
+    (pint only looks up each unit name), so that any text is decided in well under a millisecond."""
+    from .quantity_text import QuantitySyntaxError, parse
+
+    try:
+        magnitude, factors = parse(text)
+    except QuantitySyntaxError as exc:
+        raise InputError(f"The {field} is not a quantity with a unit; got {_shown(text)} ({exc}).") from None
+    return Q_(magnitude, _unit_of(factors, text, f"{field} is not a quantity with a unit"))
+
+
+def unit_of_text(text: str, *, field: str = "unit") -> pint.Unit:
+    """The pint unit written in ``text`` (``"kg*m^2"``), parsed like a quantity's unit; no number allowed."""
+    from .quantity_text import QuantitySyntaxError, parse
+
+    try:
+        magnitude, factors = parse(text) if text.strip() else (1.0, ())
+    except QuantitySyntaxError as exc:
+        raise InputError(f"The {field} is not a unit; got {_shown(text)} ({exc}).") from None
+    if magnitude != 1.0:
+        raise InputError(f"The {field} must be a unit without a number; got {_shown(text)}.")
+    return _unit_of(factors, text, f"{field} is not a unit")
+
+
+def _unit_of(factors: tuple[tuple[str, float], ...], text: str, what: str) -> pint.Unit:
+    unit = ureg.dimensionless
+    for name, power in factors:
+        try:
+            factor = _unit(name)
+        except Exception:  # noqa: BLE001 - pint raises several exception types for an unknown name
+            raise InputError(f"The {what}; got {_shown(text)} (the unit '{name[:40]}' is unknown).") from None
+        try:
+            unit = unit * factor ** (int(power) if power == int(power) else power)
+        except Exception as exc:  # noqa: BLE001 - e.g. an offset unit (degC) in a product
+            raise InputError(f"The {what}; got {_shown(text)} ({exc}).") from None
+    return unit
+
+
+def _shown(text: str) -> str:
+    """``text`` quoted for a message, cut to 60 characters."""
+    return repr(text if len(text) <= 60 else text[:57] + "...")
 
 
 @lru_cache(maxsize=64)

@@ -38,6 +38,9 @@ class Execution:
     scheduler: str | None = None
     store: str | Path | None = None
     progress: Progress | None = None
+    #: When a list: an exploration of a changed problem is not swapped into its store when it completes; its
+    #: (pending folder, store) is appended here, for the caller to swap in with its other outputs.
+    deferred: list | None = None
 
 
 _CURRENT: ContextVar[Execution | None] = ContextVar("machdyn_explore_execution", default=None)
@@ -107,13 +110,16 @@ def run_partitions(
     started = time.perf_counter()
     space = plan.space
     digest = Digest(plan.objective)
-    have = store.done()
-    pending = [i for i in range(space.partitions) if i not in have]
+    have: set[int] = set()
     done = 0
-    for index in sorted(have & set(range(space.partitions))):
-        columns = store.read(index)
+    for index in sorted(store.done()):
+        columns = store.verified(index, space.bounds(index)) if index < space.partitions else None
+        if columns is None:
+            continue
+        have.add(index)
         digest.add(columns, index, space.seed)
         done += columns["design"].size
+    pending = [i for i in range(space.partitions) if i not in have]
     if progress is not None:
         progress(done, space.size)
 
@@ -132,8 +138,7 @@ def run_partitions(
     else:
         where = run_tasks(evaluate_partition, plan, partition_designs(space, pending), finished, workers=workers,
                           scheduler=scheduler)
-    return RunStats(digest, len(pending), len(have & set(range(space.partitions))),
-                    time.perf_counter() - started, where)
+    return RunStats(digest, len(pending), len(have), time.perf_counter() - started, where)
 
 
 def run_tasks(task: Callable, plan: Any, items: Iterator[tuple[int, Any]], finished: Callable[[int, Any], None], *,

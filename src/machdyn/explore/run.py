@@ -91,6 +91,8 @@ class Exploration:
     seconds: float
     where: str
     units: dict[str, tuple[str, str]]
+    notes: tuple[str, ...] = ()
+    pending: Path | None = None
     #: the nominal and the best designs analysed one by one for playback (filled in by the ``[sweep]`` stage)
     views: tuple = ()
 
@@ -100,6 +102,8 @@ class Exploration:
 
     def frame(self):
         """Every design as a pandas DataFrame (SI; for spaces that fit in memory)."""
+        if self.pending is not None and self.pending.is_dir():  # not swapped into the store yet
+            return read_exploration(self.pending)
         return read_exploration(self.store)
 
     def best_frame(self):
@@ -137,13 +141,31 @@ def _store_folder(plan: ExplorePlan, given: str | os.PathLike | None, default: s
     the temporary directory (so that a rerun resumes)."""
     if given is not None:
         return Path(given)
-    spec_store = plan.problem.sweep.store
+    spec_store = store_in_file(plan.problem, source)
     if spec_store is not None:
-        base = Path(source).parent if source else Path.cwd()
-        return base / spec_store
+        return spec_store
     if default is not None:
         return Path(default)
     return Path(tempfile.gettempdir()) / f"machdyn-explore-{plan.fingerprint[:16]}"
+
+
+def store_in_file(problem: Any, source: str | os.PathLike | None) -> Path | None:
+    """The folder ``[sweep] store`` names, against the problem file's folder (the working folder for text given
+    directly), or None. It must lie inside that folder, and not be the folder itself: a problem file cannot make
+    a run write or delete files elsewhere. Raises :class:`~machdyn.errors.ProblemFileError` naming the field."""
+    name = problem.sweep.store
+    if name is None:
+        return None
+    base = Path(source).parent if source else Path.cwd()
+    folder = Path(name) if Path(name).is_absolute() else base / name
+    try:
+        resolved, inside = folder.resolve(), base.resolve()
+    except (OSError, RuntimeError):  # a loop of symbolic links
+        raise ProblemFileError([("sweep.store", f"'{name[:80]}' is a loop of symbolic links")]) from None
+    if not resolved.is_relative_to(inside) or resolved == inside:
+        raise ProblemFileError([("sweep.store", f"must name a folder inside the problem file's folder {base} "
+                                                f"(e.g. \"press.parquet\"); got '{name[:80]}'")])
+    return folder
 
 
 def _where(workers: int | None, scheduler: str | None, spec: Any) -> tuple[int | None, str | None]:
@@ -192,12 +214,20 @@ def explore(
             "columns": {k: {"unit": u, "label": label} for k, (u, label) in units.items()}}
     keeper = PartitionStore(folder, plan.fingerprint, info)
     report = progress if progress is not None else settings.progress
-    with contextlib.ExitStack() as stack:
-        if report is True:
-            report = stack.enter_context(progress_bar(f"{plan.space.size:,} designs"))
-        try:
-            stats = run_partitions(plan, keeper, units, workers=workers, scheduler=scheduler,
-                                   progress=report or None, on_partition=on_partition)
-        except KeyboardInterrupt:
-            raise ExplorationInterrupted(folder, len(keeper.done()), plan.space.partitions) from None
-    return Exploration(plan, folder, stats.digest, stats.computed, stats.reused, stats.seconds, stats.where, units)
+    try:
+        with contextlib.ExitStack() as stack:
+            if report is True:
+                report = stack.enter_context(progress_bar(f"{plan.space.size:,} designs"))
+            try:
+                stats = run_partitions(plan, keeper, units, workers=workers, scheduler=scheduler,
+                                       progress=report or None, on_partition=on_partition)
+            except KeyboardInterrupt:
+                raise ExplorationInterrupted(folder, len(keeper.done()), plan.space.partitions) from None
+    except BaseException:
+        keeper.close()
+        raise
+    swap = keeper.finish(defer=settings.deferred is not None)
+    if swap is not None and settings.deferred is not None:
+        settings.deferred.append(swap)
+    return Exploration(plan, folder, stats.digest, stats.computed, stats.reused, stats.seconds, stats.where, units,
+                       tuple(keeper.notes), swap[0] if swap is not None else None)

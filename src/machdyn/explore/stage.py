@@ -25,13 +25,18 @@ def check(problem: Any, table: Any, source: str | None = None) -> list[tuple[str
     that cannot be built, the objective."""
     if not table.is_exploration:
         return one_quantity.check(problem, table)
-    from .run import plan_exploration
+    from .run import plan_exploration, store_in_file
 
+    problems: list[tuple[str, str]] = []
+    try:
+        store_in_file(problem, source)
+    except ProblemFileError as exc:
+        problems += exc.problems
     try:
         plan_exploration(problem)
     except ProblemFileError as exc:
-        return list(exc.problems)
-    return []
+        problems += exc.problems
+    return problems
 
 
 def run(ctx: StageContext) -> Outcome:
@@ -74,7 +79,7 @@ def outcome(done: Any) -> Outcome:
     }
     labels: dict[str, Label] = {}
     summary = ["sweep.designs", "sweep.assembled_count", "sweep.regular_count"]
-    warnings = []
+    warnings = list(done.notes)
     if plan.space.method == "sobol" and not is_power_of_two(plan.space.size):
         warnings.append(f"A Sobol' sample keeps its balance properties for 2^m designs; {plan.space.size} is not "
                         "a power of 2.")

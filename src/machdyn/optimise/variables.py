@@ -10,8 +10,6 @@ builders, otherwise by building each variant and stacking them (:func:`machdyn.l
 
 from __future__ import annotations
 
-import ast
-import math
 import re
 from dataclasses import dataclass, field
 from typing import Any
@@ -19,54 +17,13 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError, ProblemFileError
-from ..problem.errors import did_you_mean
 from ..problem.fields import FieldError, Unit, to_si
 from ..problem.paths import assign, quantity_unit, value_at
+from .formula import FORMULA_CONSTANTS, FORMULA_FUNCTIONS, Formula, compile_formula
 from .schema import OptimiseSpec
 
-#: Functions a derived formula may call (numpy, so that they act on a whole population at once).
-FORMULA_FUNCTIONS = {
-    "sqrt": np.sqrt, "sin": np.sin, "cos": np.cos, "tan": np.tan, "atan2": np.arctan2, "atan": np.arctan,
-    "asin": np.arcsin, "acos": np.arccos, "hypot": np.hypot, "abs": np.abs, "min": np.minimum, "max": np.maximum,
-}
-FORMULA_CONSTANTS = {"pi": math.pi}
-_ALLOWED_NODES = (ast.Expression, ast.BinOp, ast.UnaryOp, ast.Name, ast.Load, ast.Call, ast.Constant,
-                  ast.Add, ast.Sub, ast.Mult, ast.Div, ast.Pow, ast.USub, ast.UAdd)
-
-
-@dataclass(frozen=True)
-class Formula:
-    """A derived quantity: ``path`` = ``expression`` of the variables (SI)."""
-
-    path: str
-    expression: str
-    unit: Unit
-    code: Any = field(repr=False, compare=False)
-
-    def __call__(self, values: dict[str, np.ndarray]) -> np.ndarray:
-        scope = {**FORMULA_FUNCTIONS, **FORMULA_CONSTANTS, **values}
-        with np.errstate(all="ignore"):
-            return np.asarray(eval(self.code, {"__builtins__": {}}, scope), dtype=float)  # noqa: S307 - checked AST
-
-
-def compile_formula(path: str, text: str, names: list[str], unit: Unit) -> Formula:
-    """Check that ``text`` is arithmetic of the variables, numbers, ``pi`` and :data:`FORMULA_FUNCTIONS`."""
-    try:
-        tree = ast.parse(text, mode="eval")
-    except SyntaxError:
-        raise FieldError(f"'{text}' is not a formula (e.g. \"hypot(l, h)\")") from None
-    known = set(names) | set(FORMULA_FUNCTIONS) | set(FORMULA_CONSTANTS)
-    for node in ast.walk(tree):
-        if not isinstance(node, _ALLOWED_NODES):
-            raise FieldError(f"'{text}' uses {type(node).__name__}; a formula may use + - * / **, numbers, "
-                             f"the variables and {', '.join(FORMULA_FUNCTIONS)}")
-        if isinstance(node, ast.Name) and node.id not in known:
-            raise FieldError(f"'{text}' uses '{node.id}', which is no variable{did_you_mean(node.id, names)} "
-                             f"(variables: {', '.join(names)})")
-        if isinstance(node, ast.Call) and not (isinstance(node.func, ast.Name) and node.func.id in FORMULA_FUNCTIONS):
-            raise FieldError(f"'{text}' calls something that is not one of {', '.join(FORMULA_FUNCTIONS)}")
-    return Formula(path, text, unit, compile(tree, "<formula>", "eval"))
-
+__all__ = ["FORMULA_CONSTANTS", "FORMULA_FUNCTIONS", "DesignSpace", "Formula", "Population", "Variable",
+           "compile_formula", "current_values", "design_space"]
 
 @dataclass(frozen=True)
 class Variable:
@@ -86,10 +43,10 @@ def _default_name(path: str) -> str:
 
 
 def _display(text: Any, meta: Unit) -> str:
-    from ..units import Q_
+    from ..units import quantity_of_text
 
     try:
-        return f"{Q_(str(text)).units:~}" or meta.unit
+        return f"{quantity_of_text(str(text)).units:~}" or meta.unit
     except Exception:  # noqa: BLE001 - the value's own error is reported by to_si
         return meta.unit
 
@@ -273,10 +230,10 @@ def design_space(problem: Any, spec: OptimiseSpec) -> DesignSpace:
 
 def _si_unit(unit: str) -> str:
     """The SI unit of a free variable's unit (``"mm"`` -> ``"m"``)."""
-    from ..units import ureg
+    from ..units import unit_of_text, ureg
 
     try:
-        q = ureg.Quantity(1.0, unit).to_base_units()
+        q = ureg.Quantity(1.0, unit_of_text(unit)).to_base_units()
     except Exception:  # noqa: BLE001 - reported as a field error by the caller
         raise ProblemFileError([("optimise.variables", f"unknown unit {unit!r}")]) from None
     return f"{q.units:~}".replace(" ", "")

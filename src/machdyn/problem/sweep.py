@@ -172,22 +172,22 @@ def _target(problem: BaseModel, path: str) -> Unit:
 
 
 def _display_unit(text: Any, meta: Unit) -> str:
-    from ..units import Q_
+    from ..units import quantity_of_text
 
     try:
-        return f"{Q_(str(text)).units:~}" or meta.unit
+        return f"{quantity_of_text(str(text)).units:~}" or meta.unit
     except Exception:  # the value itself is reported by to_si; fall back to SI here
         return meta.unit
 
 
 def _written_unit(text: Any, meta: Unit) -> str:
     """The unit a value was written in (``"-1 N*m"`` -> ``"N*m"``) if it is one of the quantity's dimension."""
-    from ..units import convert
+    from ..units import Q_, unit_of_text
 
     parts = str(text).strip().split(maxsplit=1)
     if len(parts) == 2:
         try:
-            convert(1.0, meta.unit, parts[1])
+            Q_(1.0, meta.unit).to(unit_of_text(parts[1]))
             return parts[1]
         except Exception:  # noqa: BLE001 - not a plain unit: the pint spelling below
             pass

@@ -49,6 +49,8 @@ MIN_PERIODS = 5
 #: Largest record file read [bytes] and largest number of samples per channel.
 MAX_BYTES = 200_000_000
 MAX_SAMPLES = 20_000_000
+#: Most columns of a record (the time and the channels).
+MAX_COLUMNS = 65
 
 _ACCELERATION_UNITS = {"m/s^2": 1.0, "m/s2": 1.0, "m/s**2": 1.0, "mm/s^2": 1e-3, "mm/s2": 1e-3,
                        "g": STANDARD_GRAVITY, "gn": STANDARD_GRAVITY, "g0": STANDARD_GRAVITY}
@@ -289,7 +291,7 @@ class Record:
 def _unit_of(column: str, source: str) -> tuple[str, str, float]:
     match = _HEADER.match(column)
     if not match:
-        raise InputError(f"The column '{column}' of {source} has no unit: write the header as 'name [unit]', "
+        raise InputError(f"The column '{_quote(column)}' of {source} has no unit: write the header as 'name [unit]', "
                          f"e.g. 'front [m/s^2]' or 'time [s]'.")
     name, unit = match["name"].strip(), match["unit"].strip()
     key = unit.replace(" ", "").lower().replace("²", "^2").replace("**", "^")
@@ -300,8 +302,59 @@ def _unit_of(column: str, source: str) -> tuple[str, str, float]:
     if key in _TIME_UNITS:
         return name, "time", _TIME_UNITS[key]
     known = ", ".join([*_ACCELERATION_UNITS, *_VELOCITY_UNITS])
-    raise InputError(f"The unit '{unit}' of column '{name}' in {source} is not an acceleration or velocity "
-                     f"unit; use one of {known}.")
+    raise InputError(f"The unit '{_quote(unit)}' of column '{_quote(name)}' in {source} is not an acceleration or "
+                     f"velocity unit; use one of {known}.")
+
+
+def _regular_file_size(p: Path) -> int:
+    """The size of the regular file ``p`` [bytes]; a precise :class:`InputError` for anything else."""
+    import errno
+    import stat
+
+    try:
+        info = p.stat()
+    except FileNotFoundError:
+        raise InputError(f"The record file {p} does not exist.") from None
+    except OSError as exc:
+        if exc.errno == errno.ELOOP:
+            raise InputError(f"The record file {p} is a loop of symbolic links.") from None
+        raise InputError(f"The record file {p} cannot be read: {exc.strerror or exc}.") from None
+    if stat.S_ISDIR(info.st_mode):
+        raise InputError(f"The record file {p} is a folder, not a CSV file.")
+    if not stat.S_ISREG(info.st_mode):
+        raise InputError(f"The record file {p} is not a regular file (a FIFO, a socket or a device); "
+                         f"give a CSV file.")
+    return info.st_size
+
+
+def _check_header(p: Path) -> None:
+    """Refuse a header of more than :data:`MAX_COLUMNS` columns or with a repeated channel name before the file
+    is parsed (a header of millions of columns would take minutes and gigabytes to read)."""
+    try:
+        with p.open("r", encoding="utf-8-sig", errors="replace") as handle:
+            header = ""
+            for _ in range(10_000):
+                line = handle.readline(1_000_001)
+                if not line:
+                    break
+                if not line.lstrip().startswith("#"):
+                    header = line
+                    break
+    except OSError as exc:
+        raise InputError(f"The record file {p} cannot be read: {exc.strerror or exc}.") from None
+    if len(header) > 1_000_000 or header.count(",") + 1 > MAX_COLUMNS:
+        raise InputError(f"The record file {p} has more than {MAX_COLUMNS} columns in its header; a record holds "
+                         f"a time column and at most {MAX_COLUMNS - 1} channels.")
+    names = [c.strip() for c in header.rstrip("\r\n").split(",")]
+    for j, name in enumerate(names):
+        if name and name in names[:j]:
+            raise InputError(f"The channel names of {p} must be unique; column {j + 1} repeats column "
+                             f"{names.index(name) + 1} ('{_quote(name)}').")
+
+
+def _quote(text: str, limit: int = 40) -> str:
+    """A bounded excerpt of a file's text for a message."""
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 #: The largest sample magnitude read [m/s^2 or m/s]: beyond it a record is corrupt or in the wrong unit, and its
@@ -319,12 +372,11 @@ def read_record(path, *, max_bytes: int = MAX_BYTES) -> Record:
     import pandas as pd
 
     p = Path(path)
-    if not p.is_file():
-        raise InputError(f"The record file {p} does not exist.")
-    size = p.stat().st_size
+    size = _regular_file_size(p)
     if size > max_bytes:
         raise InputError(f"The record file {p} is {size / 1e6:.1f} MB; records are limited to "
                          f"{max_bytes / 1e6:.0f} MB. Cut it into shorter records.")
+    _check_header(p)
     try:
         frame = pd.read_csv(p, comment="#", skipinitialspace=True, encoding="utf-8-sig")
     except (ValueError, pd.errors.ParserError, UnicodeDecodeError) as exc:
@@ -336,7 +388,7 @@ def read_record(path, *, max_bytes: int = MAX_BYTES) -> Record:
         raise InputError(f"The record file {p} has {len(frame)} samples; at most {MAX_SAMPLES} are read.")
     columns = [_unit_of(str(c), str(p)) for c in frame.columns]
     if columns[0][1] != "time":
-        raise InputError(f"The first column of {p} must be the time in s or ms; got '{frame.columns[0]}'.")
+        raise InputError(f"The first column of {p} must be the time in s or ms; got '{_quote(str(frame.columns[0]))}'.")
     try:
         values = frame.to_numpy(dtype=float)
     except ValueError:
@@ -360,9 +412,9 @@ def read_record(path, *, max_bytes: int = MAX_BYTES) -> Record:
     channels, quantities = {}, {}
     for j, (name, quantity, scale) in enumerate(columns[1:], start=1):
         if quantity == "time":
-            raise InputError(f"Only the first column of {p} may be a time; got '{frame.columns[j]}'.")
+            raise InputError(f"Only the first column of {p} may be a time; got '{_quote(str(frame.columns[j]))}'.")
         if name in channels:
-            raise InputError(f"The channel names of {p} must be unique; got '{name}' twice.")
+            raise InputError(f"The channel names of {p} must be unique; got '{_quote(name)}' twice.")
         x = values[:, j]
         bad = np.flatnonzero(~np.isfinite(x))
         if bad.size:

@@ -183,15 +183,36 @@ PACKAGE_PREFIX = "machdyn:"
 
 def resolve_record(name: str, source=None) -> Path:
     """The file a ``[signals]`` entry names: ``machdyn:PATH`` inside machdyn's data folder (the shipped example
-    records), an absolute path as it is, a relative path against the problem file's folder (``source``)."""
-    if name.startswith(PACKAGE_PREFIX):
-        from importlib import resources
+    records), any other path against the problem file's folder (``source``; the working folder for text given
+    directly). The file must lie inside that folder (symbolic links followed): a problem file from someone else
+    cannot make machdyn read other files of the machine. Raises :class:`InputError` saying why not."""
+    from importlib import resources
 
-        return Path(str(resources.files("machdyn") / "data")) / name[len(PACKAGE_PREFIX):]
-    p = Path(name)
-    if not p.is_absolute() and source is not None:
-        p = Path(source).parent / p
-    return p
+    if name.startswith(PACKAGE_PREFIX):
+        base = Path(str(resources.files("machdyn") / "data"))
+        relative = name[len(PACKAGE_PREFIX):]
+        if Path(relative).is_absolute() or ".." in Path(relative.replace("\\", "/")).parts:
+            raise InputError(f"The record '{_cut(name)}' must name a file shipped with machdyn, without '..' or an "
+                             f"absolute path (e.g. \"machdyn:examples/signals/tamper_before.csv\").")
+        where = "machdyn's data folder"
+        candidate = base / relative
+    else:
+        base = Path(source).parent if source is not None else Path.cwd()
+        where = f"the problem file's folder {base}"
+        candidate = Path(name) if Path(name).is_absolute() else base / name
+    try:
+        resolved = candidate.resolve()
+        inside = base.resolve()
+    except (OSError, RuntimeError):  # Python 3.11 raises RuntimeError on a loop of symbolic links
+        raise InputError(f"The record file {_cut(str(candidate))} is a loop of symbolic links.") from None
+    if not resolved.is_relative_to(inside):
+        raise InputError(f"The record file {_cut(name)} lies outside {where}; records are read from that folder "
+                         f"only: copy the record next to the problem file.")
+    return candidate
+
+
+def _cut(text: str, limit: int = 80) -> str:
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 def record_label(name: str) -> str:
