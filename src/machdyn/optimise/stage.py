@@ -12,23 +12,6 @@ from ..pipeline import Capability, Outcome, StageContext
 from ..results.labels import Label
 from .schema import OptimiseSpec
 
-#: Texts of the per-design results an objective or constraint may name (SI units in evaluate.RESULT_UNITS).
-RESULT_TEXTS = {
-    "driving_torque.max_abs": "driving torque, max |T|",
-    "driving_torque.rms": "driving torque, RMS",
-    "input_power.mean": "input power, mean",
-    "shaking_force.max": "shaking force, max",
-    "shaking_moment.max_abs": "shaking moment, max |M|",
-    "transmission_angle.min": "transmission angle, min",
-    "transmission_angle.max": "transmission angle, max",
-    "transmission_angle.worst": "transmission angle, worst (closest to 0 or 180 deg)",
-    "time_ratio": "time ratio (advance / return)",
-    "compactor.plate_angle.max": "compactor: plate angle to the horizontal, max |gamma|",
-    "compactor.k1.min": "compactor: crank force gain k1 = 1/cos alpha, min over the pressing window",
-    "compactor.k2": "compactor: lever force gain k2 = l/a",
-    "compactor.force_gain.min": "compactor: force gain k1 k2, min over the pressing window",
-}
-
 LABELS = {
     "optimise.evaluations": Label("Optimisation: designs evaluated"),
     "optimise.generations": Label("Optimisation: generations"),
@@ -41,14 +24,12 @@ LABELS = {
 
 
 def _text(key: str) -> str:
-    if key in RESULT_TEXTS:
-        return RESULT_TEXTS[key]
-    parts = key.split(".")
-    if parts[0] == "joint":
-        return f"joint {parts[1]}, max force"
-    if parts[0] == "stroke":
-        return f"stroke of {parts[1]}"
-    return key
+    """The catalogue's text of a result, in lower case after "Best design: "."""
+    from ..results.catalogue import label
+
+    found = label(key)
+    text = found.text if found is not None else key
+    return text[:1].lower() + text[1:]
 
 
 def check(problem: Any, table: OptimiseSpec, source: str | None = None) -> list[tuple[str, str]]:
