@@ -12,6 +12,10 @@ from ..pipeline import Capability, Outcome, StageContext
 from ..results.labels import Label
 from .schema import OptimiseSpec
 
+#: The status columns of the population evaluator: checks of the best design, not results to report.
+STATUS_KEYS = ("assembled", "regular", "assembled_fraction", "dead_point", "branch_change", "near_dead_point",
+               "poor_transmission")
+
 LABELS = {
     "optimise.evaluations": Label("Optimisation: designs evaluated"),
     "optimise.generations": Label("Optimisation: generations"),
@@ -75,11 +79,17 @@ def run(ctx: StageContext) -> Outcome:
         labels[key] = Label(f"Best design: {name}", unit, shown)
         summary.append(key)
     asked = [o.result for o in result.objectives] + [c.result for c in result.constraints]
-    for res_key in dict.fromkeys(asked):
+    # The results asked for (in the summary) and the other results of the best design that were computed.
+    computed = [k for k in result.results if k not in STATUS_KEYS]
+    for res_key in dict.fromkeys(asked + computed):
         key = f"optimise.best.{res_key}"
-        scalars[key] = float(result.results.get(res_key, math.nan))
+        value = float(result.results.get(res_key, math.nan))
+        if res_key not in asked and not math.isfinite(value):
+            continue
+        scalars[key] = value
         labels[key] = Label(f"Best design: {_text(res_key)}", result_unit(res_key, mech))
-        summary.append(key)
+        if res_key in asked:
+            summary.append(key)
     summary += ["optimise.evaluations", "optimise.converged", "optimise.verified"]
     h = result.history
     series: dict[str, Any] = {"optimise_history": {

@@ -107,7 +107,7 @@ def run(ctx: StageContext) -> Outcome:
     labels = {f"sweep.{plan.parameter}": Label(f"Sweep: values of {plan.parameter}", unit, unit)}
     units: dict[str, str] = {}
     for key, data in cols.items():
-        if key in ("regular", "status", "assembled_fraction") or key.startswith("sweep."):
+        if key in ("regular", "status") or key.startswith("sweep."):
             continue
         values[f"sweep.{key}"] = _shown(data)
         found = label(key, done.units.get(key))

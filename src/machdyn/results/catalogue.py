@@ -182,11 +182,29 @@ STATUS: tuple[Quantity, ...] = tuple(
 #: Results of the capabilities and kinds whose keys are made at run time (their fixed keys are declared in each
 #: capability's ``labels``, gathered by :func:`catalogue`).
 RUN_TIME: tuple[Quantity, ...] = (
-    Quantity("sweep.<column*>", "Sweep: {column} of each design", producer="sweep"),
     Quantity("sweep.lowest_<column*>", "Sweep: lowest {column}", producer="sweep"),
     Quantity("sweep.best.<column*>", "Sweep: best design, {column}", producer="sweep"),
+    Quantity("sweep.<column*>", "Sweep: {column} of each design", producer="sweep"),
     Quantity("optimise.best.variable.<name>", "Best design: {name}", producer="optimise"),
     Quantity("optimise.best.<result*>", "Best design: {result}", producer="optimise"),
+    Quantity("balance.<part>.mass", "Balance: {part}, mass", "kg", producer="balance"),
+    Quantity("balance.<part>.x", "Balance: {part}, x in its body's frame", "m", producer="balance"),
+    Quantity("balance.<part>.y", "Balance: {part}, y in its body's frame", "m", producer="balance"),
+    Quantity("frame.mode_<order>.frequency", "Frame: natural frequency of mode {order}", "Hz", producer="frame"),
+    Quantity("frame.mode_<order>.damping_ratio", "Frame: damping ratio of mode {order}", producer="frame"),
+    Quantity("frame.<figure>.<when>.<where>", "Frame: {figure} at {where}, {when} balancing", producer="frame"),
+    Quantity("frame.transmitted_force.<when>.<support>.<direction>",
+             "Frame: force through {support} ({direction}), {when} balancing", "N", producer="frame"),
+    Quantity("frame.acceleration_reduction.<where>", "Frame: acceleration reduction at {where}", producer="frame"),
+    Quantity("signals.<figure>.<when>.<where>", "Signals: {figure} at {where}, {when} balancing",
+             producer="signals"),
+    Quantity("signals.reduction.<where>", "Signals: reduction at {where}", producer="signals"),
+    Quantity("signals.<figure>.<when>", "Signals: {figure}, {when} balancing", producer="signals"),
+    Quantity("signals.mean_reduction", "Signals: mean reduction", producer="signals"),
+    Quantity("frame.mean_acceleration_reduction", "Frame: mean acceleration reduction", producer="frame"),
+    Quantity("drivetrain.shaft_<index>.torque.max_abs", "Drive train: shaft {index}, max |torque|", "N*m",
+             producer="drivetrain"),
+    Quantity("parts.<part>.<name>.<figure>", "Parts: {part} {name}, {figure}", producer="parts"),
     Quantity("rotary_screen.<figure>.<source>", "Rotary screen: {figure} ({source})", producer="rotary_screen"),
     Quantity("check_<name*>_utilisation", "Check {name}, utilisation", producer="screw_conveyor"),
 )
@@ -249,17 +267,17 @@ def _patterns(entries: tuple[Quantity, ...]) -> tuple[tuple[re.Pattern, Quantity
     return tuple((_regex(q.key), q) for q in entries if q.is_pattern)
 
 
-def _exact(entries: Iterable[Quantity]) -> dict[str, Quantity]:
+@cache
+def _exact(entries: tuple[Quantity, ...]) -> dict[str, Quantity]:
     return {q.key: q for q in entries if not q.is_pattern}
 
 
 _OWN = MECHANISM + COMPACTOR + STATUS
-_OWN_EXACT = _exact(_OWN)
 
 
 def find(key: str, entries: tuple[Quantity, ...] = _OWN) -> tuple[Quantity, dict[str, str]] | None:
     """The quantity ``key`` names and the parts of its pattern (``{}`` for an exact key), else None."""
-    exact = _OWN_EXACT if entries is _OWN else _exact(entries)
+    exact = _exact(entries)
     if key in exact:
         return exact[key], {}
     for regex, q in _patterns(entries):
