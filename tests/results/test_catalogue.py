@@ -170,3 +170,17 @@ def test_inertial_shaking_force_is_not_the_frame_force_of_a_press():
     result = run_problem(ROOT / "examples" / "crank_press.toml").results
     assert result["frame_force.max"] > 50e3
     assert result["inertial_shaking_force.max"] < 0.05 * result["frame_force.max"]
+
+
+def test_the_documented_catalogue_example_runs_and_lists_every_mechanism_key():
+    """docs/results.md: its Python example runs, and its table lists every quantity of the mechanism kind."""
+    import re
+
+    text = (ROOT / "docs" / "results.md").read_text(encoding="utf-8")
+    block = re.findall(r"```python\n(.*?)```", text, flags=re.S)[0]
+    exec(compile(block, "docs/results.md", "exec"), {})  # noqa: S102 - the documentation's own example
+    from machdyn.results.catalogue import COMPACTOR
+
+    missing = [q.key for q in MECHANISM + COMPACTOR if f"`{q.key}`" not in text]
+    assert not missing, missing
+    assert all(f"`{old}`" in text for old in ALIASES)
