@@ -15,8 +15,8 @@ when one of its results is wanted:
 and always the checks of each design (``status`` group): ``assembled``, ``dead_point``, ``branch_change``,
 ``near_dead_point``, ``poor_transmission`` (worst transmission angle below ``min_transmission_angle``, default
 :data:`DEFAULT_MIN_TRANSMISSION_DEG`), ``regular`` (none of them) and ``status`` (the first fault's name). The
-results of a design that is not regular are NaN: a degenerate design never counts as a regular one with
-enormous forces.
+results of a design that is not regular are NaN (but for the Grashof margin and class, which tell why): a
+degenerate design never counts as a regular one with enormous forces.
 
 Compactor results (seed 003, Asfandiyarov et al., 2019, for ``machine = "compactor"``: a four-bar whose
 coupler is the compaction plate and whose coupler point P is where it presses):
@@ -183,7 +183,8 @@ def evaluate_population(mech: Mechanism, phi, speed, acceleration, wanted: Itera
                         if q.group == "analysis" and q.key in wanted})
     for key, values in list(out.items()):
         arr = np.broadcast_to(values, (n,))
-        if arr.dtype.kind == "f":
+        # A figure of the geometry (the Grashof margin) holds for every design: it tells why one fails.
+        if arr.dtype.kind == "f" and not key.startswith("grashof."):
             out[key] = np.where(regular, arr, np.nan)
         else:
             out[key] = np.array(arr)
