@@ -13,12 +13,13 @@ from dataclasses import replace
 
 import numpy as np
 
+from ..constants import DOWNWARD_GRAVITY
 from ..errors import InputError, ProblemFileError
 from ..linkage.stroke_loads import stroke_load
 from .errors import did_you_mean
 from .schema import CustomSpec, DoubleCrankSpec, LinkageProblem, LinkSpec
 
-STANDARD_GRAVITY = (0.0, -9.80665)
+STANDARD_GRAVITY = DOWNWARD_GRAVITY
 
 
 def crank_angles(problem: LinkageProblem) -> np.ndarray:
