@@ -22,7 +22,7 @@ def test_population_equals_the_exploration_of_the_same_designs(tmp_path):
     values = frame[PARAMETERS].to_numpy()[::-1]  # any order, any chunking
     out = evaluate_population(problem, PARAMETERS, values, chunk=30)
     expected = frame.iloc[::-1]
-    for name in ("regular", "max_driving_torque", "mean_input_power", "joint.B.max_force"):
+    for name in ("regular", "driving_torque.max_abs", "input_power.mean", "joint.B.max_force"):
         np.testing.assert_array_equal(out[name], expected[name].to_numpy())
 
 

@@ -16,7 +16,7 @@ from .conftest import explore_text
 
 
 def test_scatter_matrix_of_the_sample_coloured_by_the_objective(tmp_path):
-    done = explore(load_problem(explore_text(samples=3000, partition=1024)), store=tmp_path / "s")
+    done = explore(load_problem(explore_text(samples=4000, partition=1024)), store=tmp_path / "s")
     sample = done.digest.sample_in_design_order()
     assert len(sample["design"]) == SAMPLE  # bounded, however many designs
     assert np.all(sample["regular"]) and np.all(np.diff(sample["design"]) > 0)
@@ -25,7 +25,7 @@ def test_scatter_matrix_of_the_sample_coloured_by_the_objective(tmp_path):
     lower = axes[3, 0]
     points, best = lower.collections[:2]
     assert len(points.get_offsets()) == SAMPLE
-    np.testing.assert_allclose(points.get_array(), sample["max_driving_torque"])  # colour = objective
+    np.testing.assert_allclose(points.get_array(), sample["driving_torque.max_abs"])  # colour = objective
     np.testing.assert_allclose(best.get_offsets()[:, 0], done.digest.best["mechanism.crank.length"] * 1e3)
     assert not axes[0, 3].get_visible()
 

@@ -74,14 +74,14 @@ def test_parquet_columns_carry_their_units(tmp_path):
     assert units["mechanism.coupler.mass"] == "kg"
     assert units["drive.speed"] == "rad/s"
     assert units["loads.torques[0].torque"] == "N*m"
-    assert units["max_driving_torque"] == "N*m" and units["mean_input_power"] == "W"
+    assert units["driving_torque.max_abs"] == "N*m" and units["input_power.mean"] == "W"
     assert units["joint.B.max_force"] == "N"
     manifest = json.loads((tmp_path / "s" / "_exploration.json").read_text())
-    assert manifest["designs"] == 64 and manifest["columns"]["max_shaking_force"]["unit"] == "N"
+    assert manifest["designs"] == 64 and manifest["columns"]["frame_force.max"]["unit"] == "N"
     # The folder reads back as one table with pandas.
     frame = pd.read_parquet(tmp_path / "s")
     assert len(frame) == 64 and np.array_equal(frame["design"], np.arange(64))
-    assert done.units["max_driving_torque"][0] == "N*m"
+    assert done.units["driving_torque.max_abs"][0] == "N*m"
 
 
 def test_store_named_in_the_file_is_relative_to_the_file(tmp_path):

@@ -84,7 +84,7 @@ def test_compactor_results_agree_with_the_machine_layer(compactor):
     """Plate angle gamma and force gains from the population evaluation against machines.compactor."""
     mech = build_mechanism(compactor)
     phi = np.arange(3600) * (2 * np.pi / 3600)
-    got = evaluate(mech, phi, 10.0, 0.0, set(result_names(mech)))
+    got = evaluate(mech, phi, 10.0, 0.0, set(result_names(mech, "compactor")), machine="compactor")
     machine = Compactor(r=0.03, l=0.5, h=0.25, R=0.25, branch=-1)
     check = machine.gamma_check(samples=3601)
     # The machine layer refines the extreme between samples; a 0.1 deg grid is within 1e-6 rad of it.
@@ -125,3 +125,17 @@ def test_the_examples_split_compaction_force_equals_the_force_at_p(compactor):
     np.testing.assert_allclose(split.driving_torque, at_p.driving_torque, rtol=0, atol=1e-12 * scale)
     for name in ("O", "D"):
         np.testing.assert_allclose(split.joint(name).magnitude, at_p.joint(name).magnitude, rtol=1e-12)
+
+
+def test_compactor_results_come_with_the_machine_not_with_a_point_named_p():
+    """A four-bar with a coupler point P is not a compactor unless its file says so: its results offer no
+    compactor figures, and asking for one says how to get them."""
+    from machdyn.errors import ProblemFileError
+
+    problem = problem_with(VARIABLES)
+    mech = build_mechanism(problem)
+    assert "P" in mech.body("coupler").points
+    assert not any(k.startswith("compactor.") for k in result_names(mech))
+    assert "compactor.force_gain.min" in result_names(mech, "compactor")
+    with pytest.raises(ProblemFileError, match='machine = \\"compactor\\"'):
+        problem_with(VARIABLES.replace('result = "driving_torque.max_abs"', 'result = "compactor.k2"'))

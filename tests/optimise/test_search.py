@@ -42,7 +42,7 @@ def test_compactor_optimum_is_feasible_by_an_independent_check(compactor):
 
 def test_objective_naming_no_result_gets_did_you_mean():
     with pytest.raises(ProblemFileError) as err:
-        problem_with(CRANK + '[[optimise.objectives]]\nresult = "driving_torque.max"\n')
+        problem_with(CRANK + '[[optimise.objectives]]\nresult = "driving_torque.max_ab"\n')
     text = str(err.value)
     assert "optimise.objectives[0].result" in text and "did you mean 'driving_torque.max_abs'" in text
 

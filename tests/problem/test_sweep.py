@@ -50,28 +50,28 @@ def test_sweep_of_a_link_length_equals_each_variant_alone():
     assert list(frame["mechanism.crank.length [mm]"]) == pytest.approx([30.0, 35.0, 40.0])
     for i, value in enumerate(("30 mm", "35 mm", "40 mm")):
         expected = _single(BASE, ('"40 mm", mass = "0.2 kg"', f'"{value}", mass = "0.2 kg"'))
-        assert frame["max_driving_torque [N*m]"][i] == pytest.approx(expected, rel=1e-12)
-    assert result.scalars["sweep.max_driving_torque"]["unit"] == "N*m"
-    assert any(row[0].startswith("Sweep: lowest peak driving torque") for row in result.summary_rows)
+        assert frame["driving_torque.max_abs [N*m]"][i] == pytest.approx(expected, rel=1e-12)
+    assert result.scalars["sweep.driving_torque.max_abs"]["unit"] == "N*m"
+    assert any(row[0].startswith("Sweep: lowest driving torque, max |T|") for row in result.summary_rows)
 
 
 def test_sweep_of_the_speed_and_of_a_load_item():
     speeds = BASE + '\n[sweep]\nparameter = "drive.speed"\nstart = "60 rpm"\nstop = "120 rpm"\ncount = 3\n'
     frame = run_problem(load_problem(speeds)).frames["sweep"]
     assert list(frame["drive.speed [rpm]"]) == pytest.approx([60.0, 90.0, 120.0])
-    for rpm, peak in zip((60, 90, 120), frame["max_driving_torque [N*m]"], strict=True):
+    for rpm, peak in zip((60, 90, 120), frame["driving_torque.max_abs [N*m]"], strict=True):
         assert peak == pytest.approx(_single(BASE, ('"10 rad/s"', f'"{rpm} rpm"')), rel=1e-12)
     loads = BASE + '\n[sweep]\nparameter = "loads.torques[0].torque"\nvalues = ["-1 N*m", "-2 N*m"]\n'
     frame = run_problem(load_problem(loads)).frames["sweep"]
     # The mean power over a turn is the work of the resisting torque on the shaft: -T * mean speed.
-    assert list(frame["mean_input_power [W]"]) == pytest.approx([10.0, 20.0], rel=1e-9)
+    assert list(frame["input_power.mean [W]"]) == pytest.approx([10.0, 20.0], rel=1e-9)
 
 
 def test_variants_that_cannot_assemble_are_kept_but_not_regular():
     text = BASE + '\n[sweep]\nparameter = "mechanism.crank.length"\nvalues = ["40 mm", "90 mm"]\n'
     frame = run_problem(load_problem(text)).frames["sweep"]
     assert list(frame["regular"]) == [True, False]
-    assert np.isnan(frame["max_driving_torque [N*m]"][1])
+    assert np.isnan(frame["driving_torque.max_abs [N*m]"][1])
 
 
 @pytest.mark.parametrize(
@@ -108,7 +108,7 @@ def test_cli_writes_the_sweep_table(tmp_path):
                            "--quiet"], capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     lines = (tmp_path / "out" / "sweep.csv").read_text().splitlines()
-    assert lines[0].startswith("mechanism.coupler.mass [kg],assembled,regular,max_driving_torque [N*m]")
+    assert lines[0].startswith("mechanism.coupler.mass [kg],assembled,regular,status,driving_torque.max_abs [N*m]")
     assert len(lines) == 3
     assert "Design sweep of mechanism.coupler.mass" in (tmp_path / "out" / "report.html").read_text()
 
@@ -167,8 +167,8 @@ def test_a_one_quantity_file_is_not_an_exploration_and_an_exploration_dumps_back
          "method = 'sobol' needs samples = <number of designs>"),
         ('method = "sobol"\nsamples = 8\nobjective = "max_drving_torque"\nparameter = "drive.speed"\n'
          'start = "1 rad/s"\nstop = "2 rad/s"', "sweep",
-         "objective must be one of max_driving_torque, rms_driving_torque, mean_input_power, max_shaking_force, "
-         "max_shaking_moment or joint.<name>.max_force; got 'max_drving_torque'; did you mean 'max_driving_torque'?"),
+         "objective must name a per-design result (a key of docs/results.md such as driving_torque.max_abs, "
+         "frame_force.max or joint.<name>.max_force); got 'max_drving_torque'; did you mean 'max_driving_torque'?"),
         ('scheduler = "localhost:8786"\nparameter = "drive.speed"\nvalues = ["1 rad/s"]', "sweep.scheduler",
          "must be the address of a Dask scheduler, like 'tcp://host:8786'; got 'localhost:8786'"),
     ],

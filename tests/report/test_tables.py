@@ -89,7 +89,7 @@ def test_scalars_carry_units_and_match(any_analysis):
         entry = scalars[f"joint.{j.name}.max_force"]
         assert entry["unit"] == "N"
         assert entry["value"] == pytest.approx(np.max(a.forces.joint(j.name).magnitude))
-    assert scalars["shaking_force.max"]["unit"] == "N"
+    assert scalars["frame_force.max"]["unit"] == "N"
     assert scalars["shaking_moment.max_abs"]["unit"] == "N*m"
     assert scalars["reduced_inertia.min"]["unit"] == "kg*m^2"
     assert scalars["reduced_inertia.min"]["value"] <= scalars["reduced_inertia.max"]["value"]

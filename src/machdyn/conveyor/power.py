@@ -9,10 +9,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from ..constants import STANDARD_GRAVITY
 from ..errors import InputError
 from . import tables
 
-G = 9.80665  # standard gravity [m/s²]
+G = STANDARD_GRAVITY  # [m/s²]
 HP = 745.69987158227022  # mechanical horsepower [W]
 _LB = 0.45359237  # [kg]
 _FT = 0.3048  # [m]

@@ -1,5 +1,6 @@
 """Evaluate one partition of designs: build the partition's engine model with one array per explored quantity
-and run the engine's sweep (:func:`machdyn.linkage.sweep`, the one place an exploration calls the engine).
+and evaluate it with the population evaluator (:func:`machdyn.results.population.evaluate_population`, the one
+function sweeps, explorations and the optimiser evaluate designs with; its columns are catalogue keys).
 
 A partition's model is built by putting the partition's values, as arrays, into the validated problem and
 building it once (every builder and load of the engine broadcasts over designs). Before a run, a few designs
@@ -12,22 +13,18 @@ from __future__ import annotations
 
 import hashlib
 import json
+import math
 from dataclasses import dataclass, fields, is_dataclass, replace
 from typing import Any
 
 import numpy as np
 
 from ..errors import ProblemFileError
+from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
 from .sampling import DesignSpace
 
-#: Per-design summaries of the engine's sweep kept for every design: (attribute, label, SI unit).
-SUMMARIES = (
-    ("max_driving_torque", "Peak driving torque", "N*m"),
-    ("rms_driving_torque", "RMS driving torque", "N*m"),
-    ("mean_input_power", "Mean input power", "W"),
-    ("max_shaking_force", "Peak shaking force", "N"),
-    ("max_shaking_moment", "Peak shaking moment", "N*m"),
-)
+#: Changes when the columns an exploration keeps change, so that partitions stored before are not reused.
+COLUMNS_VERSION = 2
 
 #: Quantities of the drive: passed to the engine per design, not built into the model.
 DRIVE = ("drive.speed", "drive.acceleration")
@@ -44,6 +41,8 @@ class ExplorePlan:
     about: tuple[float, float]
     objective: str
     vectorised: bool = True
+    #: the threshold [rad] of a design's poor_transmission (see machdyn.results.population)
+    min_transmission_angle: float = math.radians(DEFAULT_MIN_TRANSMISSION_DEG)
 
     @property
     def fingerprint(self) -> str:
@@ -58,6 +57,7 @@ class ExplorePlan:
                       [[q.parameter, q.values, q.start, q.stop] for q in self.space.quantities]],
             "angles": [float(a) for a in self.angles],
             "about": list(self.about),
+            "columns": [self.objective, self.min_transmission_angle, COLUMNS_VERSION],
         }
         return hashlib.sha256(json.dumps(data, sort_keys=True).encode()).hexdigest()
 
@@ -107,19 +107,20 @@ def build_designs(plan: ExplorePlan, values: np.ndarray) -> tuple[Any, Any, Any]
 
 
 def evaluate_designs(plan: ExplorePlan, values: np.ndarray) -> dict[str, np.ndarray]:
-    """The per-design summaries of the designs ``values`` (n, K) in SI: one array per column, quantities first
-    (SI), then ``assembled``, ``regular``, the summaries and ``joint.<name>.max_force``."""
-    from ..linkage import sweep
+    """The per-design results of the designs ``values`` (n, K) in SI: one array per column, quantities first
+    (SI), then the status columns (``assembled``, ``regular``, ``status``...) and the results of
+    :func:`~machdyn.results.population.sweep_columns` under their catalogue keys."""
+    from ..results.population import evaluate_population, sweep_columns
 
     mech, speed, accel = build_designs(plan, values)
-    res = sweep(mech, plan.angles, speed, accel, shaking_about=plan.about)
+    machine = getattr(plan.problem.mechanism, "machine", None)
+    wanted = sweep_columns(mech, machine, plan.objective)
+    res = evaluate_population(mech, plan.angles, speed, accel, wanted, about=plan.about, machine=machine,
+                              min_transmission_angle=plan.min_transmission_angle)
     columns: dict[str, np.ndarray] = {p: np.ascontiguousarray(values[:, k]) for k, p in enumerate(plan.space.names)}
-    columns["assembled"] = np.asarray(res.assembled, dtype=bool)
-    columns["regular"] = np.asarray(res.regular, dtype=bool)
-    for attr, _label, _unit in SUMMARIES:
-        columns[attr] = np.asarray(getattr(res, attr), dtype=float)
-    for joint, data in res.max_joint_force.items():
-        columns[f"joint.{joint}.max_force"] = np.asarray(data, dtype=float)
+    for key, data in res.items():
+        if key != "assembled_fraction":
+            columns[key] = data if data.dtype.kind in "fb" else data.astype(str)
     return columns
 
 

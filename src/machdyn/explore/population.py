@@ -8,7 +8,7 @@ from machdyn.problem import load_problem
 problem = load_problem("examples/four_bar.toml")
 values = np.array([[0.035, -1.0], [0.04, -2.0]])   # SI: m, N*m
 out = evaluate_population(problem, ["mechanism.crank.length", "loads.torques[0].torque"], values)
-out["max_driving_torque"]
+out["driving_torque.max_abs"]
 ```
 """
 
@@ -21,7 +21,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
-from ..problem.sweep import OBJECTIVES, QuantityRange, sweep_unit
+from ..problem.sweep import DEFAULT_OBJECTIVE, QuantityRange, sweep_unit
 from .evaluate import ExplorePlan, check_vectorised_build, evaluate_designs
 from .execution import run_tasks
 from .sampling import DEFAULT_PARTITION, DesignSpace
@@ -66,9 +66,10 @@ def evaluate_population(
     """The per-design summaries of the designs ``values`` (n designs x len(parameters), SI) of a linkage problem,
     the quantity at ``parameters[k]`` (key paths such as ``mechanism.crank.length``) taking ``values[:, k]``.
 
-    Returns one array per column, as the columns of an exploration: the parameters, ``assembled``, ``regular``,
-    ``max_driving_torque`` [N*m], ``rms_driving_torque`` [N*m], ``mean_input_power`` [W], ``max_shaking_force``
-    [N], ``max_shaking_moment`` [N*m] and ``joint.<name>.max_force`` [N]; NaN summaries for designs that are not
+    Returns one array per column, as the columns of an exploration: the parameters, the status columns
+    (``assembled``, ``regular``, ``status``...) and the per-design results under their catalogue keys
+    (``driving_torque.max_abs`` [N*m], ``frame_force.max`` [N], ``transmission_angle.min`` [rad],
+    ``joint.<name>.max_force`` [N]...; :mod:`machdyn.results.catalogue`); NaN results for designs that are not
     regular. Runs in chunks of ``chunk`` designs here, or on a local Dask cluster of ``workers`` processes, or
     on the Dask scheduler at ``scheduler``."""
     from ..problem.build import crank_angles
@@ -77,7 +78,7 @@ def evaluate_population(
     n = data.shape[0]
     space = DesignSpace(quantities, "given", n, 0, max(1, int(chunk)))
     plan = ExplorePlan(problem, space, crank_angles(problem), tuple(problem.output.shaking_moment_about),
-                       OBJECTIVES[0])
+                       DEFAULT_OBJECTIVE)
     plan = replace(plan, vectorised=check_vectorised_build(plan, data[np.unique([0, n // 2, n - 1])]))
     out: dict[str, np.ndarray] = {}
 

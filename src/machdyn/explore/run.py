@@ -24,7 +24,7 @@ import numpy as np
 from ..errors import ProblemFileError
 from ..problem.errors import did_you_mean
 from .digest import Digest
-from .evaluate import SUMMARIES, ExplorePlan, check_vectorised_build, evaluate_designs
+from .evaluate import ExplorePlan, check_vectorised_build, evaluate_designs
 from .execution import Progress, current, progress_bar, run_partitions
 from .sampling import DEFAULT_PARTITION, DesignSpace, partition_designs
 from .store import PartitionStore, read_exploration
@@ -52,7 +52,7 @@ def plan_exploration(problem: Any) -> ExplorePlan:
                                                     f"make more than {MAX_PARTITIONS:,} partitions; give a partition "
                                                     f"of at least {least:,} designs")])
     plan = ExplorePlan(problem, space, crank_angles(problem), tuple(problem.output.shaking_moment_about),
-                       spec.goal)
+                       spec.goal, min_transmission_angle=spec.transmission_limit)
     _, first = next(partition_designs(space, [0]))
     probe = first[np.unique([0, first.shape[0] // 2, first.shape[0] - 1])]
     plan = replace(plan, vectorised=check_vectorised_build(plan, probe))
@@ -66,14 +66,18 @@ def plan_exploration(problem: Any) -> ExplorePlan:
 
 
 def column_units(plan: ExplorePlan, columns: list[str]) -> dict[str, tuple[str, str]]:
-    """(SI unit, label) of each column of an exploration."""
-    out: dict[str, tuple[str, str]] = {"design": ("", "Design number"), "assembled": ("", "Assembles everywhere"),
-                                       "regular": ("", "Regular (assembles, no dead position)")}
+    """(SI unit, label) of each column of an exploration (the results' from the catalogue)."""
+    from ..problem.build import build_mechanism
+    from ..results.catalogue import label
+    from ..results.population import result_unit
+
+    mech = build_mechanism(plan.problem)
+    out: dict[str, tuple[str, str]] = {"design": ("", "Design number")}
     out |= {q.parameter: (q.si_unit, q.parameter) for q in plan.space.quantities}
-    out |= {attr: (unit, label) for attr, label, unit in SUMMARIES}
     for name in columns:
-        if name.startswith("joint."):
-            out[name] = ("N", f"Joint {name.split('.')[1]}, max force")
+        found = label(name)
+        if name not in out and found is not None:
+            out[name] = (result_unit(name, mech), found.text)
     return {k: out[k] for k in columns if k in out}
 
 

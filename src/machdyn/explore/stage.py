@@ -11,8 +11,8 @@ from ..errors import ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext
 from ..pipelines import sweep as one_quantity
 from ..problem.sweep import SweepSpec
+from ..results.catalogue import find, label
 from ..results.labels import Label
-from .evaluate import SUMMARIES
 
 LABELS = dict(one_quantity.LABELS) | {
     "sweep.assembled_count": Label("Sweep: designs that assemble at every crank angle"),
@@ -66,7 +66,6 @@ def played(done: Any) -> Any:
 def outcome(done: Any) -> Outcome:
     """The results of an exploration: counts, the best design's objective and quantities, the best designs as a
     table (``sweep_best.csv``); every design is in the Parquet folder ``done.store``."""
-    from ..problem.sweep import OBJECTIVES
     from .sampling import is_power_of_two
 
     plan, digest = done.plan, done.digest
@@ -85,27 +84,35 @@ def outcome(done: Any) -> Outcome:
                         "a power of 2.")
     if digest.best and digest.best["design"].size:
         best = {k: v[0] for k, v in digest.best.items()}
-        text = dict((a, t) for a, t, _ in SUMMARIES).get(goal) or done.units[goal][1]
+        text = _text(goal)
         values["sweep.best"] = float(best["design"])
         values[f"sweep.best.{goal}"] = float(best[goal])
-        labels[f"sweep.best.{goal}"] = Label(f"Sweep: best design, {text.lower()} (objective)", unit_of[goal])
+        labels[f"sweep.best.{goal}"] = Label(f"Sweep: best design, {text} (objective)", unit_of[goal])
         summary += ["sweep.best", f"sweep.best.{goal}"]
         for q in plan.space.quantities:
             key = f"sweep.best.{q.parameter}"
             values[key] = float(best[q.parameter])
             labels[key] = Label(f"Sweep: best design, {q.parameter}", q.si_unit, q.display_unit)
             summary.append(key)
-        for name in (*OBJECTIVES, *(c for c in digest.best if c.startswith("joint."))):
-            if name != goal:
+        for name in digest.best:
+            found = find(name)
+            if name != goal and found is not None and found[0].group not in ("", "status") \
+                    and found[0].kind == "number":
                 values[f"sweep.best.{name}"] = float(best[name])
-                labels[f"sweep.best.{name}"] = Label(f"Sweep: best design, {done.units[name][1].lower()}",
-                                                     unit_of[name])
+                labels[f"sweep.best.{name}"] = Label(f"Sweep: best design, {_text(name)}", unit_of[name])
     else:
         warnings.append(f"No design of the exploration of {', '.join(plan.space.names)} is regular: each fails to "
-                        "assemble or passes a dead position somewhere in the crank range.")
+                        "assemble, passes or nears a dead point, changes branch or transmits poorly somewhere in the "
+                        "crank range (see the status column).")
     columns = {name: (np.asarray(data), unit_of.get(name, "")) for name, data in digest.best.items()}
     return Outcome(results=done, scalars=values, labels=labels, series={"sweep_best": columns} if columns else {},
                    summary=tuple(summary), warnings=tuple(warnings))
+
+
+def _text(key: str) -> str:
+    found = label(key)
+    text = found.text if found is not None else key
+    return text[:1].lower() + text[1:]
 
 
 CAPABILITY = Capability(

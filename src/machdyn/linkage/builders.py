@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..constants import DOWNWARD_GRAVITY
 from ..errors import InputError, check_finite, check_positive
 from .model import RPR, RRP, RRR, Body, Crank, Guide, Mechanism
 
@@ -57,7 +58,7 @@ def slider_crank(
     coms=None,
     linear_density=1.0,
     name="slider_crank",
-    gravity=(0.0, -9.80665),
+    gravity=DOWNWARD_GRAVITY,
 ) -> Mechanism:
     """Offset slider-crank: crank O-A [m], rod A-B [m], slider B on a line at distance ``offset`` [m] from O.
 
@@ -102,7 +103,7 @@ def four_bar(
     linear_density=1.0,
     coupler_point=None,
     name="four_bar",
-    gravity=(0.0, -9.80665),
+    gravity=DOWNWARD_GRAVITY,
 ) -> Mechanism:
     """Four-bar linkage O-A-B-D: crank O-A, coupler A-B, rocker D-B, ground O-D, all lengths [m].
 
@@ -142,7 +143,7 @@ def inverted_slider_crank(
     inertias=None,
     linear_density=1.0,
     name="inverted_slider_crank",
-    gravity=(0.0, -9.80665),
+    gravity=DOWNWARD_GRAVITY,
 ) -> Mechanism:
     """Inverted slider-crank (crank-shaper / oscillating-cylinder type): crank O-A [m]; a block pinned at A
     slides along a rocker pivoted at C = (ground, 0) [m]; the slide line is parallel to the rocker's axis at
@@ -183,7 +184,7 @@ def six_bar(
     branch2=1,
     linear_density=1.0,
     name="six_bar",
-    gravity=(0.0, -9.80665),
+    gravity=DOWNWARD_GRAVITY,
 ) -> Mechanism:
     """Stephenson III six-bar: a four-bar (as :func:`four_bar`) whose coupler point P drives a second RRR dyad,
     link5 P-F [m] and link6 E-F [m], to the ground pivot E = ``pivot6`` (x, y) [m]."""
@@ -220,7 +221,7 @@ def double_slider_crank(
     inertias=None,
     linear_density=1.0,
     name="double_slider_crank",
-    gravity=(0.0, -9.80665),
+    gravity=DOWNWARD_GRAVITY,
 ) -> Mechanism:
     """Two slider-cranks on one crank shaft (the paver screed's double tamper, seed 000): pins A1 at radius
     crank_1 [m] and angle 0, A2 at radius crank_2 [m] and angle ``phase`` [rad] on the one crank body; rods

@@ -78,3 +78,34 @@ def grashof_type(mech: Mechanism):
     kind = np.where(np.abs(s + l_ - pq) <= tol, "change-point",
                     np.where(s + l_ < pq, grashof, "non-Grashof triple-rocker"))
     return str(kind) if kind.ndim == 0 else kind
+
+
+def grashof_margin(mech: Mechanism):
+    """The Grashof margin s + l - (p + q) of a four-bar (Norton, *Design of Machinery*, 5th ed., §2.12).
+
+    With s the shortest, l the longest and p, q the other links: negative for a Grashof linkage (its shortest
+    link turns fully), zero for a change-point linkage, positive for a non-Grashof triple-rocker.
+
+    Parameters
+    ----------
+    mech : Mechanism
+        A mechanism [link lengths in m]; only a four-bar (one RRR group from the crank to the ground) has one.
+
+    Returns
+    -------
+    float or numpy.ndarray or None
+        s + l - (p + q) [m]; an array for design variants; None if ``mech`` is not a four-bar.
+
+    Examples
+    --------
+    >>> from machdyn.linkage import four_bar
+    >>> round(float(grashof_margin(four_bar(0.02, 0.08, 0.07, 0.09))), 12)
+    -0.04
+    """
+    lengths = _four_bar_lengths(mech)
+    if lengths is None:
+        return None
+    stack = np.stack(np.broadcast_arrays(*[np.asarray(v, dtype=float) for v in lengths]), axis=-1)
+    s, l_ = stack.min(axis=-1), stack.max(axis=-1)
+    margin = s + l_ - (stack.sum(axis=-1) - s - l_)
+    return float(margin) if margin.ndim == 0 else margin

@@ -11,6 +11,7 @@ exactly when G stands still.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -112,3 +113,47 @@ def inertial_force(kin: Kinematics) -> tuple[np.ndarray, np.ndarray]:
     fx = sum((-np.asarray(e.mass, dtype=float) * e.motion.ax for e in elements), zero)
     fy = sum((-np.asarray(e.mass, dtype=float) * e.motion.ay for e in elements), zero)
     return np.broadcast_to(fx, kin.shape), np.broadcast_to(fy, kin.shape)
+
+
+def inertial_shaking_moment(kin: Kinematics, about: tuple[float, float] = (0.0, 0.0)) -> np.ndarray:
+    """The inertial shaking moment [N*m] about the point ``about`` [m] (counter-clockwise positive): the moment
+    of the d'Alembert loads of every moving mass, sum over i of (r_i - z) x (-m_i a_i) - I_i alpha_i, with r_i,
+    a_i the position and acceleration of its centre of mass and alpha_i the angular acceleration of its body.
+
+    With gravity off and no external loads it is the moment the moving mechanism puts on its frame, the
+    driving torque's reaction on the motor's stator included (Newton-Euler for the system of bodies; Berkof &
+    Lowen, "A new method for completely force balancing simple linkages", J. Eng. Ind. 91(1), 1969, and Uicker,
+    Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th ed., chapter "Balancing"); process loads and
+    weight add to the frame's moment (:meth:`~machdyn.linkage.kinetostatics.Forces.shaking_moment`) but not to
+    this one.
+
+    Parameters
+    ----------
+    kin : Kinematics
+        The result of :func:`~machdyn.linkage.kinematics.kinematics` (one design or many).
+    about : tuple of float
+        The point [m] the moment is taken about, global axes.
+
+    Returns
+    -------
+    numpy.ndarray
+        The inertial shaking moment [N*m], shaped like the crank angles (designs first).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from machdyn.linkage import kinematics, slider_crank
+    >>> mech = slider_crank(0.1, 0.3, masses=(0.0, 0.0, 2.0), gravity=(0.0, 0.0))  # all the mass in the slider
+    >>> m = inertial_shaking_moment(kinematics(mech, np.radians(30.0), 10.0))
+    >>> float(np.abs(m).max()) < 1e-12       # the slider moves along the line through the origin
+    True
+    """
+    zx, zy = (float(v) for v in about)
+    total: Any = 0.0
+    for e in mass_elements(kin):
+        m = np.asarray(e.mass, dtype=float)
+        s = e.motion
+        alpha = kin.body(e.body).alpha
+        total = total + (np.asarray(s.x) - zx) * (-m * np.asarray(s.ay)) - (np.asarray(s.y) - zy) * (
+            -m * np.asarray(s.ax)) - np.asarray(e.inertia, dtype=float) * np.asarray(alpha)
+    return np.broadcast_to(total, kin.shape)

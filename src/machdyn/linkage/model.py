@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from ..constants import DOWNWARD_GRAVITY
 from ..errors import InputError, check_finite, check_positive
 from .dyad_types import PRP, RPR, RRP, RRR, Dyad, Guide
 from .refs import GROUND, Array, Number, Vec, split_ref
@@ -110,7 +111,8 @@ class Spring:
 class Mechanism:
     """A planar linkage: ground points, bodies, the driving crank, dyads in solution order, and loads.
 
-    ``gravity`` [m/s^2] is a vector (default 9.80665 m/s^2 towards -y); use (0, 0) to switch it off.
+    ``gravity`` [m/s^2] is a vector (default standard gravity, 9.80665 m/s^2, towards -y); use (0, 0) to switch
+    it off.
     """
 
     name: str
@@ -122,7 +124,7 @@ class Mechanism:
     forces: tuple[PointForce, ...] = ()
     torques: tuple[BodyTorque, ...] = ()
     springs: tuple[Spring, ...] = ()
-    gravity: Vec = (0.0, -9.80665)
+    gravity: Vec = DOWNWARD_GRAVITY
     _index: dict = field(default_factory=dict, init=False, repr=False, compare=False)
     _designs: int | None = field(default=None, init=False, repr=False, compare=False)
     #: Derived data kept with the (immutable) model, such as the fused engine's code and parameter table.

@@ -22,6 +22,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from ..constants import DOWNWARD_GRAVITY
 from ..errors import AssemblyError, InputError, check_finite, check_positive
 
 __all__ = [
@@ -460,7 +461,7 @@ class Compactor:
     q_force: tuple[float, float] = (0.0, 0.0)
     q_from_b: float = 0.0
     q_active: tuple[float, float] | None = None
-    gravity: tuple[float, float] = field(default=(0.0, -9.80665))
+    gravity: tuple[float, float] = field(default=DOWNWARD_GRAVITY)
 
     def __post_init__(self) -> None:
         _check_geometry(self.r, self.l, self.h, self.R)

@@ -1,5 +1,6 @@
 """Constraints: a per-design result kept within ``min`` ... ``max``, and the built-in requirement that a
-design closes at every crank angle without passing a dead position (a fully turning crank).
+design is regular: it closes at every crank angle without passing or nearing a dead position or changing
+branch, and keeps its transmission angle away from 0 and 180 deg (:mod:`machdyn.results.population`).
 
 Violations are measured relative to the limit (``(limit - value) / |limit|``, or absolute for a zero limit),
 so constraints in different units add up to one total; a feasible design has a total of zero.
@@ -13,6 +14,7 @@ import numpy as np
 
 from ..errors import ProblemFileError
 from ..problem.fields import FieldError, Unit, to_si
+from ..results.catalogue import canonical
 from .objectives import unknown_result
 from .schema import ConstraintSpec
 
@@ -56,10 +58,11 @@ def parse_constraints(specs: list[ConstraintSpec], names: list[str], unit_of) ->
     out = []
     for i, spec in enumerate(specs):
         where = f"optimise.constraints[{i}]"
-        if spec.result not in names:
+        result = canonical(spec.result)
+        if result not in names:
             problems.append((f"{where}.result", unknown_result(spec.result, names)))
             continue
-        unit = unit_of(spec.result)
+        unit = unit_of(result)
         limits: dict[str, float | None] = {"min": None, "max": None}
         for key in ("min", "max"):
             raw = getattr(spec, key)
@@ -68,12 +71,12 @@ def parse_constraints(specs: list[ConstraintSpec], names: list[str], unit_of) ->
             try:
                 limits[key] = to_si(raw, Unit(unit, "result"))
             except FieldError as exc:
-                problems.append((f"{where}.{key}", f"{exc} (for {spec.result}, in {unit or 'no unit'})"))
+                problems.append((f"{where}.{key}", f"{exc} (for {result}, in {unit or 'no unit'})"))
         lo, hi = limits["min"], limits["max"]
         if lo is not None and hi is not None and not hi >= lo:
             problems.append((f"{where}.max", f"must be >= min ({spec.min}); got {spec.max}"))
             continue
-        out.append(Constraint(spec.result, unit, lo, hi))
+        out.append(Constraint(result, unit, lo, hi))
     if problems:
         raise ProblemFileError(problems)
     return tuple(out)

@@ -1,6 +1,7 @@
 """Objectives: a per-design result to minimise, maximise or bring to a target value.
 
-Any result of :func:`machdyn.optimise.evaluate.result_names` may be named; a name that is none of them is
+Any result of :func:`machdyn.optimise.evaluate.result_names` may be named, by its catalogue key or an old
+name of :data:`machdyn.results.catalogue.ALIASES`; a name that is none of them is
 refused with a did-you-mean. Every objective is turned into a value to *minimise*: the result itself
 (minimise), its negative (maximise) or its distance from the target, relative to the target when that is not
 zero (target).
@@ -15,6 +16,7 @@ import numpy as np
 from ..errors import ProblemFileError
 from ..problem.errors import did_you_mean
 from ..problem.fields import FieldError, Unit, to_si
+from ..results.catalogue import canonical
 from .schema import ObjectiveSpec
 
 SENSES = {"minimise": "minimise", "minimize": "minimise", "maximise": "maximise", "maximize": "maximise"}
@@ -50,8 +52,8 @@ def unknown_result(name: str, names: list[str]) -> str:
     """The message for a result name that is not one of ``names``."""
     why = ""
     if name.startswith("compactor.") and not any(n.startswith("compactor.") for n in names):
-        why = ("; the compactor results need a four-bar with a coupler point (mechanism.coupler_point), the "
-               "point of the plate where the material is pressed")
+        why = ("; the compactor results need [mechanism] machine = \"compactor\" (a four-bar whose coupler point "
+               "is the point of the plate where the material is pressed)")
     return (f"'{name}' names no result of this mechanism{why}{did_you_mean(name, names)} "
             f"(results: {', '.join(names)})")
 
@@ -64,12 +66,13 @@ def parse_objectives(specs: list[ObjectiveSpec], names: list[str], unit_of) -> t
     out = []
     for i, spec in enumerate(specs):
         where = f"optimise.objectives[{i}]"
-        if spec.result not in names:
+        result = canonical(spec.result)
+        if result not in names:
             problems.append((f"{where}.result", unknown_result(spec.result, names)))
             continue
-        unit = unit_of(spec.result)
+        unit = unit_of(result)
         if spec.target is None:
-            out.append(Objective(spec.result, SENSES[spec.sense], unit))
+            out.append(Objective(result, SENSES[spec.sense], unit))
             continue
         if "sense" in spec.model_fields_set:
             problems.append((f"{where}.sense", "give either sense or target, not both"))
@@ -77,9 +80,9 @@ def parse_objectives(specs: list[ObjectiveSpec], names: list[str], unit_of) -> t
         try:
             target = to_si(spec.target, Unit(unit, "result"))
         except FieldError as exc:
-            problems.append((f"{where}.target", f"{exc} (for {spec.result}, in {unit or 'no unit'})"))
+            problems.append((f"{where}.target", f"{exc} (for {result}, in {unit or 'no unit'})"))
             continue
-        out.append(Objective(spec.result, "target", unit, target))
+        out.append(Objective(result, "target", unit, target))
     if problems:
         raise ProblemFileError(problems)
     return tuple(out)

@@ -29,6 +29,8 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
+from ..problem.fields import Angle
+
 
 class _Spec(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
@@ -87,3 +89,5 @@ class OptimiseSpec(_Spec):
     tolerance: float = Field(1e-6, gt=0.0, lt=1.0)
     seed: int | None = 1
     positions: int | None = Field(None, ge=8, le=100_000, strict=True)
+    #: a design whose transmission angle comes closer than this to 0 or 180 deg is degenerate (default 10 deg)
+    min_transmission_angle: Angle | None = Field(None, ge=0.0, lt=1.5707963267948966)

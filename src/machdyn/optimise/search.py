@@ -17,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
 from .constraints import CLOSES, violations
 from .evaluate import evaluate
 from .result import History, NoFeasibleDesign
@@ -39,6 +40,10 @@ class Evaluator:
     least_violation: np.ndarray | None = None
     closest: tuple | None = None
     wanted: set = field(default_factory=set)
+    #: the machine the mechanism is ([mechanism] machine), which decides the machine's own results
+    machine: str | None = None
+    #: the threshold [rad] of a degenerate design's poor transmission (the built-in constraint)
+    min_transmission_angle: float = math.radians(DEFAULT_MIN_TRANSMISSION_DEG)
 
     def __post_init__(self) -> None:
         self.wanted = {o.result for o in self.objectives} | {c.result for c in self.constraints}
@@ -47,7 +52,8 @@ class Evaluator:
         """(results, costs N x K, violations N x (1 + C)) of a population."""
         x = np.atleast_2d(np.asarray(population, dtype=float))
         pop = self.space.population(x)
-        results = evaluate(pop.mechanism, self.phi, pop.speed, pop.acceleration, self.wanted, self.about)
+        results = evaluate(pop.mechanism, self.phi, pop.speed, pop.acceleration, self.wanted, self.about,
+                           machine=self.machine, min_transmission_angle=self.min_transmission_angle)
         costs = np.stack([o.cost(results) for o in self.objectives], axis=1)
         viol = violations(self.constraints, results, pop.buildable)
         viol[:, 0] += np.where(np.isfinite(costs).all(axis=1), 0.0, 1.0)

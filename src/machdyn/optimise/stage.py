@@ -12,22 +12,9 @@ from ..pipeline import Capability, Outcome, StageContext
 from ..results.labels import Label
 from .schema import OptimiseSpec
 
-#: Texts of the per-design results an objective or constraint may name (SI units in evaluate.RESULT_UNITS).
-RESULT_TEXTS = {
-    "driving_torque.max_abs": "driving torque, max |T|",
-    "driving_torque.rms": "driving torque, RMS",
-    "input_power.mean": "input power, mean",
-    "shaking_force.max": "shaking force, max",
-    "shaking_moment.max_abs": "shaking moment, max |M|",
-    "transmission_angle.min": "transmission angle, min",
-    "transmission_angle.max": "transmission angle, max",
-    "transmission_angle.worst": "transmission angle, worst (closest to 0 or 180 deg)",
-    "time_ratio": "time ratio (advance / return)",
-    "compactor.plate_angle.max": "compactor: plate angle to the horizontal, max |gamma|",
-    "compactor.k1.min": "compactor: crank force gain k1 = 1/cos alpha, min over the pressing window",
-    "compactor.k2": "compactor: lever force gain k2 = l/a",
-    "compactor.force_gain.min": "compactor: force gain k1 k2, min over the pressing window",
-}
+#: The status columns of the population evaluator: checks of the best design, not results to report.
+STATUS_KEYS = ("assembled", "regular", "assembled_fraction", "dead_point", "branch_change", "near_dead_point",
+               "poor_transmission")
 
 LABELS = {
     "optimise.evaluations": Label("Optimisation: designs evaluated"),
@@ -43,14 +30,12 @@ LABELS = {
 
 
 def _text(key: str) -> str:
-    if key in RESULT_TEXTS:
-        return RESULT_TEXTS[key]
-    parts = key.split(".")
-    if parts[0] == "joint":
-        return f"joint {parts[1]}, max force"
-    if parts[0] == "stroke":
-        return f"stroke of {parts[1]}"
-    return key
+    """The catalogue's text of a result, in lower case after "Best design: "."""
+    from ..results.catalogue import label
+
+    found = label(key)
+    text = found.text if found is not None else key
+    return text[:1].lower() + text[1:]
 
 
 def check(problem: Any, table: OptimiseSpec, source: str | None = None) -> list[tuple[str, str]]:
@@ -97,11 +82,17 @@ def run(ctx: StageContext) -> Outcome:
         labels[key] = Label(f"Best design: {name}", unit, shown)
         summary.append(key)
     asked = [o.result for o in result.objectives] + [c.result for c in result.constraints]
-    for res_key in dict.fromkeys(asked):
+    # The results asked for (in the summary) and the other results of the best design that were computed.
+    computed = [k for k in result.results if k not in STATUS_KEYS]
+    for res_key in dict.fromkeys(asked + computed):
         key = f"optimise.best.{res_key}"
-        scalars[key] = float(result.results.get(res_key, math.nan))
+        value = float(result.results.get(res_key, math.nan))
+        if res_key not in asked and not math.isfinite(value):
+            continue
+        scalars[key] = value
         labels[key] = Label(f"Best design: {_text(res_key)}", result_unit(res_key, mech))
-        summary.append(key)
+        if res_key in asked:
+            summary.append(key)
     summary += ["optimise.evaluations", "optimise.converged", "optimise.verified"]
     h = result.history
     series: dict[str, Any] = {"optimise_history": {

@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import ProblemFileError
+from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
 from .constraints import parse_constraints, violations
 from .evaluate import evaluate, result_names, result_unit
 from .objectives import parse_objectives
@@ -50,7 +51,8 @@ def setup(problem: Any, spec: OptimiseSpec) -> Evaluator:
     except ProblemFileError as exc:
         problems += exc.problems
     mech = build_mechanism(problem)
-    names = result_names(mech)
+    machine = getattr(problem.mechanism, "machine", None)
+    names = result_names(mech, machine)
 
     def unit_of(key):
         return result_unit(key, mech)
@@ -71,7 +73,10 @@ def setup(problem: Any, spec: OptimiseSpec) -> Evaluator:
         # The drive's own crank range, sampled at the search's number of positions.
         problem = problem.model_copy(update={"drive": problem.drive.model_copy(update={"positions": spec.positions})})
     phi = crank_angles(problem)
-    return Evaluator(space, objectives, constraints, phi, tuple(problem.output.shaking_moment_about))
+    lowest = spec.min_transmission_angle
+    return Evaluator(space, objectives, constraints, phi, tuple(problem.output.shaking_moment_about),
+                     machine=machine, min_transmission_angle=(
+                         float(lowest) if lowest is not None else math.radians(DEFAULT_MIN_TRANSMISSION_DEG)))
 
 
 def _show(constraint):
@@ -138,14 +143,15 @@ def verify(problem: Any, ev: Evaluator) -> tuple[dict[str, float], bool]:
     from ..problem.build import build_mechanism
 
     mech = build_mechanism(problem)
-    wanted = set(result_names(mech)) & (ev.wanted | _all_cheap(mech))
-    res = evaluate(mech, ev.phi, problem.drive.speed, problem.drive.acceleration, wanted, ev.about)
+    wanted = set(result_names(mech, ev.machine)) & (ev.wanted | _all_cheap(mech, ev.machine))
+    res = evaluate(mech, ev.phi, problem.drive.speed, problem.drive.acceleration, wanted, ev.about,
+                   machine=ev.machine, min_transmission_angle=ev.min_transmission_angle)
     viol = violations(ev.constraints, res, np.array([True]))
     results = {k: float(np.asarray(v)[0]) for k, v in res.items()}
     return results, bool(np.all(viol <= VERIFY_TOLERANCE))
 
 
-def _all_cheap(mech) -> set[str]:
+def _all_cheap(mech, machine=None) -> set[str]:
     """The kinematic results, reported for the best design whether asked for or not."""
-    return {k for k in result_names(mech) if k.startswith(("stroke.", "transmission_angle", "time_ratio",
+    return {k for k in result_names(mech, machine) if k.startswith(("stroke.", "transmission_angle", "time_ratio",
                                                             "compactor."))}

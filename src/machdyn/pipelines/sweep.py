@@ -10,20 +10,16 @@ import numpy as np
 
 from ..errors import ProblemFileError
 from ..pipeline import Outcome, StageContext
+from ..results.catalogue import label
 from ..results.labels import Label
 
-#: Per-design summaries of a sweep: (attribute of SweepResult, label, SI unit).
-SWEEP_SUMMARIES = (
-    ("max_driving_torque", "Peak driving torque", "N*m"),
-    ("rms_driving_torque", "RMS driving torque", "N*m"),
-    ("mean_input_power", "Mean input power", "W"),
-    ("max_shaking_force", "Peak shaking force", "N"),
-    ("max_shaking_moment", "Peak shaking moment", "N*m"),
-)
+#: The per-design results a sweep ranks its designs by in the summary (the lowest of each is named).
+RANKED = ("driving_torque.max_abs", "frame_force.max")
 
-LABELS = {f"sweep.{attr}": Label(f"Sweep: {text.lower()} of each design", unit) for attr, text, unit in SWEEP_SUMMARIES}
-LABELS |= {
-    "sweep.regular": Label("Sweep: each design regular (assembles, no dead position)"),
+LABELS = {
+    "sweep.regular": Label("Sweep: each design regular (assembles, no dead point, branch change, near dead point "
+                           "or poor transmission)"),
+    "sweep.status": Label("Sweep: status of each design (regular or its first fault)"),
     "sweep.designs": Label("Sweep: designs"),
     "sweep.regular_count": Label("Sweep: regular designs"),
 }
@@ -31,11 +27,12 @@ LABELS |= {
 
 @dataclass(frozen=True)
 class SweepRun:
-    """A sweep's plan (parameter, values), the engine's per-design summaries and a few designs analysed one
-    by one for playback (:mod:`machdyn.pipelines.design_views`)."""
+    """A sweep's plan (parameter, values) and the per-design columns (catalogue keys, SI; the status columns
+    ``assembled``, ``regular``, ``status``... among them)."""
 
     plan: Any
-    result: Any
+    columns: dict[str, np.ndarray]
+    units: dict[str, str]
     views: tuple = ()
 
 
@@ -65,8 +62,9 @@ def check(problem: Any, _table: Any, source: str | None = None) -> list[tuple[st
 
 
 def run_sweep(problem: Any) -> SweepRun:
-    """The design variants of a problem's ``[sweep]``, analysed together."""
-    from ..linkage import stack_designs, sweep
+    """The design variants of a problem's ``[sweep]``, evaluated together by the population evaluator."""
+    from ..linkage import stack_designs
+    from ..results.population import evaluate_population, result_unit, sweep_columns
     from .linkage_run import crank_range
 
     plan, mechs = variants(problem)
@@ -79,24 +77,20 @@ def run_sweep(problem: Any) -> SweepRun:
         raise ProblemFileError([("sweep", "a sweep of the drive needs a number of values different from "
                                           f"drive.positions ({np.size(angles)}); got as many")])
     about = tuple(problem.output.shaking_moment_about)
-    result = sweep(stack_designs(mechs), angles, speed, accel, shaking_about=about)
-    return SweepRun(plan, _per_variant(result, len(plan.problems)))
+    mech = stack_designs(mechs)
+    machine = getattr(problem.mechanism, "machine", None)
+    wanted = sweep_columns(mech, machine)
+    columns = evaluate_population(mech, angles, speed, accel, wanted, about=about, machine=machine,
+                                  min_transmission_angle=problem.sweep.transmission_limit)
+    n = len(plan.problems)
+    # Variants that are all alike stack into one design: one entry per variant all the same.
+    columns = {k: np.broadcast_to(np.asarray(v), (n,)).copy() for k, v in columns.items()}
+    units = {k: result_unit(k, mech) for k in columns}
+    return SweepRun(plan, columns, units)
 
 
-def _per_variant(result: Any, n: int) -> Any:
-    """The summaries with one entry per variant: variants that are all alike stack into one design."""
-    from dataclasses import fields, replace
-
-    if np.size(result.regular) == n:
-        return result
-
-    def spread(values: Any) -> np.ndarray:
-        return np.broadcast_to(np.asarray(values).ravel(), (n,)).copy()
-
-    changes: dict[str, Any] = {f.name: spread(getattr(result, f.name)) for f in fields(result)
-                               if isinstance(getattr(result, f.name), np.ndarray)}
-    changes["max_joint_force"] = {k: spread(v) for k, v in result.max_joint_force.items()}
-    return replace(result, **changes)
+def _shown(values: np.ndarray) -> list:
+    return [v if isinstance(v, str | bool) else float(v) for v in np.asarray(values).tolist()]
 
 
 def _played(done: SweepRun) -> SweepRun:
@@ -107,7 +101,7 @@ def _played(done: SweepRun) -> SweepRun:
     from .design_views import MAX_VIEWS, analysed, design_problem
 
     plan = done.plan
-    regular = np.flatnonzero(np.asarray(done.result.regular, dtype=bool))
+    regular = np.flatnonzero(np.asarray(done.columns["regular"], dtype=bool))
     if not regular.size:
         return done
     chosen = regular[np.unique(np.linspace(0, regular.size - 1, min(MAX_VIEWS, regular.size)).round().astype(int))]
@@ -122,44 +116,50 @@ def _played(done: SweepRun) -> SweepRun:
 
 def run(ctx: StageContext) -> Outcome:
     done = _played(run_sweep(ctx.problem))
-    plan, res = done.plan, done.result
+    plan, cols = done.plan, done.columns
     unit = plan.display_unit
-    regular = np.asarray(res.regular, dtype=bool)
+    regular = np.asarray(cols["regular"], dtype=bool)
     values: dict[str, Any] = {
         f"sweep.{plan.parameter}": [float(v) for v in plan.values_display],
         "sweep.regular": [bool(v) for v in regular],
+        "sweep.status": [str(v) for v in cols["status"]],
         "sweep.designs": float(regular.size),
         "sweep.regular_count": float(regular.sum()),
     }
     labels = {f"sweep.{plan.parameter}": Label(f"Sweep: values of {plan.parameter}", unit, unit)}
-    for attr, _label, _u in SWEEP_SUMMARIES:
-        values[f"sweep.{attr}"] = [float(v) for v in getattr(res, attr)]
+    units: dict[str, str] = {}
+    for key, data in cols.items():
+        if key in ("regular", "status") or key.startswith("sweep."):
+            continue
+        values[f"sweep.{key}"] = _shown(data)
+        found = label(key, done.units.get(key))
+        text = found.text if found is not None else key
+        labels[f"sweep.{key}"] = Label(f"Sweep: {text[:1].lower() + text[1:]} of each design",
+                                       done.units.get(key, ""), found.display if found is not None else None)
     summary = ["sweep.designs", "sweep.regular_count"]
     warnings = []
     if regular.any():
-        for attr, text, u in (SWEEP_SUMMARIES[0], SWEEP_SUMMARIES[3]):
-            data = np.where(regular, getattr(res, attr), np.inf)
+        for key in RANKED:
+            data = np.where(regular, cols[key], np.inf)
             best = int(np.argmin(data))
-            key = f"sweep.lowest_{attr}"
-            values[key] = float(data[best])
+            out = f"sweep.lowest_{key}"
+            values[out] = float(data[best])
             # Designs within round-off of the best tie: name them all rather than pick one arbitrarily.
             ties = np.flatnonzero(data <= data[best] + 1e-9 * max(abs(data[best]), 1e-300))
             at = ", ".join(f"{plan.values_display[i]:.6g}" for i in ties[:5]) + (" ..." if ties.size > 5 else "")
             where = (f"at {plan.parameter} = {at} {unit}" if ties.size == 1
                      else f"{ties.size} designs tie, at {plan.parameter} = {at} {unit}")
-            labels[key] = Label(f"Sweep: lowest {text.lower()} ({where})", u)
-            summary.append(key)
+            text = label(key).text  # type: ignore[union-attr]
+            labels[out] = Label(f"Sweep: lowest {text[:1].lower() + text[1:]} ({where})", done.units[key])
+            summary.append(out)
     else:
-        warnings.append(f"No design of the sweep of {plan.parameter} is regular: each fails to assemble or passes "
-                        "a dead position somewhere in the crank range.")
+        warnings.append(f"No design of the sweep of {plan.parameter} is regular: each fails to assemble, passes or "
+                        "nears a dead point, changes branch or transmits poorly somewhere in the crank range "
+                        "(see sweep.status).")
     columns: dict[str, tuple[Any, str]] = {
         plan.parameter: (np.asarray(plan.values_display, dtype=float), unit),
-        "assembled": (np.asarray(res.assembled), ""),
-        "regular": (regular, ""),
     }
-    for attr, _label, u in SWEEP_SUMMARIES:
-        columns[attr] = (getattr(res, attr), u)
-    for joint, data in res.max_joint_force.items():
-        columns[f"joint.{joint}.max_force"] = (data, "N")
-    return Outcome(results=done, scalars=values, labels=labels, series={"sweep": columns}, summary=tuple(summary),
-                   warnings=tuple(warnings))
+    for key, data in cols.items():
+        columns[key] = (data, done.units.get(key, ""))
+    return Outcome(results=done, scalars=values, labels=labels, units=units, series={"sweep": columns},
+                   summary=tuple(summary), warnings=tuple(warnings))

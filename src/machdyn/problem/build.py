@@ -13,12 +13,13 @@ from dataclasses import replace
 
 import numpy as np
 
+from ..constants import DOWNWARD_GRAVITY
 from ..errors import InputError, ProblemFileError
 from ..linkage.stroke_loads import stroke_load
 from .errors import did_you_mean
 from .schema import CustomSpec, DoubleCrankSpec, LinkageProblem, LinkSpec
 
-STANDARD_GRAVITY = (0.0, -9.80665)
+STANDARD_GRAVITY = DOWNWARD_GRAVITY
 
 
 def crank_angles(problem: LinkageProblem) -> np.ndarray:
@@ -124,6 +125,19 @@ def _override(body, spec) -> object:
     return replace(body, **changes) if changes else body
 
 
+def _machine_problems(spec, mech) -> list[tuple[str, str]]:
+    """The problems of ``[mechanism] machine``: a compactor must be a four-bar with a coupler point (its plate
+    and the point where the plate presses)."""
+    if getattr(spec, "machine", None) != "compactor":
+        return []
+    from ..results.population import compactor_plate
+
+    if compactor_plate(mech) is not None:
+        return []
+    return [("mechanism.machine", "'compactor' needs a four-bar (type = \"four_bar\") with a coupler point "
+                                  "(coupler_point = [x, y]), the point of the plate where the material is pressed")]
+
+
 def build_mechanism(problem: LinkageProblem):
     """The :class:`~machdyn.linkage.model.Mechanism` a linkage problem describes.
 
@@ -141,9 +155,9 @@ def build_mechanism(problem: LinkageProblem):
         bodies = tuple(_override(b, by_name[b.name]) if b.name in by_name else b for b in mech.bodies)
         mech = replace(mech, bodies=bodies)
 
+    problems: list[tuple[str, str]] = _machine_problems(spec, mech)
     body_names = [b.name for b in mech.bodies]
     points = [f"ground.{g}" for g in mech.ground] + [f"{b.name}.{p}" for b in mech.bodies for p in b.points]
-    problems: list[tuple[str, str]] = []
 
     def need_point(path: str, ref: str) -> None:
         if ref not in points:

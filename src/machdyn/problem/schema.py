@@ -120,6 +120,9 @@ class DoubleCrankSpec(Spec):
 class _MechanismBase(Spec):
     name: Name | None = None
     linear_density: LinearDensity = 1.0
+    #: The machine the mechanism is: "compactor" (a four-bar whose coupler is the compaction plate and whose
+    #: coupler point is where it presses) adds the compactor's results (docs/results.md).
+    machine: Literal["compactor"] | None = None
 
 
 def _standard_spec(declaration: StandardMechanism) -> type[Spec]:

@@ -27,6 +27,7 @@ evaluated in bounded memory, written to Parquet, optionally on a Dask cluster.
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass
 from typing import Any, Literal
@@ -35,20 +36,22 @@ import numpy as np
 from pydantic import BaseModel, Field, field_validator, model_validator
 
 from ..errors import ProblemFileError
+from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
 from .errors import did_you_mean
-from .fields import FieldError, Unit, to_si
+from .fields import Angle, FieldError, Unit, to_si
 from .paths import assign, quantity_unit
 
 #: At most this many designs in one sweep (grids and samples alike).
 MAX_DESIGNS = 100_000_000
 
-#: The per-design summaries an exploration can rank its designs by (``joint.<name>.max_force`` also works).
-OBJECTIVES = ("max_driving_torque", "rms_driving_torque", "mean_input_power", "max_shaking_force",
-              "max_shaking_moment")
+#: The objective an exploration ranks its designs by unless ``objective`` names another per-design result of
+#: the catalogue (:mod:`machdyn.results.catalogue`; old names such as ``max_driving_torque`` are accepted).
+DEFAULT_OBJECTIVE = "driving_torque.max_abs"
 
 #: Keys of ``[sweep]`` that make it a design-space exploration (a one-quantity ``parameter`` sweep has none).
 EXPLORATION_KEYS = ("quantities", "method", "samples", "seed", "partition", "objective", "scheduler", "workers",
                     "store")
+
 
 
 def _values_rule(where: str, method: str, values, start, stop, count) -> None:
@@ -102,6 +105,7 @@ class SweepSpec(BaseModel):
     scheduler: str | None = None
     workers: int | None = Field(None, ge=1, le=512, strict=True)
     store: str | None = Field(None, min_length=1)
+    min_transmission_angle: Angle | None = None
 
     @field_validator("scheduler")
     @classmethod
@@ -129,11 +133,19 @@ class SweepSpec(BaseModel):
             raise ValueError("samples is for method = 'lhs' or 'sobol'; a grid takes every combination of values")
         if method != "grid" and self.samples is None:
             raise ValueError(f"method = '{method}' needs samples = <number of designs>")
-        goal = self.goal
-        if goal not in OBJECTIVES and not re.fullmatch(r"joint\.\w+\.max_force", goal):
-            hint = did_you_mean(goal, list(OBJECTIVES))
-            raise ValueError(f"objective must be one of {', '.join(OBJECTIVES)} or joint.<name>.max_force; "
-                             f"got '{goal}'{hint}")
+        if self.objective is not None:
+            from ..results.catalogue import find
+
+            found = find(self.goal)
+            if found is None or not found[0].group or found[0].kind != "number" or found[0].group == "status":
+                hint = did_you_mean(self.objective, _objective_names())
+                raise ValueError("objective must name a per-design result (a key of docs/results.md such as "
+                                 "driving_torque.max_abs, frame_force.max or joint.<name>.max_force); got "
+                                 f"'{self.objective}'{hint}")
+        lowest = self.min_transmission_angle
+        if lowest is not None and not 0.0 <= lowest < math.pi / 2:
+            raise ValueError(f"min_transmission_angle must be at least 0 deg and below 90 deg; got "
+                             f"{math.degrees(lowest):g} deg")
         return self
 
     @property
@@ -148,8 +160,25 @@ class SweepSpec(BaseModel):
 
     @property
     def goal(self) -> str:
-        """The per-design summary that ranks the designs (lowest is best): ``objective`` or the peak torque."""
-        return self.objective or OBJECTIVES[0]
+        """The per-design result that ranks the designs (lowest is best): ``objective`` (its catalogue key) or
+        the peak driving torque."""
+        from ..results.catalogue import canonical
+
+        return canonical(self.objective) if self.objective else DEFAULT_OBJECTIVE
+
+    @property
+    def transmission_limit(self) -> float:
+        """The threshold [rad] of ``poor_transmission``: ``min_transmission_angle`` or the default 10 deg."""
+        if self.min_transmission_angle is not None:
+            return float(self.min_transmission_angle)
+        return math.radians(DEFAULT_MIN_TRANSMISSION_DEG)
+
+
+def _objective_names() -> list[str]:
+    """The keys an objective may name, and the old names still accepted."""
+    from ..results.catalogue import ALIASES, population_quantities
+
+    return [q.key for q in population_quantities("compactor") if not q.is_pattern] + list(ALIASES)
 
 
 @dataclass(frozen=True)

@@ -413,16 +413,17 @@ def plot_sweep(
 ) -> Axes:
     """A per-design summary of a design sweep (:func:`machdyn.linkage.sweep`) against the swept parameter.
 
-    Designs that are not regular (cannot assemble, or pass a dead position) have no summary and are marked
-    with a cross on the axis."""
+    Designs that are not regular (cannot assemble, pass or near a dead position, change branch, transmit
+    poorly) have no summary and are marked with a cross at the foot of the axes, so that the value axis scales
+    to the regular designs alone."""
     x = np.asarray(values, dtype=float)
     y = np.asarray(summary, dtype=float)
     ok = np.isfinite(y) if regular is None else np.asarray(regular, dtype=bool) & np.isfinite(y)
     ax.plot(x[ok], y[ok], color=colour, linewidth=1.7, marker="o" if ok.sum() <= 40 else None, markersize=3.5,
             label=quantity)
     if np.any(~ok):
-        ax.plot(x[~ok], np.zeros(int((~ok).sum())), linestyle="none", marker="x", color=PALETTE[1],
-                label="not regular (no summary)")
+        ax.plot(x[~ok], np.full(int((~ok).sum()), 0.02), linestyle="none", marker="x", color=PALETTE[1],
+                transform=ax.get_xaxis_transform(), label="not regular (no summary)")
     ax.set_xlabel(f"{parameter} [{parameter_unit}]")
     ax.set_ylabel(f"{quantity} [{unit}]")
     ax.grid(True, alpha=0.35)

@@ -29,20 +29,29 @@ def _rows_of(views: Iterable[Any], designs: Any) -> dict[int, dict[str, Any]]:
 
 
 def sweep_space(done: Any) -> Markup:
-    """The interactive scatter of a one-quantity ``[sweep]`` (:class:`machdyn.pipelines.sweep.SweepRun`)."""
-    from ..pipelines.sweep import SWEEP_SUMMARIES
+    """The interactive scatter of a one-quantity ``[sweep]`` (:class:`machdyn.pipelines.sweep.SweepRun`): every
+    per-design column of the catalogue, in its display unit, against the swept value."""
+    from ..results.catalogue import label
+    from ..results.labels import display_factor
 
-    plan, res = done.plan, done.result
+    plan = done.plan
     values = np.asarray(plan.values_display, dtype=float)
     table: dict[str, Any] = {"design": np.arange(values.size), plan.parameter: values}
     units = {plan.parameter: plan.display_unit}
-    for attr, text, unit in SWEEP_SUMMARIES:
-        table[text] = np.asarray(getattr(res, attr), dtype=float)
-        units[text] = unit
-    first = SWEEP_SUMMARIES[0][1]
-    status = ["regular" if r else "not regular (fails to assemble or passes a dead position)"
-              for r in np.asarray(res.regular, dtype=bool)]
-    return design_space_html(table, units, x=plan.parameter, y=first, status=status,
+    for key, data in done.columns.items():
+        arr = np.asarray(data)
+        if arr.dtype.kind not in "fiu" or key in ("assembled", "regular") or arr.shape != values.shape:
+            continue
+        lab = label(key, done.units.get(key))
+        shown = lab.shown_unit if lab is not None else done.units.get(key, "")
+        table[key] = arr.astype(float) * display_factor(done.units.get(key, ""), shown)
+        units[key] = shown
+    status_column = done.columns.get("status")
+    regular = np.asarray(done.columns["regular"], dtype=bool)
+    status = [("regular" if r else "not regular") if status_column is None else str(status_column[i])
+              for i, r in enumerate(regular)]
+    y = "driving_torque.max_abs" if "driving_torque.max_abs" in table else next(iter(units))
+    return design_space_html(table, units, x=plan.parameter, y=y, status=status,
                              scenes=_rows_of(done.views, table["design"]),
                              highlight={v.label: v.design for v in done.views[:1]},
                              caption="Each dot is a variant of the sweep: hover for its numbers, click to open it. "

@@ -1,4 +1,4 @@
-"""The report section of a design sweep: per-design summaries against the swept parameter, and a table."""
+"""The report section of a design sweep: per-design results against the swept parameter, and a table."""
 
 from __future__ import annotations
 
@@ -7,9 +7,15 @@ from typing import Any
 import numpy as np
 from markupsafe import escape
 
+from ..results.catalogue import label
+from ..results.labels import display_factor
 from . import plots
-from .html import _render, format_value
+from .html import _render, format_value, pretty_unit
 from .spaces import sweep_space
+
+#: The per-design results plotted and tabulated (catalogue keys); the full table is sweep.csv.
+PANELS = ("driving_torque.max_abs", "driving_torque.rms", "frame_force.max", "inertial_shaking_force.max",
+          "shaking_moment.max_abs", "transmission_angle.worst")
 
 
 def sections(outcome: Any) -> list[tuple[str, str]]:
@@ -17,38 +23,48 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
     run = outcome.results
     plan = run.plan
     return [(f"Design sweep of {plan.parameter}",
-             sweep_space(run) + sweep_section(plan.parameter, plan.display_unit, plan.values_display, run.result))]
+             sweep_space(run) + sweep_section(plan.parameter, plan.display_unit, plan.values_display, run.columns,
+                                              run.units))]
 
 
-def sweep_section(parameter: str, unit: str, values: Any, result: Any) -> str:
-    """An HTML fragment for a design sweep: the per-design summaries plotted against the swept parameter and
-    tabulated (the full table is also written as sweep.csv)."""
-    panels = [
-        ("Peak driving torque", "N·m", result.max_driving_torque),
-        ("RMS driving torque", "N·m", result.rms_driving_torque),
-        ("Peak shaking force", "N", result.max_shaking_force),
-        ("Peak shaking moment", "N·m", result.max_shaking_moment),
-    ]
+def _panel(key: str, columns: dict, units: dict) -> tuple[str, str, np.ndarray]:
+    """(label, display unit, values in it) of a per-design result."""
+    lab = label(key, units.get(key))
+    text = lab.text if lab is not None else key
+    unit = lab.shown_unit if lab is not None else units.get(key, "")
+    factor = display_factor(units.get(key, ""), unit)
+    return text, pretty_unit(unit), np.asarray(columns[key], dtype=float) * factor
+
+
+def sweep_section(parameter: str, unit: str, values: Any, columns: dict, units: dict) -> str:
+    """An HTML fragment for a design sweep: the per-design results plotted against the swept parameter and
+    tabulated (the full table is also written as sweep.csv). Only regular designs are drawn, so the axes scale
+    to them; the others are marked on the axis and their status is in the table."""
+    regular = np.asarray(columns["regular"], dtype=bool)
+    panels = [_panel(k, columns, units) for k in PANELS if k in columns]
 
     def draw(fig):
-        axes = fig.subplots(2, 2)
-        for ax, (name, u, data) in zip(axes.ravel(), panels, strict=True):
+        rows = (len(panels) + 1) // 2
+        axes = np.atleast_1d(fig.subplots(rows, 2)).ravel()
+        for ax, (name, u, data) in zip(axes, panels, strict=False):
             plots.plot_sweep(ax, values, data, parameter=parameter, parameter_unit=unit, quantity=name, unit=u,
-                       regular=result.regular)
+                             regular=regular)
+        for ax in axes[len(panels):]:
+            ax.set_visible(False)
 
-    figure = _render("sweep", "Design sweep", "", (9.0, 6.4), draw, margins=(0.85, 0.25, 0.6, 0.4),
-                     wspace=0.35, hspace=0.55)
+    figure = _render("sweep", "Design sweep", "", (9.0, 3.2 * ((len(panels) + 1) // 2)), draw,
+                     margins=(0.85, 0.25, 0.6, 0.4), wspace=0.35, hspace=0.55)
     head = "".join(f"<th>{escape(h)}</th>" for h in
-                   [f"{parameter} [{unit}]", "regular"] + [f"{n} [{u}]" for n, u, _ in panels])
+                   [f"{parameter} [{unit}]", "status"] + [f"{n} [{u}]" for n, u, _ in panels])
     rows = []
     for i, v in enumerate(np.asarray(values, dtype=float)):
-        cells = [format_value(float(v)), "yes" if result.regular[i] else "no"]
+        cells = [format_value(float(v)), str(columns["status"][i])]
         cells += [format_value(float(data[i])) if np.isfinite(data[i]) else "–" for _, _, data in panels]
         rows.append("<tr>" + "".join(f"<td>{escape(c)}</td>" for c in cells) + "</tr>")
     shown = rows[:200]
     note = (f"<p>First 200 of {len(rows)} designs; all are in sweep.csv.</p>" if len(rows) > 200 else "")
-    regular = int(np.sum(result.regular))
     intro = (f"<p>{len(rows)} variants of <code>{escape(parameter)}</code>, analysed together over the same crank "
-             f"positions; {regular} regular (assemble everywhere and pass no dead position).</p>")
+             f"positions; {int(regular.sum())} regular (assemble everywhere, pass no dead point and keep clear of "
+             "one, change no branch, transmit force at an angle above the threshold).</p>")
     return (f"{intro}<figure class=\"plot\">{figure.svg}</figure>{note}"
             f"<table class=\"figures\"><thead><tr>{head}</tr></thead><tbody>{''.join(shown)}</tbody></table>")

@@ -7,7 +7,8 @@ all show; :mod:`.linkage` computes the scalar results of a linkage analysis.
 
 from __future__ import annotations
 
-from .labels import Label, label_for
+from .catalogue import label_for
+from .labels import Label
 from .store import Results, collect
 from .summary import Summary, SummaryRow, summarise
 

@@ -1,8 +1,10 @@
 """The scalar results of a linkage analysis, in SI, computed once for every output.
 
-Extremes of the time series (torque, power, joint forces, shaking force and moment, energy, reduced inertia),
+Extremes of the time series (torque, power, joint forces, frame force, inertial shaking force and moment, the
+shaking moment on the frame, energy, reduced inertia),
 time means and RMS, the energy a flywheel must store, the work balance, harmonics of the driving torque and the
-shaking loads, and the diagnostics (strokes, time ratio, transmission angles, dead positions). For N design
+shaking loads, the diagnostics (strokes, time ratio, transmission angles, dead positions) and the Grashof
+margin and class of a four-bar. Every key is declared in :mod:`machdyn.results.catalogue`. For N design
 variants each value is a list of N floats.
 """
 
@@ -17,47 +19,17 @@ import numpy as np
 
 from ..linkage import model as _model
 from ..linkage.averages import time_mean, time_rms
+from .catalogue import MECHANISM, labels
 from .labels import Label
 
-#: Labels of the linkage results (the keys made at run time are labelled by patterns in .labels).
-LINKAGE_LABELS: dict[str, Label] = {
-    "crank_speed.mean": Label("Crank speed, mean", "rad/s"),
-    "driving_torque.max_abs": Label("Driving torque, max |T|", "N*m"),
-    "driving_torque.max": Label("Driving torque, maximum", "N*m"),
-    "driving_torque.min": Label("Driving torque, minimum", "N*m"),
-    "driving_torque.mean": Label("Driving torque, mean", "N*m", zero_below="driving_torque.max_abs"),
-    "driving_torque.rms": Label("Driving torque, RMS", "N*m"),
-    "input_power.mean": Label("Input power, mean", "W", zero_below="input_power.max"),
-    "input_power.max": Label("Input power, maximum", "W"),
-    "input_power.min": Label("Input power, minimum (negative: power flows back into the drive)", "W"),
-    "inertial_shaking_force.max": Label("Shaking force, inertial (-sum m a_G), max", "N"),
-    "shaking_force.max": Label("Frame force, max (inertia, process loads and weight)", "N"),
-    "shaking_moment.max_abs": Label("Shaking moment about the origin, max |M|", "N*m",
-                                    zero_below="driving_torque.max_abs"),
-    "shaking_moment.about_x": Label("Shaking moment reference point, x", "m"),
-    "shaking_moment.about_y": Label("Shaking moment reference point, y", "m"),
-    "kinetic_energy.max": Label("Kinetic energy, max", "J"),
-    "kinetic_energy.min": Label("Kinetic energy, min", "J"),
-    "kinetic_energy.fluctuation": Label("Kinetic energy, fluctuation (max - min)", "J"),
-    "reduced_inertia.min": Label("Reduced inertia at the crank, minimum", "kg*m^2"),
-    "reduced_inertia.max": Label("Reduced inertia at the crank, maximum", "kg*m^2"),
-    "reduced_inertia.mean": Label("Reduced inertia at the crank, mean", "kg*m^2"),
-    "flywheel.energy_fluctuation": Label("Energy to store in a flywheel (constant speed)", "J"),
-    "work_balance.input_work": Label("Work balance: input work", "J"),
-    "work_balance.load_work": Label("Work balance: work of the loads", "J"),
-    "work_balance.energy_change": Label("Work balance: energy change", "J"),
-    "work_balance.residual": Label("Work balance: residual", "J"),
-    "work_balance.relative_residual": Label("Work balance, relative residual", ""),
-    "time_ratio": Label("Time ratio (advance / return)", ""),
-    "transmission_angle.min": Label("Transmission angle, min", "rad"),
-    "transmission_angle.max": Label("Transmission angle, max", "rad"),
-    "dead_positions.count": Label("Dead positions (count)", ""),
-}
+#: Labels of the linkage results, from the catalogue (the keys made at run time are labelled by its patterns).
+LINKAGE_LABELS: dict[str, Label] = labels(MECHANISM)
 
 #: The keys of a linkage analysis shown in the summary, in order (joints and strokes follow).
 LINKAGE_SUMMARY = (
     "driving_torque.max_abs", "driving_torque.rms", "driving_torque.mean", "input_power.mean", "input_power.max",
-    "input_power.min", "inertial_shaking_force.max", "shaking_force.max", "shaking_moment.max_abs",
+    "input_power.min", "inertial_shaking_force.max", "inertial_shaking_moment.max_abs", "frame_force.max",
+    "shaking_moment.max_abs",
     "kinetic_energy.max", "kinetic_energy.min", "kinetic_energy.fluctuation", "flywheel.energy_fluctuation",
     "time_ratio", "transmission_angle.min", "transmission_angle.max", "work_balance.relative_residual",
 )
@@ -193,13 +165,16 @@ def linkage_scalars(
     for name, _kind, _b1, _b2 in joint_list(forces):
         out[f"joint.{name}.max_force"] = _reduce(forces.joint(name).magnitude, "max", designs)
     fx, fy = forces.frame_force
-    out["shaking_force.max"] = _reduce(np.hypot(fx, fy), "max", designs)
-    # The inertial shaking force alone (what balancing removes), apart from the process loads and the weight
-    # the frame also carries: -M a_G of the whole moving mechanism.
+    out["frame_force.max"] = _reduce(np.hypot(fx, fy), "max", designs)
+    # The inertial shaking force and moment alone (what balancing removes), apart from the process loads and the
+    # weight the frame also carries: -M a_G of the whole moving mechanism and the moment of the d'Alembert loads.
     from ..linkage import inertial_force
+    from ..linkage.mass_centre import inertial_shaking_moment
 
     ix, iy = inertial_force(kin)  # zero for a massless (statics) model, which has no centre of mass
     out["inertial_shaking_force.max"] = _reduce(np.hypot(ix, iy), "max", designs)
+    out["inertial_shaking_moment.max_abs"] = _reduce(inertial_shaking_moment(kin, (about[0], about[1])), "max_abs",
+                                                     designs)
     out["shaking_moment.max_abs"] = _reduce(forces.shaking_moment(about=tuple(about)), "max_abs", designs)
     if tuple(about) != (0.0, 0.0):
         out["shaking_moment.about_x"], out["shaking_moment.about_y"] = float(about[0]), float(about[1])
@@ -242,6 +217,9 @@ def linkage_scalars(
             out["transmission_angle.min"] = _scalar(diag.transmission_angle_min, designs)
         if getattr(diag, "transmission_angle_max", None) is not None:
             out["transmission_angle.max"] = _scalar(diag.transmission_angle_max, designs)
+        if getattr(diag, "transmission_angle_min", None) is not None and np.isfinite(diag.transmission_angle_min):
+            out["transmission_angle.worst"] = _scalar(min(diag.transmission_angle_min,
+                                                          math.pi - diag.transmission_angle_max), designs)
         # With more than one slider (the double slider-crank), each slider's own figures, named by it.
         per_slider = [b for b in (getattr(diag, "strokes", None) or {}) if b in sliders]
         if len(per_slider) > 1:
@@ -261,6 +239,12 @@ def linkage_scalars(
         dead = getattr(diag, "dead_positions", None)
         if dead is not None:
             out["dead_positions.count"] = float(len(list(_flatten(dead))))
+    if mech is not None:
+        from ..linkage.grashof import grashof_margin
+
+        margin = grashof_margin(mech)
+        if margin is not None:  # the class itself (text) is in the diagnostics and a sweep's columns
+            out["grashof.margin"] = _scalar(margin, designs)
     if harmonic_orders > 0 and designs is None:
         values, hunits = harmonic_scalars(analysis, (float(about[0]), float(about[1])), harmonic_orders)
         out.update(values)
@@ -282,8 +266,8 @@ def harmonic_scalars(analysis: Any, about: tuple[float, float], orders: int) -> 
     series = {
         "driving_torque": (analysis.forces.driving_torque, "N*m"),
         "shaking_moment": (analysis.forces.shaking_moment(about=about), "N*m"),
-        "shaking_force.fx": (analysis.forces.frame_force[0], "N"),
-        "shaking_force.fy": (analysis.forces.frame_force[1], "N"),
+        "frame_force.fx": (analysis.forces.frame_force[0], "N"),
+        "frame_force.fy": (analysis.forces.frame_force[1], "N"),
     }
     for name, (data, unit) in series.items():
         if not np.all(np.isfinite(data)):

@@ -6,7 +6,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from .labels import Label, display_factor, label_for
+from .catalogue import label_for
+from .labels import Label, display_factor
 
 
 def _scaled(value: Any, factor: float) -> Any:

@@ -21,9 +21,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..constants import STANDARD_GRAVITY
 from ..errors import InputError, check_finite
-
-STANDARD_GRAVITY = 9.80665  # m/s^2 (ISO 80000-3)
 
 __all__ = [
     "STANDARD_GRAVITY",

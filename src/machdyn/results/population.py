@@ -1,0 +1,433 @@
+"""Per-design results of a population of designs: the one function a sweep, an exploration and the optimiser
+evaluate designs with, under the keys of :mod:`machdyn.results.catalogue`.
+
+A mechanism with a designs axis (N designs) is evaluated over the crank angles in groups, each computed only
+when one of its results is wanted:
+
+- ``forces``: one call of :func:`machdyn.linkage.sweep` (kinetostatics summarised per design, compiled when
+  numba is present): peak and RMS driving torque, mean input power, frame force, shaking moment, joint peaks;
+- ``motion``: kinematics in chunks of designs: transmission angles, strokes and time ratios of the outputs, the
+  inertial shaking force and moment, the compactor's figures;
+- ``geometry``: the Grashof margin and class of a four-bar, from its link lengths;
+- ``analysis``: the full analysis of the regular designs (:func:`machdyn.linkage.analyse`) reduced by the same
+  function as a run (:func:`machdyn.results.linkage.linkage_scalars`): energy, reduced inertia, work balance...
+
+and always the checks of each design (``status`` group): ``assembled``, ``dead_point``, ``branch_change``,
+``near_dead_point``, ``poor_transmission`` (worst transmission angle below ``min_transmission_angle``, default
+:data:`DEFAULT_MIN_TRANSMISSION_DEG`), ``regular`` (none of them) and ``status`` (the first fault's name). The
+results of a design that is not regular are NaN (but for the Grashof margin and class, which tell why): a
+degenerate design never counts as a regular one with enormous forces.
+
+Compactor results (seed 003, Asfandiyarov et al., 2019, for ``machine = "compactor"``: a four-bar whose
+coupler is the compaction plate and whose coupler point P is where it presses):
+
+- ``compactor.plate_angle.max`` = max over the cycle of |gamma|, gamma = the plate's angle to the horizontal
+  (corrected eq 10; the design rule gamma < 20 deg, conclusion 2a);
+- ``compactor.k1.min`` = min over the pressing window of k1 = 1/|cos alpha|, alpha = theta2 - phi (eq 1, eq 8);
+- ``compactor.k2`` = l / a, a = l - u the distance of P from B along the plate (eq 1);
+- ``compactor.force_gain.min`` = min over the pressing window of k1 k2, the force gain Q/P (eq 1) the design
+  guarantees over the whole pressing stroke. The window is the ``active`` range of the first force on the
+  coupler that has one (the whole cycle without one).
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections.abc import Iterable
+from typing import Any
+
+import numpy as np
+
+from ..linkage.model import GROUND, RRR, Mechanism, split_ref
+from .catalogue import ENGINE_SUMMARIES, MECHANISM, find, population_quantities
+
+#: Default threshold [deg] of ``poor_transmission``: a design whose transmission angle comes closer than this to
+#: 0 or 180 deg is degenerate (its joint forces grow as 1/sin mu: 5.8 times those at 90 deg at 10 deg). Norton,
+#: *Design of Machinery*, 5th ed., §4.10 recommends at least 40 deg for good running; that is a design goal to
+#: set as a constraint, not a fault, and the run's diagnostics warn below it.
+DEFAULT_MIN_TRANSMISSION_DEG = 10.0
+#: |normalised determinant| (the sine of the transmission angle) below which a design is near a dead point.
+NEAR_DEAD = math.sin(math.radians(1.0))
+#: At most this many designs x crank angles in one kinematics call (bounds the memory of the motion group).
+CHUNK_POSITIONS = 1 << 18
+
+STATUS_COLUMNS = ("assembled", "regular", "status", "dead_point", "branch_change", "near_dead_point",
+                  "poor_transmission", "assembled_fraction")
+#: The status of a design: its first fault in this order, else "regular".
+FAULTS = (("assembled", "does not assemble"), ("dead_point", "dead point"), ("branch_change", "branch change"),
+          ("near_dead_point", "near dead point"), ("poor_transmission", "poor transmission"))
+
+
+# ------------------------------------------------------------------------------------------------ names
+
+
+def output_bodies(mech: Mechanism) -> list[tuple[str, str]]:
+    """(body, 'slide' or 'angle') of every output with limit positions, in dyad order: sliders on ground guides
+    (travel) and rockers pinned to the ground (angle), as the dyads declare them."""
+    return [(out.body, out.kind) for d in mech.dyads for out in d.outputs()]
+
+
+def per_output(mech: Mechanism) -> list[str]:
+    """The outputs that get their own time ratio and transmission angles: the sliders, when there are several
+    (a double slider-crank)."""
+    sliders = [b for b, kind in output_bodies(mech) if kind == "slide"]
+    return sliders if len(sliders) > 1 else []
+
+
+def compactor_plate(mech: Mechanism) -> tuple[Any, str] | None:
+    """(the RRR dyad, the coupler point's name) of a four-bar with a coupler point (the compactor's plate and
+    pressing point), else None."""
+    if len(mech.dyads) != 1 or not isinstance(mech.dyads[0], RRR):
+        return None
+    d = mech.dyads[0]
+    if split_ref(d.pin_b)[0] != GROUND or split_ref(d.pin_a)[0] != mech.crank.body:
+        return None
+    extra = [p for p in mech.body(d.a).points if p not in (split_ref(d.pin_a)[1], d.inner) and p != "G"]
+    return (d, extra[0]) if len(extra) == 1 else None
+
+
+def result_names(mech: Mechanism, machine: str | None = None) -> list[str]:
+    """Every numeric result the population evaluator gives for a mechanism of this structure (of ``machine``)."""
+    from ..linkage.grashof import grashof_margin
+    from ..linkage.model import joints
+
+    names = []
+    outputs = [b for b, _ in output_bodies(mech)]
+    per = per_output(mech)
+    for q in population_quantities(machine):
+        if q.key.startswith("grashof.") and grashof_margin(mech) is None:
+            continue
+        if q.key == "time_ratio" and not outputs:
+            continue
+        if "<joint>" in q.key:
+            names += [q.key.replace("<joint>", j[0]) for j in joints(mech)]
+        elif q.key == "stroke.<body>":
+            names += [f"stroke.{b}" for b in outputs]
+        elif "<body>" in q.key:
+            names += [q.key.replace("<body>", b) for b in per]
+        else:
+            names.append(q.key)
+    return names
+
+
+#: The groups a sweep and an exploration compute for every design by default (the ``analysis`` group's results
+#: are computed when the objective names one).
+SWEEP_GROUPS = ("forces", "motion", "geometry")
+
+
+def sweep_columns(mech: Mechanism, machine: str | None = None, objective: str | None = None) -> list[str]:
+    """The per-design results a sweep or an exploration keeps for every design: those of
+    :data:`SWEEP_GROUPS`, the Grashof class of a four-bar, and the ``objective`` if it is another result."""
+    names = [k for k in result_names(mech, machine) if (f := find(k)) is not None and f[0].group in SWEEP_GROUPS]
+    if "grashof.margin" in names:
+        names.append("grashof.class")
+    if objective is not None and objective not in names:
+        names.append(objective)
+    return names
+
+
+def result_unit(key: str, mech: Mechanism | None = None) -> str:
+    """The SI unit of result ``key`` (a stroke's from its output: m for a slider, rad for a rocker)."""
+    if key.startswith("stroke.") and mech is not None:
+        return "m" if dict(output_bodies(mech)).get(key[7:]) == "slide" else "rad"
+    found = find(key)
+    return found[0].unit if found is not None else ""
+
+
+def _groups(wanted: Iterable[str]) -> set[str]:
+    out = set()
+    for key in wanted:
+        found = find(key)
+        if found is not None and found[0].group:
+            out.add(found[0].group)
+    return out
+
+
+# ------------------------------------------------------------------------------------------------ evaluation
+
+
+def evaluate_population(mech: Mechanism, phi, speed, acceleration, wanted: Iterable[str], *,
+                        about=(0.0, 0.0), machine: str | None = None,
+                        min_transmission_angle: float = math.radians(DEFAULT_MIN_TRANSMISSION_DEG),
+                        ) -> dict[str, np.ndarray]:
+    """The results ``wanted`` (catalogue keys) of every design of ``mech`` as (N,) arrays in SI, and the status
+    columns. ``phi`` [rad] the crank angles, ``speed`` [rad/s] and ``acceleration`` [rad/s^2] floats or one
+    value per design, ``about`` [m] the point of the shaking moments, ``min_transmission_angle`` [rad] the
+    threshold of ``poor_transmission``. Results of designs that are not regular are NaN."""
+    order = list(dict.fromkeys(wanted))
+    wanted = set(order)
+    groups = _groups(wanted)
+    phi = np.asarray(phi, dtype=float)
+    n = mech.design_count or max(np.size(speed) if np.ndim(speed) and np.shape(speed) != phi.shape else 1, 1)
+    out: dict[str, np.ndarray] = {}
+    with np.errstate(all="ignore"), warnings.catch_warnings():
+        # Designs that close at no crank angle give all-NaN rows, reported as NaN and flagged.
+        warnings.simplefilter("ignore", RuntimeWarning)
+        status = _motion(mech, phi, speed, acceleration, n, wanted, about, machine, min_transmission_angle, out)
+        if "forces" in groups:
+            from ..linkage import sweep
+
+            res = sweep(mech, phi, speed, acceleration, shaking_about=tuple(about))
+            status["dead_point"] |= ~np.broadcast_to(np.asarray(res.regular, dtype=bool), (n,)) & status["assembled"]
+            for key, attr in ENGINE_SUMMARIES.items():
+                out[key] = np.asarray(getattr(res, attr), dtype=float)
+            for joint, values in res.max_joint_force.items():
+                out[f"joint.{joint}.max_force"] = np.asarray(values, dtype=float)
+        if "geometry" in groups:
+            out.update(_geometry(mech, n))
+        regular = _regular(status)
+        if "analysis" in groups:
+            found = _analysis(mech, phi, speed, acceleration, n, regular, wanted, about) if regular.any() else {}
+            out.update({q.key: found.get(q.key, np.full(n, np.nan)) for q in MECHANISM
+                        if q.group == "analysis" and q.key in wanted})
+    for key, values in list(out.items()):
+        arr = np.broadcast_to(values, (n,))
+        # A figure of the geometry (the Grashof margin) holds for every design: it tells why one fails.
+        if arr.dtype.kind == "f" and not key.startswith("grashof."):
+            out[key] = np.where(regular, arr, np.nan)
+        else:
+            out[key] = np.array(arr)
+    status = {k: np.asarray(v) for k, v in status.items()}
+    status["regular"] = regular
+    status["status"] = _status_text(status, n)
+    first = {k: status.pop(k) for k in ("assembled", "regular", "status")}
+    ordered = {k: out[k] for k in order if k in out}
+    return {**first, **ordered, **{k: v for k, v in out.items() if k not in ordered}, **status}
+
+
+def _regular(status: dict[str, np.ndarray]) -> np.ndarray:
+    ok = np.asarray(status["assembled"], dtype=bool).copy()
+    for key in ("dead_point", "branch_change", "near_dead_point", "poor_transmission"):
+        ok &= ~np.asarray(status[key], dtype=bool)
+    return ok
+
+
+def _status_text(status: dict[str, np.ndarray], n: int) -> np.ndarray:
+    text = np.full(n, "regular", dtype=object)
+    for key, fault in reversed(FAULTS):
+        flag = np.asarray(status[key], dtype=bool)
+        text = np.where(~flag if key == "assembled" else flag, fault, text)
+    return text.astype(str)
+
+
+def _column(value, n: int, phi) -> Any:
+    arr = np.asarray(value, dtype=float)
+    if arr.ndim == 1 and arr.shape != phi.shape and arr.size == n:
+        return arr[:, None]
+    return arr
+
+
+def _rows(value: Any, part: Any) -> Any:
+    arr = np.asarray(value)
+    return arr[part] if arr.ndim == 2 and arr.shape[0] > 1 else arr
+
+
+def _motion(mech, phi, speed, acceleration, n, wanted, about, machine, limit, out) -> dict[str, np.ndarray]:
+    """The status columns, and the motion group's results into ``out``, chunk of designs by chunk."""
+    from ..linkage import kinematics
+
+    col_speed, col_acc = _column(speed, n, phi), _column(acceleration, n, phi)
+    per_chunk = max(1, CHUNK_POSITIONS // max(phi.size, 1))
+    parts: list[tuple[dict, dict]] = []
+    for start in range(0, n, per_chunk):
+        part = slice(start, min(n, start + per_chunk))
+        sub = mech.take_designs(part) if mech.design_count else mech
+        rows = part.stop - part.start
+        kin = kinematics(sub, phi, _rows(col_speed, part), _rows(col_acc, part), on_fail="mask")
+        parts.append(_motion_chunk(sub, kin, phi, (rows, phi.size), wanted, about, machine, limit))
+    status = {k: np.concatenate([np.broadcast_to(p[0][k], (min(per_chunk, n - i * per_chunk),))
+                                 for i, p in enumerate(parts)]) for k in parts[0][0]}
+    for key in parts[0][1]:
+        out[key] = np.concatenate([np.broadcast_to(p[1][key], (min(per_chunk, n - i * per_chunk),))
+                                   for i, p in enumerate(parts)])
+    return status
+
+
+def _full_cycle(phi: np.ndarray) -> bool:
+    """True if the crank angles are evenly spaced over one full turn without the end point."""
+    from .linkage import full_uniform_cycle, includes_end_point
+
+    return full_uniform_cycle(phi) and not includes_end_point(phi)
+
+
+def _motion_chunk(mech, kin, phi, shape, wanted, about, machine, limit) -> tuple[dict, dict]:
+    from ..linkage.kinematics import DEAD_TOL
+
+    assembled = np.broadcast_to(kin.assembled, shape)
+    full = _full_cycle(phi)
+    dead = np.zeros(shape[0], dtype=bool)
+    branch = np.zeros(shape[0], dtype=bool)
+    near = np.zeros(shape[0], dtype=bool)
+    for rep in kin.dyad_reports:
+        det = np.broadcast_to(np.asarray(rep.det, dtype=float), shape)
+        mag = np.where(assembled, np.abs(det), np.inf)
+        dead |= (~(mag >= DEAD_TOL)).any(axis=1)
+        near |= (mag < NEAR_DEAD).any(axis=1)
+        nxt = np.roll(det, -1, axis=1)
+        pair = assembled & np.roll(assembled, -1, axis=1)
+        if not full:
+            pair[:, -1] = False
+        branch |= (pair & (det * nxt < 0.0)).any(axis=1)
+    ok = assembled & (np.abs(np.stack([np.broadcast_to(np.asarray(r.det, float), shape)
+                                       for r in kin.dyad_reports])) >= DEAD_TOL).all(axis=0) \
+        if kin.dyad_reports else assembled
+    results: dict[str, np.ndarray] = {}
+    mu_min, mu_max, worst = _transmission(kin, ok, shape)
+    results["transmission_angle.min"], results["transmission_angle.max"] = mu_min, mu_max
+    results["transmission_angle.worst"] = worst
+    status = {
+        "assembled": assembled.all(axis=1),
+        "assembled_fraction": assembled.mean(axis=1),
+        "dead_point": dead,
+        "branch_change": branch,
+        "near_dead_point": near & ~dead,
+        "poor_transmission": np.isfinite(worst) & (worst < limit),
+    }
+    motion_wanted = any((f := find(k)) is not None and f[0].group == "motion" for k in wanted)
+    if not motion_wanted:
+        return status, {k: v for k, v in results.items() if k in wanted}
+    outputs = output_bodies(mech)
+    per = per_output(mech)
+    for i, (body, kind) in enumerate(outputs):
+        if kind == "slide":
+            sm = kin.slide(body)
+            values, rates = np.broadcast_to(sm.s, shape), np.broadcast_to(sm.v, shape)
+        else:
+            b = kin.body(body)
+            values = np.unwrap(np.where(ok, np.broadcast_to(b.angle, shape), 0.0), axis=1)
+            rates = np.broadcast_to(b.omega, shape)
+        results[f"stroke.{body}"] = (np.where(ok, values, -np.inf).max(axis=1)
+                                     - np.where(ok, values, np.inf).min(axis=1))
+        ratio = time_ratio(phi, rates, ok, full)
+        if i == 0:
+            results["time_ratio"] = ratio
+        if body in per:
+            results[f"time_ratio.{body}"] = ratio
+    if per:
+        for d, rep in zip(mech.dyads, kin.dyad_reports, strict=False):
+            for out in d.outputs():
+                if out.body in per:
+                    mu = np.broadcast_to(np.asarray(rep.transmission, dtype=float), shape)
+                    good = ok & np.isfinite(mu)
+                    results[f"transmission_angle.{out.body}.min"] = np.where(good, mu, np.inf).min(axis=1)
+                    results[f"transmission_angle.{out.body}.max"] = np.where(good, mu, -np.inf).max(axis=1)
+    if wanted & {"inertial_shaking_force.max", "inertial_shaking_moment.max_abs"}:
+        from ..linkage import mass_centre
+        from ..linkage.mass_centre import inertial_shaking_moment
+
+        ix, iy = mass_centre(kin).inertia_force
+        results["inertial_shaking_force.max"] = np.where(ok, np.hypot(ix, iy), -np.inf).max(axis=1)
+        moment = np.abs(np.broadcast_to(inertial_shaking_moment(kin, (about[0], about[1])), shape))
+        results["inertial_shaking_moment.max_abs"] = np.where(ok, moment, -np.inf).max(axis=1)
+    if machine == "compactor" and any(k.startswith("compactor.") for k in wanted):
+        results.update(_compactor_results(mech, kin, phi, ok, shape))
+    return status, {k: v for k, v in results.items() if k in wanted}
+
+
+def _transmission(kin, ok, shape) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Min, max and worst (closest to 0 or pi) transmission angle [rad] of every dyad over the regular
+    positions; NaN for a mechanism whose dyads have none."""
+    mus = [np.broadcast_to(np.asarray(rep.transmission, dtype=float), shape) for rep in kin.dyad_reports]
+    if not mus:
+        nan = np.full(shape[0], np.nan)
+        return nan, nan, nan
+    mu = np.stack(mus)
+    good = np.broadcast_to(ok, mu.shape) & np.isfinite(mu)
+    low = np.where(good, mu, np.inf).min(axis=(0, 2))
+    high = np.where(good, mu, -np.inf).max(axis=(0, 2))
+    worst = np.where(good, np.minimum(mu, np.pi - mu), np.inf).min(axis=(0, 2))
+    none = ~good.any(axis=(0, 2))
+    return (np.where(none, np.nan, low), np.where(none, np.nan, high), np.where(none, np.nan, worst))
+
+
+def time_ratio(phi, rates, ok, full_cycle: bool) -> np.ndarray:
+    """Quick-return ratio per design (Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th ed.,
+    §1.9): the longer over the shorter crank interval [rad / rad] between the output's two limit positions
+    (rate = 0), located by linear interpolation between neighbouring crank angles ``phi`` [rad]; ``rates``
+    (designs x angles) the output's velocity, ``ok`` where the design is regular. NaN unless the crank turns
+    fully and there are exactly two limit positions."""
+    rates = np.atleast_2d(rates)
+    ok = np.broadcast_to(ok, rates.shape)
+    nxt = np.roll(rates, -1, axis=1)
+    ok_pair = ok & np.roll(ok, -1, axis=1)
+    if not full_cycle:
+        ok_pair[:, -1] = False
+    cross = ok_pair & ((rates == 0.0) | (rates * nxt < 0.0))
+    count = cross.sum(axis=1)
+    step = np.mod(np.roll(phi, -1) - phi, 2 * np.pi)
+    with np.errstate(all="ignore"):
+        frac = np.where(rates == 0.0, 0.0, rates / (rates - nxt))
+    where = np.broadcast_to(phi, rates.shape) + np.broadcast_to(step, rates.shape) * frac
+    i1 = np.argmax(cross, axis=1)
+    rest = cross.copy()
+    rest[np.arange(len(i1)), i1] = False
+    i2 = np.argmax(rest, axis=1)
+    rows = np.arange(len(i1))
+    forward = np.mod(where[rows, i2] - where[rows, i1], 2 * np.pi)
+    back = 2 * np.pi - forward
+    with np.errstate(all="ignore"):
+        ratio = np.maximum(forward, back) / np.minimum(forward, back)
+    return np.where((count == 2) & full_cycle, ratio, np.nan)
+
+
+def _compactor_results(mech, kin, phi, ok, shape) -> dict[str, np.ndarray]:
+    from ..linkage.loads import window
+
+    plate = compactor_plate(mech)
+    if plate is None:
+        return {}
+    dyad, point = plate
+    coupler = dyad.a
+    pts = mech.body(coupler).points
+    length = np.hypot(np.asarray(pts[dyad.inner][0], dtype=float), np.asarray(pts[dyad.inner][1], dtype=float))
+    u = np.asarray(pts[point][0], dtype=float)
+    lever = length - u  # a: distance of P from B along the plate
+    k2 = np.where((lever > 0) & (u >= 0), length / np.where(lever > 0, lever, 1.0), np.nan)
+    theta2 = np.broadcast_to(kin.body(coupler).angle, shape)
+    gamma = np.abs(np.mod(theta2 + np.pi, 2 * np.pi) - np.pi)
+    active = next((f.active for f in mech.forces if f.point.split(".")[0] == coupler and f.active), None)
+    cols = np.flatnonzero(np.broadcast_to(np.asarray(window(phi, active), dtype=float), phi.shape) > 0)
+    # k1 only where the plate presses (the window's crank angles): alpha = theta2 - phi.
+    alpha = theta2[:, cols] - np.broadcast_to(kin.body(mech.crank.body).angle, shape)[:, cols]
+    k1 = 1.0 / np.abs(np.cos(alpha))
+    k1_min = np.where(ok[:, cols], k1, np.inf).min(axis=1) if cols.size else np.full(shape[0], np.nan)
+    return {
+        "compactor.plate_angle.max": np.where(ok, gamma, -np.inf).max(axis=1),
+        "compactor.k1.min": k1_min,
+        "compactor.k2": np.broadcast_to(k2, (shape[0],)),
+        "compactor.force_gain.min": k1_min * k2,
+    }
+
+
+def _geometry(mech: Mechanism, n: int) -> dict[str, np.ndarray]:
+    """The Grashof margin s + l - (p + q) [m] and class of a four-bar (Norton, *Design of Machinery*, 5th ed.,
+    §2.12), NaN and "" for other mechanisms."""
+    from ..linkage.grashof import grashof_margin, grashof_type
+
+    margin = grashof_margin(mech)
+    if margin is None:
+        return {"grashof.margin": np.full(n, np.nan), "grashof.class": np.full(n, "", dtype=object)}
+    kind = np.broadcast_to(np.asarray(grashof_type(mech), dtype=object), (n,))
+    return {"grashof.margin": np.broadcast_to(np.asarray(margin, dtype=float), (n,)).copy(), "grashof.class": kind}
+
+
+def _analysis(mech, phi, speed, acceleration, n, regular, wanted, about) -> dict[str, np.ndarray]:
+    """The analysis group's results of the regular designs, reduced by the run's own function."""
+    from ..linkage import analyse
+    from .linkage import linkage_scalars
+
+    index = np.flatnonzero(regular)
+    sub = mech.take_designs(index) if mech.design_count else mech
+    spd, acc = (_rows(_column(v, n, phi), index) for v in (speed, acceleration))
+    analysis = analyse(sub, phi, spd, acc, diagnostics=False)
+    values, _ = linkage_scalars(analysis, sub, about=tuple(about))
+    keys = {q.key for q in MECHANISM if q.group == "analysis"} & wanted
+    out = {}
+    for key in keys:
+        if key not in values:
+            continue
+        full = np.full(n, np.nan)
+        full[index] = np.broadcast_to(np.asarray(values[key], dtype=float), (index.size,))
+        out[key] = full
+    return out

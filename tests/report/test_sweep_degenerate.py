@@ -1,0 +1,47 @@
+"""Degenerate designs of a sweep are flagged, not counted as regular, and the plots scale to the regular ones."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from machdyn.problem import load_problem
+from machdyn.report import plots
+from machdyn.runner import run_problem
+
+ROOT = Path(__file__).resolve().parents[2]
+SWEEP = '\n[sweep]\nparameter = "mechanism.crank.length"\nvalues = ["40 mm", "80 mm", "89.9 mm", "95 mm"]\n'
+
+
+def _sweep(extra: str = ""):
+    text = (ROOT / "examples" / "four_bar.toml").read_text(encoding="utf-8") + SWEEP + extra
+    return run_problem(load_problem(text))
+
+
+def test_a_design_near_its_dead_point_is_flagged_not_regular():
+    """Crank 89.9 mm of the 130/120/100 mm four-bar: s + l = 219.9 mm against p + q = 220 mm (Norton, Design of
+    Machinery, 5th ed., §2.12), so it turns fully but its transmission angle comes within a few degrees of
+    180 deg; crank 95 mm cannot turn fully (s + l > p + q)."""
+    scalars = _sweep().results_json()["scalars"]
+    assert scalars["sweep.status"]["value"] == ["regular", "regular", "poor transmission", "does not assemble"]
+    assert scalars["sweep.regular"]["value"] == [True, True, False, False]
+    worst = scalars["sweep.transmission_angle.worst"]["value"]
+    assert 10.0 < worst[1] < 40.0 and np.isnan(worst[2])  # in deg; no results for a degenerate design
+    assert scalars["sweep.grashof.margin"]["value"][2] < 0 < scalars["sweep.grashof.margin"]["value"][3]
+    assert scalars["sweep.regular_count"]["value"] == 2.0
+
+
+def test_the_transmission_threshold_is_the_users():
+    scalars = _sweep('min_transmission_angle = "1 deg"\n').results_json()["scalars"]
+    assert scalars["sweep.status"]["value"][2] == "regular"
+    assert np.isfinite(scalars["sweep.joint.B.max_force"]["value"][2])
+
+
+def test_plot_of_a_sweep_scales_to_the_regular_designs():
+    ax = Figure().subplots()
+    plots.plot_sweep(ax, [1.0, 2.0, 3.0, 4.0], [10.0, 11.0, 1.3e8, 12.0], parameter="a", parameter_unit="mm",
+                     quantity="peak force", unit="N", regular=[True, True, False, True])
+    low, high = ax.get_ylim()
+    assert 5.0 < low and high < 20.0

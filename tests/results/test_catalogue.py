@@ -1,0 +1,186 @@
+"""A walk of the catalogue of results: every key a run of a shipped example writes is declared in it, every
+declared quantity is written by some example, and every per-design quantity of a mechanism can be named as a
+``[sweep]`` column and objective and as an ``[optimise]`` objective, and comes out as the run computes it."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from machdyn.problem import load_problem
+from machdyn.problem.build import build_mechanism, crank_angles
+from machdyn.results.catalogue import (
+    ALIASES,
+    MECHANISM,
+    RUN_TIME,
+    STATUS,
+    canonical,
+    catalogue,
+    find,
+    population_quantities,
+)
+from machdyn.results.population import evaluate_population, result_names
+from machdyn.runner import run_problem
+
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
+#: Examples whose mechanisms between them have every kind of output: a rocker, a slider, two sliders, a compactor.
+MECHANISMS = ("four_bar", "slider_crank", "double_tamper_balance", "compactor_optimise")
+
+
+@pytest.fixture(scope="module")
+def written() -> dict[str, set[str]]:
+    """The result keys each shipped example's run writes to results.json."""
+    return {p.stem: set(run_problem(p).results_json()["scalars"]) for p in EXAMPLES}
+
+
+def test_every_key_a_run_writes_is_in_the_catalogue(written):
+    everything = catalogue()
+    unknown = sorted({f"{name}: {key}" for name, keys in written.items() for key in keys
+                      if find(key, everything) is None})
+    assert not unknown, unknown
+
+
+#: Declared results no shipped example writes, each with the test that produces and checks it.
+NOT_IN_EXAMPLES = {
+    "balance.spring_stiffness": "a balancing spring (tests/balancing)",
+    "balance.spring_free_length": "a balancing spring (tests/balancing)",
+    "optimise.front_size": "a Pareto front of several objectives (tests/optimise/test_stage.py)",
+}
+#: Prefixes of capability keys that carry a result's own key after them.
+CARRIERS = ("sweep.best.", "sweep.lowest_", "sweep.", "optimise.best.")
+
+
+def test_every_catalogue_entry_is_written_by_some_example(written):
+    keys = set().union(*written.values())
+    everything = catalogue()
+    produced = set()
+    for key in keys:
+        for candidate in (key, *(key[len(c):] for c in CARRIERS if key.startswith(c))):
+            found = find(candidate, everything)
+            if found is not None:
+                produced.add(found[0].key)
+        # The run-time patterns of the capabilities (sweep.best.<column*>, balance.<part>.mass) match their keys.
+        found = find(key, RUN_TIME)
+        if found is not None:
+            produced.add(found[0].key)
+    missing = sorted(q.key for q in everything if q.key not in produced and q.key not in NOT_IN_EXAMPLES)
+    assert not missing, missing
+
+
+def test_every_mechanism_quantity_has_a_population_group_or_says_why_not():
+    for q in MECHANISM:
+        assert q.group or q.why, q.key
+    for q in STATUS:
+        assert q.group == "status"
+
+
+def _problem(name: str):
+    return load_problem(ROOT / "examples" / f"{name}.toml")
+
+
+def test_every_mechanism_quantity_can_be_named_a_sweep_column_and_an_objective():
+    """Each per-design quantity of the mechanism kind (and of the compactor) is a result of some shipped
+    mechanism, is accepted as ``[sweep] objective`` and as an ``[optimise]`` objective, and is a column of
+    that mechanism's sweep."""
+    from machdyn.optimise.objectives import parse_objectives
+    from machdyn.optimise.schema import ObjectiveSpec
+    from machdyn.problem.sweep import SweepSpec
+    from machdyn.results.population import result_unit, sweep_columns
+
+    named: dict[str, list[str]] = {}
+    for name in MECHANISMS:
+        problem = _problem(name)
+        machine = problem.mechanism.machine
+        mech = build_mechanism(problem)
+        names = result_names(mech, machine)
+        for key in names:
+            named.setdefault(find(key)[0].key, []).append(key)
+            SweepSpec(method="sobol", samples=8, objective=key,
+                      quantities=[{"parameter": "drive.speed", "start": "1 rad/s", "stop": "2 rad/s"}])
+            assert key in sweep_columns(mech, machine, key)
+        units = {k: result_unit(k, mech) for k in names}
+        objectives = parse_objectives([ObjectiveSpec(result=k) for k in names], names, units.__getitem__)
+        assert [o.result for o in objectives] == names
+    missing = [q.key for q in population_quantities("compactor") if q.key not in named]
+    assert not missing, missing
+
+
+@pytest.mark.parametrize("name", MECHANISMS)
+def test_a_population_of_one_gives_what_the_run_gives(name):
+    """The population evaluator and the run compute the same numbers for the example's own design: the force
+    and analysis groups to rounding; the motion group to the run's finer sampling where it locates limit
+    positions (the run's diagnostics sample 3600 positions, the population the problem's own)."""
+    problem = _problem(name)
+    machine = problem.mechanism.machine
+    mech = build_mechanism(problem)
+    got = evaluate_population(mech, crank_angles(problem), problem.drive.speed, problem.drive.acceleration,
+                              result_names(mech, machine), about=tuple(problem.output.shaking_moment_about),
+                              machine=machine)
+    assert got["regular"][0] and got["status"][0] == "regular"
+    run = run_problem(ROOT / "examples" / f"{name}.toml").results
+    compared = 0
+    for key in result_names(mech, machine):
+        if key not in run:
+            continue
+        ours, theirs = float(got[key][0]), float(np.ravel(run[key])[0])
+        group = find(key)[0].group
+        rel = 1e-9 if group in ("forces", "analysis", "geometry") else 2e-3
+        if key == "flywheel.energy_fluctuation":
+            rel = 1e-6
+        assert ours == pytest.approx(theirs, rel=rel, abs=1e-9 * max(abs(theirs), 1.0)), key
+        compared += 1
+    assert compared >= 20
+
+
+def test_old_names_map_to_their_keys_once():
+    assert canonical("max_driving_torque") == "driving_torque.max_abs"
+    assert canonical("shaking_force.max") == "frame_force.max"
+    assert canonical("sweep.max_shaking_force") == "sweep.frame_force.max"
+    assert canonical("sweep.best.max_driving_torque") == "sweep.best.driving_torque.max_abs"
+    assert canonical("shaking_force.fx.harmonic_2.phase") == "frame_force.fx.harmonic_2.phase"
+    assert canonical("driving_torque.max_abs") == "driving_torque.max_abs"
+    for old, new in ALIASES.items():
+        assert find(new) is not None and find(old) is None, old
+
+
+def test_inertial_shaking_moment_is_the_frame_moment_without_loads_or_weight():
+    """Newton-Euler for the moving bodies together: with gravity off and no external loads, the moment the
+    mechanism puts on its frame (kinetostatics: joint reactions and the drive's reaction) equals the moment of
+    the d'Alembert loads (Uicker, Pennock & Shigley, 5th ed., chapter "Balancing")."""
+    from machdyn.linkage import four_bar, kinematics, kinetostatics
+    from machdyn.linkage.mass_centre import inertial_shaking_moment
+
+    mech = four_bar(0.04, 0.12, 0.10, 0.13, masses=(0.3, 0.5, 0.4), inertias=(1e-4, 8e-4, 5e-4),
+                    coms=((0.02, 0.0), (0.06, 0.01), (0.05, -0.005)), gravity=(0.0, 0.0))
+    phi = np.linspace(0.0, 2 * math.pi, 72, endpoint=False)
+    kin = kinematics(mech, phi, 12.0, 3.0)
+    about = (0.05, -0.02)
+    frame = kinetostatics(mech, kinematics_result=kin).shaking_moment(about)
+    np.testing.assert_allclose(inertial_shaking_moment(kin, about), frame, rtol=1e-10,
+                               atol=1e-12 * float(np.max(np.abs(frame))))
+
+
+def test_inertial_shaking_force_is_not_the_frame_force_of_a_press():
+    """The crank press's punch force closes through its frame: the frame force is tens of kN, the inertial
+    shaking force a few hundred N; a run, a sweep column and an objective name them apart."""
+    result = run_problem(ROOT / "examples" / "crank_press.toml").results
+    assert result["frame_force.max"] > 50e3
+    assert result["inertial_shaking_force.max"] < 0.05 * result["frame_force.max"]
+
+
+def test_the_documented_catalogue_example_runs_and_lists_every_mechanism_key():
+    """docs/results.md: its Python example runs, and its table lists every quantity of the mechanism kind."""
+    import re
+
+    text = (ROOT / "docs" / "results.md").read_text(encoding="utf-8")
+    block = re.findall(r"```python\n(.*?)```", text, flags=re.S)[0]
+    exec(compile(block, "docs/results.md", "exec"), {})  # noqa: S102 - the documentation's own example
+    from machdyn.results.catalogue import COMPACTOR
+
+    missing = [q.key for q in MECHANISM + COMPACTOR if f"`{q.key}`" not in text]
+    assert not missing, missing
+    assert all(f"`{old}`" in text for old in ALIASES)
