@@ -65,9 +65,11 @@ def exploration_space(done: Any, shown: Any) -> Markup:
     digest, plan = done.digest, done.plan
     sample, best = digest.sample_in_design_order(), digest.best
     columns = [c for c in ("design", *plan.space.names, plan.objective)]
-    columns += [c for c in best if c not in columns and c not in ("assembled", "regular")]
+    columns += [c for c in best if c not in columns and np.asarray(best[c]).dtype.kind in "fiu"
+                and c not in ("assembled", "regular")]  # numbers only: the status flags go into ``status``
     seen = set()
     rows: dict[str, list[float]] = {c: [] for c in columns}
+    status: list[str] = []
     for part in (best, sample):
         for r in range(len(part.get("design", []))):
             d = int(part["design"][r])
@@ -76,6 +78,7 @@ def exploration_space(done: Any, shown: Any) -> Markup:
             seen.add(d)
             for c in columns:
                 rows[c].append(float(part[c][r]) if c in part else float("nan"))
+            status.append(str(part["status"][r]) if "status" in part else "regular")
     table: dict[str, Any] = {}
     units: dict[str, str] = {}
     for c in columns:
@@ -88,7 +91,7 @@ def exploration_space(done: Any, shown: Any) -> Markup:
     nominal = next((v for v in done.views if v.design < 0), None)
     caption = ("The regular designs of a uniform sample and the best designs: hover for a design's numbers, click "
                "to open it; the best designs also play their motion. Axes: choose any column.")
-    space = design_space_html(table, units, x=plan.space.names[0], y=plan.objective, highlight=highlight,
+    space = design_space_html(table, units, x=plan.space.names[0], y=plan.objective, highlight=highlight, status=status,
                               scenes=_rows_of(views, table["design"]), caption=caption)
     if nominal is None or not views:
         return space
