@@ -146,7 +146,25 @@ def parse_quantity(value: str | float | int, unit: str, *, field: str = "value")
 
 def quantity_of_text(text: str, *, field: str = "value") -> pint.Quantity:
     """The pint quantity written in ``text``, parsed by the bounded grammar of :mod:`machdyn.quantity_text`
-    (pint only looks up each unit name), so that any text is decided in well under a millisecond."""
+    (pint only looks up each unit name), so that any text is decided in well under a millisecond.
+
+    Parameters
+    ----------
+    text : str
+        A number and a unit, e.g. ``"45 mm"`` or ``"2.5e3 N*m"``.
+    field : str
+        Name of the input, for the error message.
+
+    Returns
+    -------
+    pint.Quantity
+        The quantity (a pure number where ``text`` has no unit).
+
+    Examples
+    --------
+    >>> float(quantity_of_text("45 mm").to("m").magnitude)
+    0.045
+    """
     from .quantity_text import QuantitySyntaxError, parse
 
     try:
@@ -157,7 +175,25 @@ def quantity_of_text(text: str, *, field: str = "value") -> pint.Quantity:
 
 
 def unit_of_text(text: str, *, field: str = "unit") -> pint.Unit:
-    """The pint unit written in ``text`` (``"kg*m^2"``), parsed like a quantity's unit; no number allowed."""
+    """The pint unit written in ``text`` (``"kg*m^2"``), parsed like a quantity's unit; no number allowed.
+
+    Parameters
+    ----------
+    text : str
+        A unit expression, e.g. ``"kg*m^2"``.
+    field : str
+        Name of the input, for the error message.
+
+    Returns
+    -------
+    pint.Unit
+        The unit.
+
+    Examples
+    --------
+    >>> unit_of_text("kg*m^2") == ureg.Unit("kilogram * meter ** 2")
+    True
+    """
     from .quantity_text import QuantitySyntaxError, parse
 
     try:

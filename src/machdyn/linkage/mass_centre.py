@@ -100,6 +100,18 @@ def inertial_force(kin: Kinematics) -> tuple[np.ndarray, np.ndarray]:
     -M a_G where there is mass, and zero for a massless (statics) model, which has no centre of mass (Uicker,
     Pennock & Shigley, 5th ed., chapter "Balancing": the shaking force is the sum of the inertia forces).
 
+    Parameters
+    ----------
+    kin : Kinematics
+        The result of :func:`~machdyn.linkage.kinematics.kinematics` (one design or many).
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        (fx, fy) [N] per crank position (and design), global axes.
+
+    Examples
+    --------
     >>> import numpy as np
     >>> from machdyn.linkage import kinematics, slider_crank
     >>> fx, fy = inertial_force(kinematics(slider_crank(0.1, 0.3, masses=(0.0, 0.0, 0.0)), np.linspace(0, 6, 5)))
