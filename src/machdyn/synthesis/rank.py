@@ -12,7 +12,10 @@ each design gets:
 - ``peak_shaking_force`` [N]: the largest resultant force on the frame;
 - ``min_transmission`` [rad]: the smallest transmission angle of the engine's dyad;
 - ``flywheel_energy`` [J]: the maximum fluctuation of energy over a turn (full-turn designs only, NaN others;
-  :func:`machdyn.linkage.energy_fluctuation`), the flywheel needed being dE / (Cs omega^2);
+  :func:`machdyn.linkage.energy_fluctuation`);
+- ``flywheel_inertia`` [kg*m^2]: the flywheel that holds the crank speed within the coefficient of fluctuation
+  Cs, I = dE / (omega^2 Cs) (Khurmi & Gupta, *Theory of Machines*, ch. 16;
+  :func:`machdyn.dynamics.flywheel.flywheel_inertia_classic`);
 - ``error`` [m or rad]: the kinematic error at the precision positions (from :mod:`.defects`).
 
 The population is ranked by the chosen quantity, defect-free designs first, then by kinematic error.
@@ -34,6 +37,7 @@ QUANTITIES: dict[str, tuple[str, str, bool]] = {
     "peak_shaking_force": ("Peak shaking force", "N", False),
     "min_transmission": ("Worst transmission angle", "rad", True),
     "flywheel_energy": ("Fluctuation of energy per turn", "J", False),
+    "flywheel_inertia": ("Flywheel needed", "kg*m^2", False),
     "error": ("Kinematic error at the positions", "", False),
 }
 
@@ -44,7 +48,8 @@ CHUNK_POSITIONS = 1 << 17
 class Drive:
     """How the candidates are run: crank ``speed`` [rad/s], bars of ``linear_density`` [kg/m], a resisting
     ``load`` on the output (a torque [N*m] on the rocker, counter-clockwise positive, or a force [N] on the
-    slider along its line), ``positions`` per working range and ``full_turn`` (run full-turn cranks round)."""
+    slider along its line), ``positions`` per working range, ``full_turn`` (run full-turn cranks round) and the
+    coefficient of speed fluctuation ``speed_fluctuation`` [-] a flywheel is sized for."""
 
     speed: float = 10.0
     linear_density: float = 1.0
@@ -52,6 +57,7 @@ class Drive:
     positions: int = 121
     full_turn: bool = True
     gravity: bool = True
+    speed_fluctuation: float = 0.05
 
 
 def _angles(c: Candidate, report: Report, drive: Drive) -> np.ndarray:
@@ -96,6 +102,7 @@ def _model(group: list[Candidate], drive: Drive) -> Any:
 def evaluate(cands: list[Candidate], reports: list[Report], drive: Drive = Drive(),
              chunk_positions: int = CHUNK_POSITIONS) -> dict[str, np.ndarray]:
     """The per-candidate quantities of :data:`QUANTITIES` (arrays in the candidates' order), by the engine."""
+    from ..dynamics.flywheel import flywheel_inertia_classic
     from ..linkage import energy_fluctuation, kinematics, kinetostatics
 
     n = len(cands)
@@ -131,6 +138,8 @@ def evaluate(cands: list[Candidate], reports: list[Report], drive: Drive = Drive
                 grid = np.linspace(0.0, TWO_PI, drive.positions, endpoint=False)
                 de = energy_fluctuation(np.where(np.isfinite(torque[:k]), torque[:k], 0.0), grid)
                 out["flywheel_energy"][idx] = np.where(bad, np.nan, de)
+                out["flywheel_inertia"][idx] = np.where(bad, np.nan, flywheel_inertia_classic(
+                    de, abs(drive.speed), drive.speed_fluctuation))
     return out
 
 
