@@ -172,3 +172,21 @@ def test_every_task_runs_as_a_problem_file_and_writes_runnable_candidates(task, 
     run_problem(best)  # runs on its own
     html = result.report_html() if hasattr(result, "report_html") else ""
     assert "Synthesis" in html
+
+
+def test_fluctuation_of_energy_is_the_swing_of_kinetic_energy_without_loads():
+    """Work-energy: with no gravity and no load the crank's work at constant speed goes into kinetic energy
+    only, so the fluctuation of energy the ranking reports is max T - min T of the engine's kinetic energy, and
+    the flywheel needed is that over omega^2 Cs."""
+    cands = _crank_rockers()[:3]
+    reports = [check(c, Targets()) for c in cands]
+    drive = Drive(speed=10.0, linear_density=4.0, load=0.0, positions=720, gravity=False, speed_fluctuation=0.04)
+    values = evaluate(cands, reports, drive)
+    for i, c in enumerate(cands):
+        if not reports[i].full_turn:
+            continue
+        mech = replace(c.mechanism(linear_density=4.0), gravity=(0.0, 0.0))
+        phi = c.angles[0] + c.direction * np.linspace(0, 2 * np.pi, 720, endpoint=False)
+        kinetic = analyse(mech, phi, 10.0 * c.direction, diagnostics=False).energy.kinetic_total
+        assert values["flywheel_energy"][i] == pytest.approx(np.ptp(kinetic), rel=2e-4)  # 720 samples: ~5e-5
+        assert values["flywheel_inertia"][i] == pytest.approx(values["flywheel_energy"][i] / (100.0 * 0.04))
