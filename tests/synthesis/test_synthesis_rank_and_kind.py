@@ -190,3 +190,21 @@ def test_fluctuation_of_energy_is_the_swing_of_kinetic_energy_without_loads():
         kinetic = analyse(mech, phi, 10.0 * c.direction, diagnostics=False).energy.kinetic_total
         assert values["flywheel_energy"][i] == pytest.approx(np.ptp(kinetic), rel=2e-4)  # 720 samples: ~5e-5
         assert values["flywheel_inertia"][i] == pytest.approx(values["flywheel_energy"][i] / (100.0 * 0.04))
+
+
+@pytest.mark.parametrize(("body", "field"), [
+    ('task = "motion"\npositions = [["0 mm", "0 mm", "0 deg"]]\n', "synthesis.positions"),
+    ('task = "path"\npoints = [["0 mm", "0 mm"], ["1 mm", "0 mm"], ["2 mm", "1 mm"]]\ntiming = ["10 deg"]\n',
+     "synthesis.timing"),
+    ('task = "motion"\npositions = [["0 mm", "0 mm", "0 deg"], ["9 mm", "1 mm", "5 deg"]]\n'
+     'crank_pivot = ["0 mm", "-50 mm"]\n', "synthesis.crank_pivot"),
+    ('task = "function"\nfunction = "log10"\nx_range = [0.0, 1.0]\ninput_range = ["0 deg", "90 deg"]\n'
+     'output_range = ["0 deg", "90 deg"]\n', "synthesis.x_range"),
+    ('task = "quick_return"\nswing = "200 deg"\nrocker = "100 mm"\n', "synthesis.swing"),
+    ('task = "quick_return"\nswing = "40 deg"\nrocker = "100 mm"\ntime_ratio = 0.5\n', "synthesis.time_ratio"),
+])
+def test_task_rules_name_the_field(body, field, tmp_path):
+    path = tmp_path / "bad.toml"
+    path.write_text(f'[meta]\nname = "bad"\n\n[synthesis]\n{body}', encoding="utf-8")
+    checked = CliRunner().invoke(app, ["check", str(path)])
+    assert checked.exit_code == 2 and field in checked.stderr, checked.stderr
