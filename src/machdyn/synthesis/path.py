@@ -3,7 +3,7 @@ timing (the crank's rotation between the points).
 
 Three points: closed form. The coupler's rotations alpha_2, alpha_3 become free choices and each dyad follows
 from the standard form (:mod:`machdyn.synthesis.dyads`): with prescribed timing the crank dyad's rotations
-beta_j are the given ones and the rocker dyad's gamma_j are free (Norton, *Design of Machinery*, 5th ed., §5.12,
+beta_j are the given ones and the rocker dyad's gamma_j are free (Norton, *Design of Machinery*, 5th ed., ch. 5,
 "path generation with prescribed timing"; Erdman, Sandor & Kota, *Mechanism Design*, ch. 8); without timing
 the beta_j are free too.
 
