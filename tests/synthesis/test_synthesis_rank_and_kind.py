@@ -208,3 +208,13 @@ def test_task_rules_name_the_field(body, field, tmp_path):
     path.write_text(f'[meta]\nname = "bad"\n\n[synthesis]\n{body}', encoding="utf-8")
     checked = CliRunner().invoke(app, ["check", str(path)])
     assert checked.exit_code == 2 and field in checked.stderr, checked.stderr
+
+
+def test_a_task_without_any_linkage_fails_its_check_and_still_writes_its_report(tmp_path):
+    path = tmp_path / "none.toml"
+    path.write_text('[meta]\nname = "none"\n\n[synthesis]\ntask = "motion"\npositions = [["0 mm", "0 mm", "0 deg"], '
+                    '["80 mm", "60 mm", "-30 deg"], ["180 mm", "40 mm", "-90 deg"]]\nmax_length = "1 mm"\n'
+                    'candidates = 5\n', encoding="utf-8")
+    ran = CliRunner().invoke(app, ["run", str(path), "--out", str(tmp_path / "out")])
+    assert ran.exit_code == 3 and "gave no linkage" in ran.output
+    assert "No linkage was found" in (tmp_path / "out" / "report.html").read_text()

@@ -109,6 +109,11 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
     from ..synthesis.rank import QUANTITIES
 
     result = outcome.results
+    if result is None:  # the task gave no linkage at all: say why
+        from html import escape
+
+        why = "; ".join(outcome.failed_checks) or "no candidate"
+        return [("Synthesis", f"<p>No linkage was found: {escape(why)}</p>")]
     first = plot_function if result.task == "function" else plot_candidates
 
     def draw(fig: Any) -> None:
