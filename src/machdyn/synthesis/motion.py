@@ -70,7 +70,9 @@ def sampled_dyads(points: Any, angles: Any, count: int, rng: np.random.Generator
             d = solve(p, t, betas)
             return [] if d is None else [d]
         out = []
-        while len(out) < count:
+        tries = 0
+        while len(out) < count and tries < 50 * count:  # a degenerate task gives no dyad for any choice
+            tries += 1
             sign = rng.choice([-1, 1])
             if role == "crank":
                 b2 = sign * rng.uniform(np.radians(10), np.radians(160))

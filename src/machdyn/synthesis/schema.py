@@ -131,6 +131,16 @@ def problems(spec: SynthesisSpec) -> list[tuple[str, str]]:
         if getattr(spec, name) is not None and not (spec.task == "motion" and len(spec.positions) == 3):
             out.append((f"synthesis.{name}", f"can be given for a motion task of 3 positions only; the task is "
                                              f"'{spec.task}' with {len(spec.positions)} positions"))
+    if spec.task == "motion":
+        seen = [(round(x, 12), round(y, 12), round(a, 12)) for x, y, a in spec.positions]
+        if len(set(seen)) != len(seen):
+            out.append(("synthesis.positions", "must all differ (a repeated position gives no linkage); got "
+                                               f"{len(seen) - len(set(seen))} repeated"))
+    if spec.task == "path" and spec.points:
+        seen2 = [(round(x, 12), round(y, 12)) for x, y in spec.points]
+        if len(set(seen2)) != len(seen2):
+            out.append(("synthesis.points", "must all differ (a coupler point passes each once); got "
+                                            f"{len(seen2) - len(set(seen2))} repeated"))
     if spec.task == "path":
         if len(spec.points) < 3:
             out.append(("synthesis.points", f"path generation needs at least 3 points [x, y]; got "
