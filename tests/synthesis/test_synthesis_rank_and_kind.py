@@ -201,6 +201,8 @@ def test_fluctuation_of_energy_is_the_swing_of_kinetic_energy_without_loads():
     ('task = "function"\nfunction = "log10"\nx_range = [0.0, 1.0]\ninput_range = ["0 deg", "90 deg"]\n'
      'output_range = ["0 deg", "90 deg"]\n', "synthesis.x_range"),
     ('task = "quick_return"\nswing = "200 deg"\nrocker = "100 mm"\n', "synthesis.swing"),
+    ('task = "motion"\npositions = [["0 mm", "0 mm", "0 deg"], ["0 mm", "0 mm", "0 deg"], ["5 mm", "0 mm", "9 deg"]]\n',
+     "synthesis.positions"),
     ('task = "quick_return"\nswing = "40 deg"\nrocker = "100 mm"\ntime_ratio = 0.5\n', "synthesis.time_ratio"),
 ])
 def test_task_rules_name_the_field(body, field, tmp_path):
@@ -218,3 +220,13 @@ def test_a_task_without_any_linkage_fails_its_check_and_still_writes_its_report(
     ran = CliRunner().invoke(app, ["run", str(path), "--out", str(tmp_path / "out")])
     assert ran.exit_code == 3 and "gave no linkage" in ran.output
     assert "No linkage was found" in (tmp_path / "out" / "report.html").read_text()
+
+
+def test_a_degenerate_motion_task_ends_with_a_failed_check(tmp_path):
+    """Three positions that turn about one fixed point (a pole common to all): no dyad's system is regular; the
+    sampling of free choices gives up and the run says so (exit 3) instead of searching forever."""
+    path = tmp_path / "pole.toml"
+    path.write_text('[meta]\nname = "pole"\n\n[synthesis]\ntask = "motion"\npositions = [["0 mm", "0 mm", "0 deg"], '
+                    '["0 mm", "0 mm", "10 deg"], ["0 mm", "0 mm", "20 deg"]]\ncandidates = 5\n', encoding="utf-8")
+    ran = CliRunner().invoke(app, ["run", str(path), "--out", str(tmp_path / "out"), "--quiet"])
+    assert ran.exit_code == 3
