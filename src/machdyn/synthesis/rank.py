@@ -9,7 +9,10 @@ each design gets:
 
 - ``peak_torque`` [N*m]: the largest driving torque on the crank (inertia of uniform bars of the given linear
   density, gravity, and the output load if one is given);
-- ``peak_shaking_force`` [N]: the largest resultant force on the frame;
+- ``inertial_shaking_force`` [N]: the largest inertial shaking force |-sum m_i a_Gi| over the moving bodies
+  (Norton, *Design of Machinery*, 5th ed., ch. 12, the shaking force of a linkage: what the frame feels from
+  the motion alone, whatever the loads and the weight);
+- ``frame_force`` [N]: the largest resultant force of the linkage on the frame (inertia, weight and loads);
 - ``min_transmission`` [rad]: the smallest transmission angle of the engine's dyad;
 - ``flywheel_energy`` [J]: the maximum fluctuation of energy over a turn (full-turn designs only, NaN others;
   :func:`machdyn.linkage.energy_fluctuation`);
@@ -34,7 +37,8 @@ from .defects import Report
 #: Rankable quantities: key -> (label, SI unit, larger is better).
 QUANTITIES: dict[str, tuple[str, str, bool]] = {
     "peak_torque": ("Peak driving torque", "N*m", False),
-    "peak_shaking_force": ("Peak shaking force", "N", False),
+    "inertial_shaking_force": ("Peak inertial shaking force", "N", False),
+    "frame_force": ("Peak force on the frame", "N", False),
     "min_transmission": ("Worst transmission angle", "rad", True),
     "flywheel_energy": ("Fluctuation of energy per turn", "J", False),
     "flywheel_inertia": ("Flywheel needed", "kg*m^2", False),
@@ -99,6 +103,19 @@ def _model(group: list[Candidate], drive: Drive) -> Any:
     return mech
 
 
+def _inertial_shaking(mech: Any, kin: Any) -> np.ndarray:
+    """|-sum m a_G| [N] over the moving bodies at every position (designs x angles)."""
+    fx: Any = 0.0
+    fy: Any = 0.0
+    for body in mech.bodies:
+        g = kin.com(body.name)
+        m = np.asarray(body.mass, dtype=float)
+        m = m[:, None] if m.ndim else m  # one mass per design: a column against the crank angles
+        fx = fx - m * g.ax
+        fy = fy - m * g.ay
+    return np.hypot(fx, fy)
+
+
 def evaluate(cands: list[Candidate], reports: list[Report], drive: Drive = Drive(),
              chunk_positions: int = CHUNK_POSITIONS) -> dict[str, np.ndarray]:
     """The per-candidate quantities of :data:`QUANTITIES` (arrays in the candidates' order), by the engine."""
@@ -127,12 +144,14 @@ def evaluate(cands: list[Candidate], reports: list[Report], drive: Drive = Drive
                 torque = np.asarray(forces.driving_torque)
                 shake = np.asarray(forces.shaking_force)
                 mu = np.asarray(kin.dyad_reports[0].transmission)
+                inertial = _inertial_shaking(mech, kin)
             mu = np.minimum(mu, np.pi - mu)
             k = len(idx)
             bad = ~np.isfinite(torque[:k]).all(axis=1)
             # fmax / fmin skip NaN without warning (a design that cannot close is NaN throughout)
             out["peak_torque"][idx] = np.where(bad, np.nan, np.fmax.reduce(np.abs(torque[:k]), axis=1))
-            out["peak_shaking_force"][idx] = np.where(bad, np.nan, np.fmax.reduce(shake[:k], axis=1))
+            out["frame_force"][idx] = np.where(bad, np.nan, np.fmax.reduce(shake[:k], axis=1))
+            out["inertial_shaking_force"][idx] = np.where(bad, np.nan, np.fmax.reduce(inertial[:k], axis=1))
             out["min_transmission"][idx] = np.where(bad, np.nan, np.fmin.reduce(mu[:k], axis=1))
             if turns:
                 grid = np.linspace(0.0, TWO_PI, drive.positions, endpoint=False)

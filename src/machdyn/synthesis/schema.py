@@ -13,7 +13,7 @@ candidates = 40                # how many free choices are tried
 transmission_limit = "35 deg"
 
 [synthesis.ranking]
-by = "peak_torque"             # peak_torque | peak_shaking_force | min_transmission | flywheel_energy
+by = "peak_torque"             # peak_torque | inertial_shaking_force | frame_force | min_transmission | flywheel_energy
                                # | flywheel_inertia (for speed_fluctuation, default 0.05) | error
 speed = "60 rpm"
 linear_density = "6 kg/m"
@@ -42,8 +42,8 @@ FUNCTIONS = ("log10", "ln", "exp", "sqrt", "square", "cube", "reciprocal", "sin"
 class RankingSpec(Spec):
     """How candidates are run and ranked (see :mod:`machdyn.synthesis.rank`)."""
 
-    by: Literal["peak_torque", "peak_shaking_force", "min_transmission", "flywheel_energy", "flywheel_inertia",
-                "error"] = "peak_torque"
+    by: Literal["peak_torque", "inertial_shaking_force", "frame_force", "min_transmission", "flywheel_energy",
+                "flywheel_inertia", "error"] = "peak_torque"
     speed: AngularVelocity = 10.0
     linear_density: LinearDensity = 1.0
     output_torque: Torque = 0.0
