@@ -72,7 +72,12 @@ def test_population_dynamics_equal_the_engines_run_of_each_design():
         phi = c.angles[0] + c.direction * np.linspace(0, 2 * np.pi, 90, endpoint=False)
         a = analyse(mech, phi, 12.0 * c.direction, diagnostics=False)
         assert values["peak_torque"][i] == pytest.approx(np.max(np.abs(a.forces.driving_torque)), rel=1e-9)
-        assert values["peak_shaking_force"][i] == pytest.approx(np.max(a.forces.shaking_force), rel=1e-9)
+        assert values["frame_force"][i] == pytest.approx(np.max(a.forces.shaking_force), rel=1e-9)
+        # the inertial shaking force, -sum m a_G of the engine's centres of mass, for this design alone
+        kin = a.kinematics
+        fx = -sum(b.mass * kin.com(b.name).ax for b in mech.bodies)
+        fy = -sum(b.mass * kin.com(b.name).ay for b in mech.bodies)
+        assert values["inertial_shaking_force"][i] == pytest.approx(np.max(np.hypot(fx, fy)), rel=1e-9)
 
 
 def test_order_puts_defect_free_designs_first_and_sorts_by_the_chosen_quantity():
@@ -172,3 +177,61 @@ def test_every_task_runs_as_a_problem_file_and_writes_runnable_candidates(task, 
     run_problem(best)  # runs on its own
     html = result.report_html() if hasattr(result, "report_html") else ""
     assert "Synthesis" in html
+
+
+def test_fluctuation_of_energy_is_the_swing_of_kinetic_energy_without_loads():
+    """Work-energy: with no gravity and no load the crank's work at constant speed goes into kinetic energy
+    only, so the fluctuation of energy the ranking reports is max T - min T of the engine's kinetic energy, and
+    the flywheel needed is that over omega^2 Cs."""
+    cands = _crank_rockers()[:3]
+    reports = [check(c, Targets()) for c in cands]
+    drive = Drive(speed=10.0, linear_density=4.0, load=0.0, positions=720, gravity=False, speed_fluctuation=0.04)
+    values = evaluate(cands, reports, drive)
+    for i, c in enumerate(cands):
+        if not reports[i].full_turn:
+            continue
+        mech = replace(c.mechanism(linear_density=4.0), gravity=(0.0, 0.0))
+        phi = c.angles[0] + c.direction * np.linspace(0, 2 * np.pi, 720, endpoint=False)
+        kinetic = analyse(mech, phi, 10.0 * c.direction, diagnostics=False).energy.kinetic_total
+        assert values["flywheel_energy"][i] == pytest.approx(np.ptp(kinetic), rel=2e-4)  # 720 samples: ~5e-5
+        assert values["flywheel_inertia"][i] == pytest.approx(values["flywheel_energy"][i] / (100.0 * 0.04))
+
+
+@pytest.mark.parametrize(("body", "field"), [
+    ('task = "motion"\npositions = [["0 mm", "0 mm", "0 deg"]]\n', "synthesis.positions"),
+    ('task = "path"\npoints = [["0 mm", "0 mm"], ["1 mm", "0 mm"], ["2 mm", "1 mm"]]\ntiming = ["10 deg"]\n',
+     "synthesis.timing"),
+    ('task = "motion"\npositions = [["0 mm", "0 mm", "0 deg"], ["9 mm", "1 mm", "5 deg"]]\n'
+     'crank_pivot = ["0 mm", "-50 mm"]\n', "synthesis.crank_pivot"),
+    ('task = "function"\nfunction = "log10"\nx_range = [0.0, 1.0]\ninput_range = ["0 deg", "90 deg"]\n'
+     'output_range = ["0 deg", "90 deg"]\n', "synthesis.x_range"),
+    ('task = "quick_return"\nswing = "200 deg"\nrocker = "100 mm"\n', "synthesis.swing"),
+    ('task = "motion"\npositions = [["0 mm", "0 mm", "0 deg"], ["0 mm", "0 mm", "0 deg"], ["5 mm", "0 mm", "9 deg"]]\n',
+     "synthesis.positions"),
+    ('task = "quick_return"\nswing = "40 deg"\nrocker = "100 mm"\ntime_ratio = 0.5\n', "synthesis.time_ratio"),
+])
+def test_task_rules_name_the_field(body, field, tmp_path):
+    path = tmp_path / "bad.toml"
+    path.write_text(f'[meta]\nname = "bad"\n\n[synthesis]\n{body}', encoding="utf-8")
+    checked = CliRunner().invoke(app, ["check", str(path)])
+    assert checked.exit_code == 2 and field in checked.stderr, checked.stderr
+
+
+def test_a_task_without_any_linkage_fails_its_check_and_still_writes_its_report(tmp_path):
+    path = tmp_path / "none.toml"
+    path.write_text('[meta]\nname = "none"\n\n[synthesis]\ntask = "motion"\npositions = [["0 mm", "0 mm", "0 deg"], '
+                    '["80 mm", "60 mm", "-30 deg"], ["180 mm", "40 mm", "-90 deg"]]\nmax_length = "1 mm"\n'
+                    'candidates = 5\n', encoding="utf-8")
+    ran = CliRunner().invoke(app, ["run", str(path), "--out", str(tmp_path / "out")])
+    assert ran.exit_code == 3 and "gave no linkage" in ran.output
+    assert "No linkage was found" in (tmp_path / "out" / "report.html").read_text()
+
+
+def test_a_degenerate_motion_task_ends_with_a_failed_check(tmp_path):
+    """Three positions that turn about one fixed point (a pole common to all): no dyad's system is regular; the
+    sampling of free choices gives up and the run says so (exit 3) instead of searching forever."""
+    path = tmp_path / "pole.toml"
+    path.write_text('[meta]\nname = "pole"\n\n[synthesis]\ntask = "motion"\npositions = [["0 mm", "0 mm", "0 deg"], '
+                    '["0 mm", "0 mm", "10 deg"], ["0 mm", "0 mm", "20 deg"]]\ncandidates = 5\n', encoding="utf-8")
+    ran = CliRunner().invoke(app, ["run", str(path), "--out", str(tmp_path / "out"), "--quiet"])
+    assert ran.exit_code == 3

@@ -109,6 +109,11 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
     from ..synthesis.rank import QUANTITIES
 
     result = outcome.results
+    if result is None:  # the task gave no linkage at all: say why
+        from html import escape
+
+        why = "; ".join(outcome.failed_checks) or "no candidate"
+        return [("Synthesis", f"<p>No linkage was found: {escape(why)}</p>")]
     first = plot_function if result.task == "function" else plot_candidates
 
     def draw(fig: Any) -> None:
@@ -120,14 +125,14 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
                        "coupler point's path (solid over the working range, dotted a full turn) over the task's "
                        "targets. Right: every candidate's ranking quantity against its kinematic error.",
                        (10.0, 4.4), draw, margins=(0.75, 0.3, 0.6, 0.45), wspace=0.35)]
-    head = ["#", "method", *[n for n in ("crank", "coupler", "rocker", "ground")], "ground pivot",
-            f"{QUANTITIES[result.ranked_by][0]}", "worst μ [deg]", "error", "defects"]
+    head = ["#", "method", "links [mm]", "crank pivot", f"{QUANTITIES[result.ranked_by][0]}", "worst μ [deg]",
+            "error", "defects"]
     rows = []
     for k, (c, r) in enumerate(zip(result.candidates[:10], result.reports[:10], strict=False)):
         v = result.values[result.ranked_by][k]
         unit = QUANTITIES[result.ranked_by][1]
-        rows.append([str(k + 1), c.method, *[f"{format_value(1e3 * x)} mm" for x in
-                                            (c.crank, c.coupler, c.rocker, c.ground)],
+        links = ", ".join(f"{name} {format_value(1e3 * value)}" for name, value in c.lengths().items())
+        rows.append([str(k + 1), c.method, links,
                      f"({format_value(1e3 * c.origin.real)}, {format_value(1e3 * c.origin.imag)}) mm",
                      f"{format_value(np.degrees(v) if unit == 'rad' else v)} {'deg' if unit == 'rad' else unit}",
                      format_value(np.degrees(result.values['min_transmission'][k])),

@@ -2,7 +2,8 @@
 
 For four positions the standard dyad form (:mod:`machdyn.synthesis.dyads`) has three equations in W, Z; they
 are consistent only if the determinant of the augmented matrix vanishes (Erdman, Sandor & Kota, *Mechanism
-Design*, 4th ed., ch. 8, the compatibility equation; Norton, *Design of Machinery*, 5th ed., §5.11):
+Design*, 4th ed., ch. 8, the compatibility equation; Norton, *Design of Machinery*, 5th ed., ch. 5, four- and
+five-position synthesis):
 
     D_1 + D_2 e^{i beta_2} + D_3 e^{i beta_3} + D_4 e^{i beta_4} = 0,
 

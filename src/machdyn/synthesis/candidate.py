@@ -2,7 +2,7 @@
 
 A candidate holds its dimensions, where its crank pivot sits in the task's coordinates, its assembly branch, the
 crank angles at the task's precision positions and the free choices that made it. Its position closure is the
-engine's (Norton, *Design of Machinery*, 5th ed., §4.5, eqs 4.10 for the four-bar and §4.6 for the slider-crank,
+engine's (Norton, *Design of Machinery*, 5th ed., ch. 4, position analysis of the four-bar and the slider-crank,
 written as intersections of circles and of a circle with a line), so what a candidate says about itself and what
 the engine computes from its model agree to rounding. :meth:`Candidate.mechanism` builds that model with the
 crank pivot at the origin (the builders' frame); :meth:`Candidate.place` moves engine results back to the task.
@@ -127,7 +127,7 @@ class Candidate:
 
     def transmission(self, phi: Any) -> np.ndarray:
         """Transmission angle [rad], 0..pi/2 (pi/2 best): the acute angle between coupler and rocker (four-bar;
-        Norton §4.10, eq. 4.32) or 90 deg less the rod's angle to the slide line (slider-crank)."""
+        Norton, ch. 3 and 4, the transmission angle) or 90 deg less the rod's angle to the slide line (slider-crank)."""
         a, b, _ = self.joints(phi)
         if self.kind == "slider_crank":
             beta = np.angle((b - a) * np.exp(-1j * self.slide_angle))

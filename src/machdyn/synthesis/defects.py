@@ -1,8 +1,8 @@
 """The defects of a synthesised linkage, checked for every candidate rather than left to the designer.
 
 - **branch** (circuit) defect: the linkage, assembled one way (one branch of its closure), does not reach every
-  precision position: some were met only by the other assembly (Norton, *Design of Machinery*, 5th ed., §5.11
-  and §4.13 on circuits and branches; Erdman, Sandor & Kota, *Mechanism Design*, ch. 8, branch and order
+  precision position: some were met only by the other assembly (Norton, *Design of Machinery*, 5th ed., ch. 4
+  and 5 on circuits and branches; Erdman, Sandor & Kota, *Mechanism Design*, ch. 8, branch and order
   rectification). Found by running the candidate's own single-branch closure through the positions.
 - **order** defect: the crank, turning one way, meets the positions in another order than the task's.
 - **Grashof** defect: the crank cannot turn a full revolution when the task needs a motor-driven crank
@@ -10,7 +10,8 @@
 - **assembly** defect: somewhere between two positions the linkage cannot close (it would have to be taken
   apart to go on).
 - **transmission** defect: the transmission angle falls below the limit somewhere in the working range
-  (Norton §3.3 and §4.10: 40 deg is a common lower limit for fast machines, 30 deg the usual minimum).
+  (Norton, ch. 3, the transmission angle: 40 deg is a common lower limit for fast machines, 30 deg the
+  usual minimum).
 
 Targets are what the task prescribes: coupler points [m] (complex), coupler angles [rad], output angles [rad];
 the errors are measured at the candidate's crank angles for the positions.

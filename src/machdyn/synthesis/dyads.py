@@ -3,13 +3,13 @@
 A dyad is a link from a ground pivot to a moving pivot (the vector W in the first position) and the coupler
 vector Z from that moving pivot to the coupler's precision point P. Through positions j = 2..n of the coupler
 (P_j, coupler angle theta_j) it satisfies (Erdman, Sandor & Kota, *Mechanism Design*, 4th ed., ch. 8, the standard
-form; Norton, *Design of Machinery*, 5th ed., §5.4 for two positions and §5.7 for three)
+form; Norton, *Design of Machinery*, 5th ed., ch. 5, two- and three-position analytical synthesis)
 
     W (e^{i beta_j} - 1) + Z (e^{i alpha_j} - 1) = delta_j,
 
 with alpha_j = theta_j - theta_1 the coupler's rotations, delta_j = P_j - P_1 the point's displacements and
 beta_j the link's rotations. Two positions: Z and beta_2 are free choices, W follows. Three positions: beta_2 and
-beta_3 are free, W and Z follow from a 2x2 complex linear system (Norton §5.7). Four and five
+beta_3 are free, W and Z follow from a 2x2 complex linear system (Norton, ch. 5). Four and five
 positions: :mod:`machdyn.synthesis.burmester`. The ground pivot is P_1 - Z - W and the moving pivot P_1 - Z.
 
 Valid wherever the linear system is not singular (beta_j = alpha_j for all j gives no dyad).
@@ -59,7 +59,7 @@ def displacements(points: Any, angles: Any) -> tuple[np.ndarray, np.ndarray]:
 
 def two_positions(points: Any, angles: Any, z: complex, beta2: float) -> Dyad:
     """The dyad through two positions with the free choices ``z`` [m] (the coupler vector) and ``beta2`` [rad]:
-    W = (delta_2 - Z (e^{i alpha_2} - 1)) / (e^{i beta_2} - 1) (Norton §5.4)."""
+    W = (delta_2 - Z (e^{i alpha_2} - 1)) / (e^{i beta_2} - 1) (Norton, ch. 5, two positions)."""
     delta, alpha = displacements(points, angles)
     den = np.exp(1j * beta2) - 1.0
     if abs(den) < 1e-12:
@@ -70,7 +70,7 @@ def two_positions(points: Any, angles: Any, z: complex, beta2: float) -> Dyad:
 
 def solve(points: Any, angles: Any, betas: Any) -> Dyad | None:
     """The dyad through the positions with link rotations ``betas`` = (beta_2, ..., beta_n) [rad]: exact for
-    three positions (2x2 system, Norton §5.7); for four or five, the first two equations give W and Z
+    three positions (2x2 system, Norton, ch. 5); for four or five, the first two equations give W and Z
     and the rest must hold (the Burmester condition), else None. None also when the system is singular."""
     delta, alpha = displacements(points, angles)
     b = np.asarray(betas, dtype=float)
@@ -96,7 +96,7 @@ def three_positions(points: Any, angles: Any, beta2: float, beta3: float) -> Dya
 
 
 def with_ground_pivot(points: Any, angles: Any, pivot: complex) -> Dyad | None:
-    """The dyad through three positions whose ground pivot is ``pivot`` [m] (Norton §5.9, "synthesis for a
+    """The dyad through three positions whose ground pivot is ``pivot`` [m] (Norton, ch. 5, "synthesis for a
     specified fixed pivot location"; the inversion construction of the circle point).
 
     The circle point's offset q from P_1 (complex, [m], in the first position) keeps its three positions

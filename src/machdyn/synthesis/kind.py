@@ -3,8 +3,9 @@
 Registered in :mod:`machdyn.kinds` as ``"synthesis": "machdyn.synthesis.kind:KIND"``. The run's results:
 ``synthesis.candidates`` and ``synthesis.defect_free`` (counts), the best candidate's dimensions
 (``synthesis.best.<link>``) and quantities (``synthesis.best.<quantity>``); the series
-``synthesis_candidates.csv`` lists every candidate ranked; ``best_<k>.toml`` are the best ``keep`` candidates as
-mechanism problem files. No candidate free of defects is a failed design check (exit code 3).
+``synthesis_candidates.csv`` lists every candidate ranked; ``best_<k>.toml`` are the best ``keep`` candidates the
+engine can run over their range (no assembly defect, no dead position) as mechanism problem files. No candidate
+free of defects is a failed design check (exit code 3).
 """
 
 from __future__ import annotations
@@ -71,12 +72,20 @@ def analyse(problem: Any, _model: Any, step: Step) -> Outcome:
                            "synthesis.best.offset", "synthesis.best.error", f"synthesis.best.{result.ranked_by}",
                            "synthesis.best.min_transmission") if k in scalars]
     files = {}
-    for k, c in enumerate(result.candidates[:spec.ranking.keep]):
-        turns = result.reports[k].full_turn and spec.full_turn
-        files[f"best_{k + 1}.toml"] = problem_text(
+    written = 0
+    for k, (c, report) in enumerate(zip(result.candidates, result.reports, strict=True)):
+        if written >= spec.ranking.keep:
+            break
+        # Only a linkage the engine can run over its range is written: it closes everywhere and passes no
+        # dead position (a transmission angle of zero).
+        if any(d.startswith("assembly") for d in report.defects) or not report.min_transmission > 1e-3:
+            continue
+        written += 1
+        turns = report.full_turn and spec.full_turn
+        files[f"best_{written}.toml"] = problem_text(
             c, result.drive, name=f"{problem.meta.name}: candidate {k + 1}",
             note=f"Rank {k + 1} of {len(result.candidates)} by {result.ranked_by}; defects: "
-                 f"{'; '.join(result.reports[k].defects) or 'none'}.", full_turn=turns)
+                 f"{'; '.join(report.defects) or 'none'}.", full_turn=turns)
     failed = () if result.defect_free else (
         f"none of the {len(result.candidates)} candidates is free of defects (the best has: "
         f"{'; '.join(result.reports[0].defects)})",)

@@ -4,7 +4,7 @@ Each position is a point of the coupler P_j [m] and the coupler's angle theta_j 
 positions come from the standard form (:mod:`machdyn.synthesis.dyads`: two and three positions, with their free
 choices either given or sampled) or from Burmester theory (:mod:`machdyn.synthesis.burmester`: four positions,
 the curves sampled; five, the Burmester points); two dyads make a four-bar, the first driven as the crank
-(Norton, *Design of Machinery*, 5th ed., §5.4-5.11; Erdman, Sandor & Kota, *Mechanism Design*, ch. 8).
+(Norton, *Design of Machinery*, 5th ed., ch. 5; Erdman, Sandor & Kota, *Mechanism Design*, ch. 8).
 
 Free choices are sampled from a seeded generator, so a task always gives the same candidates. Candidates whose
 links are longer than ``max_length`` or shorter than ``min_length`` [m] are left out.
@@ -70,7 +70,9 @@ def sampled_dyads(points: Any, angles: Any, count: int, rng: np.random.Generator
             d = solve(p, t, betas)
             return [] if d is None else [d]
         out = []
-        while len(out) < count:
+        tries = 0
+        while len(out) < count and tries < 50 * count:  # a degenerate task gives no dyad for any choice
+            tries += 1
             sign = rng.choice([-1, 1])
             if role == "crank":
                 b2 = sign * rng.uniform(np.radians(10), np.radians(160))

@@ -3,7 +3,7 @@ timing (the crank's rotation between the points).
 
 Three points: closed form. The coupler's rotations alpha_2, alpha_3 become free choices and each dyad follows
 from the standard form (:mod:`machdyn.synthesis.dyads`): with prescribed timing the crank dyad's rotations
-beta_j are the given ones and the rocker dyad's gamma_j are free (Norton, *Design of Machinery*, 5th ed., §5.12,
+beta_j are the given ones and the rocker dyad's gamma_j are free (Norton, *Design of Machinery*, 5th ed., ch. 5,
 "path generation with prescribed timing"; Erdman, Sandor & Kota, *Mechanism Design*, ch. 8); without timing
 the beta_j are free too.
 
@@ -157,7 +157,8 @@ def path_candidates(points: Any, *, timing: Any = None, count: int = 60, seed: i
     """Four-bars whose coupler point passes the ``points`` [m] (complex; 3 or more), with ``timing`` (crank
     rotations from the first point [rad]) or without. Three points: :func:`three_points`; more: ``seeds``
     (default ``count``) closed-form seeds through the first, middle and last point refined by :func:`refine`,
-    the exact ones (error < 1e-9 of the task's size) kept; ``transmission_limit`` and ``full_turn`` as
+    the exact ones (error < 1e-9 of the task's size) kept, or when there is none the closest ones (each
+    candidate's error is reported by :mod:`.defects`); ``transmission_limit`` and ``full_turn`` as
     :func:`refine`."""
     p = np.asarray(points, dtype=complex)
     if p.size < 3:
@@ -175,11 +176,18 @@ def path_candidates(points: Any, *, timing: Any = None, count: int = 60, seed: i
     hi = 5.0 * scale if max_length is None else float(max_length)
     lo = 0.02 * scale if min_length is None else float(min_length)
     out: list[Candidate] = []
+    near: list[tuple[float, Candidate]] = []
     for s in starts:
         cand, err = refine(s, p, timing=t, transmission_limit=transmission_limit, full_turn=full_turn)
         lengths = np.array(list(cand.lengths().values()))
-        if err < 1e-9 * scale and lengths.max() <= hi and lengths.min() >= lo:
+        if not (np.isfinite(err) and lengths.max() <= hi and lengths.min() >= lo):
+            continue
+        if err < 1e-9 * scale:
             out.append(cand)
+        else:
+            near.append((err, cand))
         if len(out) >= count:
             break
+    if not out:  # no exact linkage (more points than the fit can pass, or timing too strict): the closest ones
+        out = [c for _, c in sorted(near, key=lambda e: e[0])[:count]]
     return out

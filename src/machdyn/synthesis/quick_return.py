@@ -9,13 +9,13 @@ the time ratio (slow stroke over fast stroke at constant crank speed) is
 and the crank pivot O2 sees the chord B1 B2 under the angle delta: it lies on the circle through B1 and B2 on
 which that chord subtends the inscribed angle delta (a straight line through B1 B2 when Q = 1). Any point of
 the arc gives a linkage; its position along the arc is the designer's free choice (Norton, *Design of
-Machinery*, 5th ed., §3.3, Examples 3-1 and 3-2 for Q = 1 and §3.7, Example 3-9 for a quick return; A. S. Hall,
+Machinery*, 5th ed., ch. 3, the crank-rocker for a rocker swing and the quick-return fourbar; A. S. Hall,
 *Kinematics and Linkage Design*, 1961, the same construction). With O2 on the arc,
 
     a = (|O2 B1| - |O2 B2|) / 2,     b = (|O2 B1| + |O2 B2|) / 2.
 
 For the slider-crank the chord is the stroke on the slide line and the offset is O2's distance from that line
-(Norton §3.7 for the offset slider-crank's time ratio).
+(Norton, ch. 3, quick-return mechanisms, for the offset slider-crank's time ratio).
 
 Validity: 0 < swing < 180 deg, Q >= 1 (Q < 3 is usual: delta < 90 deg). Points of the arc near B2 give a
 tiny crank and near its middle a crank as long as the coupler; the defects module reports Grashof and
@@ -31,7 +31,7 @@ from .candidate import Candidate, four_bar_from_points
 
 
 def construction_angle(time_ratio: float) -> float:
-    """delta [rad] of a time ratio Q >= 1: delta = pi (Q - 1) / (Q + 1) (Norton §3.7).
+    """delta [rad] of a time ratio Q >= 1: delta = pi (Q - 1) / (Q + 1) (Norton, ch. 3, time ratio).
 
     >>> round(float(np.degrees(construction_angle(1.25))), 4)
     20.0

@@ -9,10 +9,16 @@ each design gets:
 
 - ``peak_torque`` [N*m]: the largest driving torque on the crank (inertia of uniform bars of the given linear
   density, gravity, and the output load if one is given);
-- ``peak_shaking_force`` [N]: the largest resultant force on the frame;
+- ``inertial_shaking_force`` [N]: the largest inertial shaking force |-sum m_i a_Gi| over the moving bodies
+  (Norton, *Design of Machinery*, 5th ed., ch. 12, the shaking force of a linkage: what the frame feels from
+  the motion alone, whatever the loads and the weight);
+- ``frame_force`` [N]: the largest resultant force of the linkage on the frame (inertia, weight and loads);
 - ``min_transmission`` [rad]: the smallest transmission angle of the engine's dyad;
 - ``flywheel_energy`` [J]: the maximum fluctuation of energy over a turn (full-turn designs only, NaN others;
-  :func:`machdyn.linkage.energy_fluctuation`), the flywheel needed being dE / (Cs omega^2);
+  :func:`machdyn.linkage.energy_fluctuation`);
+- ``flywheel_inertia`` [kg*m^2]: the flywheel that holds the crank speed within the coefficient of fluctuation
+  Cs, I = dE / (omega^2 Cs) (Khurmi & Gupta, *Theory of Machines*, ch. 16;
+  :func:`machdyn.dynamics.flywheel.flywheel_inertia_classic`);
 - ``error`` [m or rad]: the kinematic error at the precision positions (from :mod:`.defects`).
 
 The population is ranked by the chosen quantity, defect-free designs first, then by kinematic error.
@@ -31,9 +37,11 @@ from .defects import Report
 #: Rankable quantities: key -> (label, SI unit, larger is better).
 QUANTITIES: dict[str, tuple[str, str, bool]] = {
     "peak_torque": ("Peak driving torque", "N*m", False),
-    "peak_shaking_force": ("Peak shaking force", "N", False),
+    "inertial_shaking_force": ("Peak inertial shaking force", "N", False),
+    "frame_force": ("Peak force on the frame", "N", False),
     "min_transmission": ("Worst transmission angle", "rad", True),
     "flywheel_energy": ("Fluctuation of energy per turn", "J", False),
+    "flywheel_inertia": ("Flywheel needed", "kg*m^2", False),
     "error": ("Kinematic error at the positions", "", False),
 }
 
@@ -44,7 +52,8 @@ CHUNK_POSITIONS = 1 << 17
 class Drive:
     """How the candidates are run: crank ``speed`` [rad/s], bars of ``linear_density`` [kg/m], a resisting
     ``load`` on the output (a torque [N*m] on the rocker, counter-clockwise positive, or a force [N] on the
-    slider along its line), ``positions`` per working range and ``full_turn`` (run full-turn cranks round)."""
+    slider along its line), ``positions`` per working range, ``full_turn`` (run full-turn cranks round) and the
+    coefficient of speed fluctuation ``speed_fluctuation`` [-] a flywheel is sized for."""
 
     speed: float = 10.0
     linear_density: float = 1.0
@@ -52,6 +61,7 @@ class Drive:
     positions: int = 121
     full_turn: bool = True
     gravity: bool = True
+    speed_fluctuation: float = 0.05
 
 
 def _angles(c: Candidate, report: Report, drive: Drive) -> np.ndarray:
@@ -93,9 +103,23 @@ def _model(group: list[Candidate], drive: Drive) -> Any:
     return mech
 
 
+def _inertial_shaking(mech: Any, kin: Any) -> np.ndarray:
+    """|-sum m a_G| [N] over the moving bodies at every position (designs x angles)."""
+    fx: Any = 0.0
+    fy: Any = 0.0
+    for body in mech.bodies:
+        g = kin.com(body.name)
+        m = np.asarray(body.mass, dtype=float)
+        m = m[:, None] if m.ndim else m  # one mass per design: a column against the crank angles
+        fx = fx - m * g.ax
+        fy = fy - m * g.ay
+    return np.hypot(fx, fy)
+
+
 def evaluate(cands: list[Candidate], reports: list[Report], drive: Drive = Drive(),
              chunk_positions: int = CHUNK_POSITIONS) -> dict[str, np.ndarray]:
     """The per-candidate quantities of :data:`QUANTITIES` (arrays in the candidates' order), by the engine."""
+    from ..dynamics.flywheel import flywheel_inertia_classic
     from ..linkage import energy_fluctuation, kinematics, kinetostatics
 
     n = len(cands)
@@ -120,17 +144,21 @@ def evaluate(cands: list[Candidate], reports: list[Report], drive: Drive = Drive
                 torque = np.asarray(forces.driving_torque)
                 shake = np.asarray(forces.shaking_force)
                 mu = np.asarray(kin.dyad_reports[0].transmission)
+                inertial = _inertial_shaking(mech, kin)
             mu = np.minimum(mu, np.pi - mu)
             k = len(idx)
             bad = ~np.isfinite(torque[:k]).all(axis=1)
             # fmax / fmin skip NaN without warning (a design that cannot close is NaN throughout)
             out["peak_torque"][idx] = np.where(bad, np.nan, np.fmax.reduce(np.abs(torque[:k]), axis=1))
-            out["peak_shaking_force"][idx] = np.where(bad, np.nan, np.fmax.reduce(shake[:k], axis=1))
+            out["frame_force"][idx] = np.where(bad, np.nan, np.fmax.reduce(shake[:k], axis=1))
+            out["inertial_shaking_force"][idx] = np.where(bad, np.nan, np.fmax.reduce(inertial[:k], axis=1))
             out["min_transmission"][idx] = np.where(bad, np.nan, np.fmin.reduce(mu[:k], axis=1))
             if turns:
                 grid = np.linspace(0.0, TWO_PI, drive.positions, endpoint=False)
                 de = energy_fluctuation(np.where(np.isfinite(torque[:k]), torque[:k], 0.0), grid)
                 out["flywheel_energy"][idx] = np.where(bad, np.nan, de)
+                out["flywheel_inertia"][idx] = np.where(bad, np.nan, flywheel_inertia_classic(
+                    de, abs(drive.speed), drive.speed_fluctuation))
     return out
 
 

@@ -13,7 +13,8 @@ candidates = 40                # how many free choices are tried
 transmission_limit = "35 deg"
 
 [synthesis.ranking]
-by = "peak_torque"             # peak_torque | peak_shaking_force | min_transmission | flywheel_energy | error
+by = "peak_torque"             # peak_torque | inertial_shaking_force | frame_force | min_transmission | flywheel_energy
+                               # | flywheel_inertia (for speed_fluctuation, default 0.05) | error
 speed = "60 rpm"
 linear_density = "6 kg/m"
 output_torque = "-40 N*m"      # resisting torque on the rocker (or output_force on a slider)
@@ -28,7 +29,7 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import Field
+from pydantic import Field, field_validator
 
 from ..problem.fields import Angle, AngularVelocity, Force, Length, LinearDensity, PositiveLength, Torque
 from ..problem.schema import Meta, Spec
@@ -41,14 +42,25 @@ FUNCTIONS = ("log10", "ln", "exp", "sqrt", "square", "cube", "reciprocal", "sin"
 class RankingSpec(Spec):
     """How candidates are run and ranked (see :mod:`machdyn.synthesis.rank`)."""
 
-    by: Literal["peak_torque", "peak_shaking_force", "min_transmission", "flywheel_energy", "error"] = "peak_torque"
+    by: Literal["peak_torque", "inertial_shaking_force", "frame_force", "min_transmission", "flywheel_energy",
+                "flywheel_inertia", "error"] = "peak_torque"
     speed: AngularVelocity = 10.0
     linear_density: LinearDensity = 1.0
     output_torque: Torque = 0.0
     output_force: Force = 0.0
     gravity: bool = True
+    speed_fluctuation: float = Field(0.05, gt=0.0, lt=1.0, allow_inf_nan=False)
     positions: int = Field(121, ge=16, le=3601, strict=True)
     keep: int = Field(3, ge=0, le=20, strict=True)
+
+    @field_validator("speed")
+    @classmethod
+    def _turning(cls, speed: float) -> float:
+        from ..problem.fields import FieldError
+
+        if not speed > 0.0:  # the direction each candidate turns follows from its task
+            raise FieldError(f"must be > 0 rad/s (each candidate turns the way its task needs); got {speed:g} rad/s")
+        return speed
 
 
 class SynthesisSpec(Spec):
@@ -119,6 +131,16 @@ def problems(spec: SynthesisSpec) -> list[tuple[str, str]]:
         if getattr(spec, name) is not None and not (spec.task == "motion" and len(spec.positions) == 3):
             out.append((f"synthesis.{name}", f"can be given for a motion task of 3 positions only; the task is "
                                              f"'{spec.task}' with {len(spec.positions)} positions"))
+    if spec.task == "motion":
+        seen = [(round(x, 12), round(y, 12), round(a, 12)) for x, y, a in spec.positions]
+        if len(set(seen)) != len(seen):
+            out.append(("synthesis.positions", "must all differ (a repeated position gives no linkage); got "
+                                               f"{len(seen) - len(set(seen))} repeated"))
+    if spec.task == "path" and spec.points:
+        seen2 = [(round(x, 12), round(y, 12)) for x, y in spec.points]
+        if len(set(seen2)) != len(seen2):
+            out.append(("synthesis.points", "must all differ (a coupler point passes each once); got "
+                                            f"{len(seen2) - len(set(seen2))} repeated"))
     if spec.task == "path":
         if len(spec.points) < 3:
             out.append(("synthesis.points", f"path generation needs at least 3 points [x, y]; got "

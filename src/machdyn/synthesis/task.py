@@ -140,7 +140,8 @@ def synthesise(spec: Any) -> SynthesisResult:
     r = spec.ranking
     drive = Drive(speed=r.speed, linear_density=r.linear_density,
                   load=r.output_force if spec.task == "slider_quick_return" else r.output_torque,
-                  positions=r.positions, full_turn=spec.full_turn, gravity=r.gravity)
+                  positions=r.positions, full_turn=spec.full_turn, gravity=r.gravity,
+                  speed_fluctuation=r.speed_fluctuation)
     values = evaluate(cands, reports, drive)
     if spec.task == "function":  # the structural error over the whole range, not only at the points
         from .function import output_error
