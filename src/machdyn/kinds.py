@@ -31,6 +31,7 @@ CAPABILITIES: dict[str, str] = {
     "optimise": "machdyn.optimise.stage:CAPABILITY",
     "drivetrain": "machdyn.drivetrain.stage:CAPABILITY",
     "parts": "machdyn.drivetrain.parts_stage:CAPABILITY",
+    "shaft_cam": "machdyn.cams.shaft:CAPABILITY",
 }
 
 

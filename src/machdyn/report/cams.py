@@ -156,3 +156,8 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
         html += "<p>Jumps in the program (the fundamental law of cam design asks for none):</p>" + rows_html(
             [[row[0]] for row in rows], ("jump",))
     return [("Cam", html + figures_html(figs))]
+
+
+def shaft_sections(outcome: Any) -> list[tuple[str, str]]:
+    """The ``[shaft_cam]`` section of a linkage file: the cam's section under its own heading."""
+    return [("Cam on the crank shaft", html) for _, html in sections(outcome)]
