@@ -32,6 +32,7 @@ bench: $(BENCH_STAMP)
 	$(BIN)/python bench/explore.py throughput
 	$(BIN)/python bench/optimise.py
 	$(BIN)/python bench/cli.py
+	$(BIN)/python bench/cams.py
 
 lint: $(STAMP)
 	$(BIN)/ruff check src tests bench
