@@ -134,3 +134,21 @@ def test_a_flywheel_without_the_follower_train_is_refused(tmp_path):
         result = runner.invoke(app, args)
         assert result.exit_code == 2, result.output
         assert "flywheel" in result.output and "[cam.dynamics]" in result.output
+
+
+def test_the_flat_faced_valve_cam_sizes_its_spring_and_checks_its_face(tmp_path):
+    valve = ROOT / "examples" / "valve_cam_flat.toml"
+    assert (ROOT / "src" / "machdyn" / "data" / "examples" / "valve_cam_flat.toml").read_text() == valve.read_text()
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["run", str(valve), "--out", str(out), "-q"])
+    assert result.exit_code == 0, result.output
+    scalars = json.loads((out / "results.json").read_text())["scalars"]
+    assert scalars["cam.jump_speed"]["value"] == pytest.approx(3600.0, rel=1e-4)  # 3000 rpm x 1.2
+    assert scalars["cam.max_pressure_angle"]["value"] == 0.0
+    svaj = pd.read_csv(out / "cam_svaj.csv")
+    span = float(svaj["v [m/rad]"].max() - svaj["v [m/rad]"].min())
+    assert scalars["cam.face_width"]["value"] == pytest.approx((span + 0.002) * 1e3, rel=1e-9)
+    narrow = tmp_path / "narrow.toml"
+    narrow.write_text(valve.read_text().replace('face_width = "30 mm"', 'face_width = "16 mm"'))
+    failed = runner.invoke(app, ["run", str(narrow), "--out", str(tmp_path / "o2"), "-q"])
+    assert failed.exit_code == 3 and "too narrow" in failed.output

@@ -53,8 +53,9 @@ LABELS: dict[str, Label] = {**_FIXED, **{k: Label(t, u[0], u[1]) for k, (t, u, _
 
 SUMMARY = ("cam.stroke", "cam.max_velocity", "cam.max_acceleration", "cam.max_pressure_angle",
            "cam.pressure_angle_limit", "cam.min_pitch_curvature_radius", "cam.min_surface_curvature_radius",
-           "cam.min_base_radius_pressure", "cam.face_width", "cam.spring_rate", "cam.spring_preload",
-           "cam.jump_speed", "cam.min_contact_force", "cam.max_normal_force", "cam.peak_torque", "cam.mean_power")
+           "cam.min_base_radius_pressure", "cam.min_base_radius_curvature", "cam.face_width", "cam.spring_rate",
+           "cam.spring_preload", "cam.jump_speed", "cam.min_contact_force", "cam.max_normal_force",
+           "cam.peak_torque", "cam.mean_power")
 
 
 @dataclass(frozen=True)
@@ -80,6 +81,7 @@ class CamResult:
     forces: Any
     simulation: Any
     clockwise: bool
+    face_width_given: float | None = None
 
     def machine(self, positions: int = 720):
         """The cam machine reduced to the camshaft (:func:`~machdyn.cams.dynamics.cam_machine`); a camshaft of
@@ -222,7 +224,8 @@ def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
         "cam.max_jerk": float(np.max(np.abs(j))), "cam.max_pressure_angle": chk.max_pressure_angle,
         "cam.pressure_angle_limit": chk.pressure_angle_limit, "cam.jumps": float(len(model.program.jumps)),
     }
-    if np.isfinite(chk.min_pitch_radius):
+    flat = model.follower.contact == "flat"
+    if np.isfinite(chk.min_pitch_radius) and not flat:  # a flat face's "pitch curve" is the surface itself
         values["cam.min_pitch_curvature_radius"] = chk.min_pitch_radius
     if np.isfinite(chk.min_surface_radius):
         values["cam.min_surface_curvature_radius"] = chk.min_surface_radius
@@ -230,6 +233,8 @@ def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
     failed = list(chk.failed)
     for key, val in (("cam.min_base_radius_pressure", chk.min_base_radius_pressure),
                      ("cam.min_base_radius_curvature", chk.min_base_radius_curvature)):
+        if flat and key == "cam.min_base_radius_pressure":
+            continue  # the face is square to the path: the pressure angle is 0 whatever the base circle
         if np.isfinite(val):
             values[key] = val
         else:
@@ -267,7 +272,8 @@ def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
     labels = {}
     if osc:
         labels = {k: Label(t, u[0], u[1]) for k, (t, _, u) in _MOTION_LABELS.items()}
-    result = CamResult(model, speed, chk, spring, forces, sim, cam.rotation == "cw")
+    result = CamResult(model, speed, chk, spring, forces, sim, cam.rotation == "cw",
+                       None if cam.checks.face_width is None else float(cam.checks.face_width))
     return Outcome(results=result, scalars=values, labels=labels, series=_series(result, osc),
                    files=_files(problem, prof), summary=tuple(k for k in SUMMARY if k in values),
                    warnings=tuple(warnings), failed_checks=tuple(failed))
