@@ -36,7 +36,8 @@ _FIXED = {
     "cam.rms_torque": Label("Camshaft torque: RMS over the turn", "N*m"),
     "cam.work_per_cycle": Label("Camshaft torque: work per turn (the damper's loss)", "J",
                                 zero_below="cam.peak_torque"),
-    "cam.mean_power": Label("Camshaft: mean power", "W", zero_below="cam.peak_torque"),
+    "cam.mean_power": Label("Camshaft: mean power", "W", zero_below="cam.peak_power"),
+    "cam.peak_power": Label("Camshaft: peak power |T omega|", "W"),
     "cam.max_reduced_inertia": Label("Reduced inertia at the camshaft: largest", "kg*m^2"),
     "cam.simulated_max_separation": Label("Simulated follower: largest lift-off from the cam", "m", "mm"),
     "cam.jumps": Label("Jumps of velocity or acceleration in the program", ""),
@@ -256,6 +257,7 @@ def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
                    "cam.rms_torque": float(np.sqrt(np.mean(forces.torque**2))),
                    "cam.work_per_cycle": forces.work_per_cycle,
                    "cam.mean_power": forces.work_per_cycle * speed / (2 * np.pi),
+                   "cam.peak_power": float(np.max(np.abs(forces.torque))) * speed,
                    "cam.max_reduced_inertia": float(np.max(train.cam_inertia + train.mass * m.v**2))}
         if np.isfinite(forces.jump_speed):
             values["cam.jump_speed"] = forces.jump_speed
