@@ -6,7 +6,9 @@ The cam: a cycloidal rise of 20 mm over 120 deg, a dwell to 180 deg, a cycloidal
 angle is that of the cam surface r(theta)). Both compute the follower displacement and the pressure angle at 360
 cam angles; agreement is the largest difference of each. machdyn computes the profile, both radii of curvature
 and the checks besides. The population: N cams with random base radius, lift and rise angle, each analysed in full
-(profile, pressure angle, curvature, smallest base circle).
+(profile, pressure angle, curvature, smallest base circles), one after the other; and N cams of one program shape
+with random base radius, roller, offset and lift analysed at once as arrays (``machdyn.cams.population``:
+pressure angle, curvature, smallest base circle).
 
 Usage: ``python bench/cams.py [--quick] [--repeats N]``. The last line printed is one JSON object.
 """
@@ -80,6 +82,18 @@ def _population(n, rng):
     return np.array(worst)
 
 
+def _vectorised(n, rng, theta):
+    """N cams of one program shape with random base radius, roller, offset and lift, as arrays (no loop)."""
+    from machdyn.cams.population import analyse_population
+    from machdyn.cams.program import Segment, program
+
+    prog = program([Segment("rise", RISE, LIFT, "cycloidal"), Segment("dwell", DWELL_END - RISE),
+                    Segment("return", FALL_END - DWELL_END, LIFT, "cycloidal"),
+                    Segment("dwell", 2 * math.pi - FALL_END)])
+    return analyse_population(prog, theta, rng.uniform(0.03, 0.08, n), rng.uniform(0.005, 0.015, n),
+                              rng.uniform(-0.01, 0.01, n), rng.uniform(0.5, 1.5, n))
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--quick", action="store_true")
@@ -103,6 +117,9 @@ def main() -> None:
     t0 = time.perf_counter()
     _population(n, rng)
     result |= {"population": n, "designs_per_second": n / (time.perf_counter() - t0)}
+    nv = 2_000 if args.quick else 20_000
+    _, t_vec = _time(lambda: _vectorised(nv, rng, theta), repeats)
+    result |= {"vectorised_population": nv, "vectorised_designs_per_second": nv / statistics.median(t_vec)}
     for k, v in result.items():
         print(f"{k:32s} {v:.6g}" if isinstance(v, float) else f"{k:32s} {v}")  # noqa: T201
     print(json.dumps(result))  # noqa: T201
