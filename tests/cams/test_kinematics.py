@@ -245,5 +245,7 @@ def test_a_population_analysed_at_once_matches_each_design_analysed_alone():
         assert pop.max_pressure_angle[i] == pytest.approx(chk.max_pressure_angle, abs=1e-12)
         assert pop.min_pitch_curvature_radius[i] == pytest.approx(chk.min_pitch_radius, rel=1e-10)
         assert pop.min_base_radius_pressure[i] == pytest.approx(chk.min_base_radius_pressure, rel=1e-10)
+    one_varying = analyse_population(prog, th, np.linspace(0.03, 0.08, 5), 0.01)
+    assert one_varying.min_base_radius_pressure.shape == (5,)
     with pytest.raises(InputError, match="does not assemble"):
         analyse_population(prog, th, [0.05, 0.01], 0.0, [0.0, 0.02])

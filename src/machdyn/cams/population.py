@@ -58,8 +58,9 @@ def analyse_population(prog: Program, theta, base_radius, roller_radius=0.0, off
         rho = np.where(cross != 0.0, -speed3 / np.where(cross != 0.0, cross, 1.0), np.inf)
     phi = np.arctan2(g1y, g1x)
     dmin = np.maximum(np.max(np.abs(v - e) / np.tan(pressure_limit) - s, axis=1), 0.0)
-    shape = dmin.shape
-    rbmin = np.maximum(np.hypot(dmin, np.broadcast_to(np.ravel(e), shape)) - np.broadcast_to(np.ravel(rr), shape),
+    n = np.broadcast_shapes(rb.shape, rr.shape, e.shape, k.shape)[0]
+    dmin = np.broadcast_to(dmin, (n,))
+    rbmin = np.maximum(np.hypot(dmin, np.broadcast_to(np.ravel(e), (n,))) - np.broadcast_to(np.ravel(rr), (n,)),
                        0.0)
     convex = np.where(rho > 0, rho, np.inf)
     return PopulationCams(np.max(np.abs(phi), axis=1), np.min(convex, axis=1), rbmin, phi)
