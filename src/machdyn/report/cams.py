@@ -120,6 +120,11 @@ def plot_forces(ax: Any, r: Any) -> Any:
     ax.set_ylabel("force [N]")
     _cam_axis(ax)
     ax.set_xlabel("cam angle θ [deg]")
+    sim = r.simulation
+    if sim is not None:
+        order = np.argsort(np.mod(sim.theta, 2 * np.pi))
+        ax.plot(np.degrees(np.mod(sim.theta, 2 * np.pi))[order], sim.contact[order] / arm, color="#333333",
+                linewidth=0.7, linestyle=":", label="contact force, forward simulation")
     tw = ax.twinx()
     tw.plot(deg, f.torque, color=PALETTE[1], linewidth=1.0, linestyle="--", label="camshaft torque")
     tw.set_ylabel("torque [N·m]", color=PALETTE[1])
@@ -150,8 +155,9 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
                     "marked.", (10.0, 5.6), draw_profile, margins=(0.7, 0.3, 1.35, 0.35), wspace=0.3)]
     if r.forces is not None:
         figs.append(_render("cam-forces", "Contact force and camshaft torque", "Force the cam must supply along "
-                            "the follower's path (it loses contact where it would turn negative) and the "
-                            "camshaft torque by virtual work.", (8.0, 3.6), lambda fig: plot_forces(fig.subplots(),
+                            "the follower's path (it loses contact where it would turn negative), the same force "
+                            "from the forward simulation of the follower on the cam (dotted), and the camshaft "
+                            "torque by virtual work.", (8.0, 3.6), lambda fig: plot_forces(fig.subplots(),
                                                                                                         r),
                             margins=(0.8, 0.8, 0.5, 0.35)))
     rows = [[str(j), ""] for j in r.model.program.jumps]
