@@ -33,6 +33,7 @@ bench: $(BENCH_STAMP)
 	$(BIN)/python bench/optimise.py
 	$(BIN)/python bench/synthesis.py
 	$(BIN)/python bench/cli.py
+	$(BIN)/python bench/cams.py
 
 lint: $(STAMP)
 	$(BIN)/ruff check src tests bench

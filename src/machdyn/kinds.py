@@ -35,6 +35,7 @@ CAPABILITIES: dict[str, str] = {
     "drivetrain": "machdyn.drivetrain.stage:CAPABILITY",
     "parts": "machdyn.drivetrain.parts_stage:CAPABILITY",
     "field_records": "machdyn.shafts.record_stage:CAPABILITY",
+    "shaft_cam": "machdyn.cams.shaft:CAPABILITY",
 }
 
 

@@ -223,3 +223,29 @@ def test_pressure_angle_formula_holds_for_any_radial_cam(rise, lift, rb, law):
     prof = profile(prog, f, th)
     m = prof.svaj
     np.testing.assert_allclose(np.tan(prof.pressure_angle), m.v / (f.prime_radius + m.s), rtol=1e-9, atol=1e-12)
+
+
+def test_a_population_analysed_at_once_matches_each_design_analysed_alone():
+    from machdyn.cams.population import analyse_population
+
+    prog = _feeder()
+    th = cam_angles(360)
+    rng = np.random.default_rng(3)
+    n = 12
+    rb, rr, e, k = rng.uniform(0.03, 0.08, n), rng.uniform(0.005, 0.015, n), rng.uniform(-0.01, 0.01, n), \
+        rng.uniform(0.5, 1.5, n)
+    pop = analyse_population(prog, th, rb, rr, e, k, D(30))
+    for i in range(n):
+        scaled = program([Segment("rise", D(100), 0.03 * k[i], "cycloidal"), Segment("dwell", D(80)),
+                          Segment("return", D(120), 0.03 * k[i], "poly345"), Segment("dwell", D(60))])
+        f = Follower("translating", "roller", rb[i], rr[i], e[i])
+        alone = profile(scaled, f, th)
+        np.testing.assert_allclose(pop.pressure_angle[i], alone.pressure_angle, atol=1e-12)
+        chk = check_cam(alone, scaled)
+        assert pop.max_pressure_angle[i] == pytest.approx(chk.max_pressure_angle, abs=1e-12)
+        assert pop.min_pitch_curvature_radius[i] == pytest.approx(chk.min_pitch_radius, rel=1e-10)
+        assert pop.min_base_radius_pressure[i] == pytest.approx(chk.min_base_radius_pressure, rel=1e-10)
+    one_varying = analyse_population(prog, th, np.linspace(0.03, 0.08, 5), 0.01)
+    assert one_varying.min_base_radius_pressure.shape == (5,)
+    with pytest.raises(InputError, match="does not assemble"):
+        analyse_population(prog, th, [0.05, 0.01], 0.0, [0.0, 0.02])

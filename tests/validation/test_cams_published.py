@@ -103,3 +103,23 @@ def test_norton_peak_velocity_and_acceleration_factors(law, cv, ca):
     v, a = _peaks(prog, 0, 90, 1.0)
     assert v * beta / h == pytest.approx(cv, abs=0.006)
     assert a * beta**2 / h == pytest.approx(ca, abs=0.0015)
+
+
+@pytest.mark.parametrize("law", ["cycloidal", "harmonic", "poly345"])
+def test_independent_implementation_pylinkage_cam_agrees(law):
+    """pylinkage's cam module (an independent implementation, a bench dependency): the knife-edge radius and the
+    pressure angle of the same rise-dwell-fall-dwell cam at 360 angles. (Its modified trapezoid is not Norton's:
+    it dips below zero at the start of the rise, so it is not compared.)"""
+    cam_mod = pytest.importorskip("pylinkage.cam")
+    laws = {"cycloidal": cam_mod.CycloidalMotionLaw(), "harmonic": cam_mod.HarmonicMotionLaw(),
+            "poly345": cam_mod.polynomial_345()}
+    peer = cam_mod.FunctionProfile(motion_law=laws[law], base_radius=0.04, total_lift=0.02, rise_start=0.0,
+                                   rise_end=D(120), dwell_high_end=D(180), fall_end=D(300))
+    prog = program([Segment("rise", D(120), 0.02, law), Segment("dwell", D(60)),
+                    Segment("return", D(120), 0.02, law), Segment("dwell", D(60))])
+    th = cam_angles(360)
+    ours = profile(prog, Follower("translating", "knife", 0.04), th)
+    s_peer = np.array([peer.evaluate(float(t)) for t in th]) - 0.04
+    phi_peer = np.array([peer.pressure_angle(float(t)) for t in th])
+    np.testing.assert_allclose(ours.svaj.s, s_peer, atol=1e-12)
+    np.testing.assert_allclose(np.abs(ours.pressure_angle), np.abs(phi_peer), atol=1e-9)

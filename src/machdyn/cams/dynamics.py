@@ -239,16 +239,17 @@ def simulate_follower(prog: Program, train: FollowerTrain, spring: Spring, speed
     return Simulation(sol.t, th, x, m.s, n, sep, 1e-3 * prog.stroke)
 
 
-def cam_machine(prog: Program, train: FollowerTrain, spring: Spring, positions: int = 720):
+def cam_machine(prog: Program, train: FollowerTrain, spring: Spring, positions: int = 720, phase: float = 0.0):
     """The cam as an :class:`~machdyn.dynamics.equivalent.EquivalentMachine` (module docstring): reduced inertia
-    J_cam + m v^2, potential of the spring and load, reduced damping c v^2, each with its exact slope."""
+    J_cam + m v^2, potential of the spring and load, reduced damping c v^2, each with its exact slope; over the
+    shaft angle phi = theta - ``phase`` [rad] (a cam mounted ``phase`` ahead on a crank shaft)."""
     from ..dynamics.equivalent import EquivalentMachine
     from ..dynamics.tables import PeriodicCurve
 
     if int(positions) != positions or positions < 16:
         raise InputError(f"The number of cam positions must be an integer >= 16; got {positions!r}.")
     th = np.arange(int(positions)) * (2.0 * np.pi / int(positions))
-    m = prog.svaj(th)
+    m = prog.svaj(th + phase)
     period = 2.0 * np.pi
     j = train.cam_inertia + train.mass * m.v**2
     inertia = PeriodicCurve.hermite(th, j, 2.0 * train.mass * m.v * m.a, period)

@@ -37,8 +37,9 @@ class Follower:
     contact : "knife", "roller" or "flat" (flat only for a translating follower).
     base_radius : R_b, the smallest radius of the cam surface [m], > 0.
     roller_radius : r_r [m], > 0 for a roller, 0 for a knife edge or a flat face.
-    offset : e, a translating follower's path from the cam centre [m] (positive: to +x, ahead of a
-        counter-clockwise cam's point rising towards it... see the module docstring for the frame).
+    offset : e, a translating follower's path from the cam centre [m]: the line x = e with the follower above
+        the cam (+y) and a counter-clockwise cam; for a clockwise cam the whole drawing is mirrored, so e > 0 is
+        then to the left (see the module docstring for the frame).
     pivot_distance : d, cam centre to the oscillating follower's pivot [m].
     arm_length : l, pivot to the roller centre [m].
     """

@@ -103,10 +103,9 @@ class OutputSpec(Spec):
     dxf: bool = Field(True, strict=True)
 
 
-class CamSpec(Spec):
-    """``[cam]``."""
+class CamBody(Spec):
+    """The cam and its follower, without its speed (``[shaft_cam]`` of a linkage file takes the crank's)."""
 
-    speed: AngularVelocity
     base_radius: Length
     rotation: Literal["ccw", "cw"] = "ccw"
     positions: int = Field(720, ge=16, le=100_000, strict=True)
@@ -117,11 +116,24 @@ class CamSpec(Spec):
     spring: SpringSpec = SpringSpec()
     output: OutputSpec = OutputSpec()
 
+
+class CamSpec(CamBody):
+    """``[cam]``: the cam, its follower and its constant speed."""
+
+    speed: AngularVelocity
+
     @model_validator(mode="after")
     def _speed(self):
         if not self.speed > 0:
             raise ValueError(f"speed must be > 0 (the cam turns at a constant speed); got {self.speed:g} rad/s")
         return self
+
+
+class ShaftCamTable(CamBody):
+    """``[shaft_cam]`` of a linkage file: a cam on the crank shaft, turning with the crank at ``phase`` ahead
+    (cam angle = crank angle + phase); ``[cam.dynamics]`` is required there (the cam loads the shaft)."""
+
+    phase: Angle = 0.0
 
 
 class CamProblem(Spec):

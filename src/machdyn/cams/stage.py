@@ -36,7 +36,8 @@ _FIXED = {
     "cam.rms_torque": Label("Camshaft torque: RMS over the turn", "N*m"),
     "cam.work_per_cycle": Label("Camshaft torque: work per turn (the damper's loss)", "J",
                                 zero_below="cam.peak_torque"),
-    "cam.mean_power": Label("Camshaft: mean power", "W", zero_below="cam.peak_torque"),
+    "cam.mean_power": Label("Camshaft: mean power", "W", zero_below="cam.peak_power"),
+    "cam.peak_power": Label("Camshaft: peak power |T omega|", "W"),
     "cam.max_reduced_inertia": Label("Reduced inertia at the camshaft: largest", "kg*m^2"),
     "cam.simulated_max_separation": Label("Simulated follower: largest lift-off from the cam", "m", "mm"),
     "cam.jumps": Label("Jumps of velocity or acceleration in the program", ""),
@@ -53,8 +54,9 @@ LABELS: dict[str, Label] = {**_FIXED, **{k: Label(t, u[0], u[1]) for k, (t, u, _
 
 SUMMARY = ("cam.stroke", "cam.max_velocity", "cam.max_acceleration", "cam.max_pressure_angle",
            "cam.pressure_angle_limit", "cam.min_pitch_curvature_radius", "cam.min_surface_curvature_radius",
-           "cam.min_base_radius_pressure", "cam.face_width", "cam.spring_rate", "cam.spring_preload",
-           "cam.jump_speed", "cam.min_contact_force", "cam.max_normal_force", "cam.peak_torque", "cam.mean_power")
+           "cam.min_base_radius_pressure", "cam.min_base_radius_curvature", "cam.face_width", "cam.spring_rate",
+           "cam.spring_preload", "cam.jump_speed", "cam.min_contact_force", "cam.max_normal_force",
+           "cam.peak_torque", "cam.mean_power")
 
 
 @dataclass(frozen=True)
@@ -80,6 +82,7 @@ class CamResult:
     forces: Any
     simulation: Any
     clockwise: bool
+    face_width_given: float | None = None
 
     def machine(self, positions: int = 720):
         """The cam machine reduced to the camshaft (:func:`~machdyn.cams.dynamics.cam_machine`); a camshaft of
@@ -222,7 +225,8 @@ def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
         "cam.max_jerk": float(np.max(np.abs(j))), "cam.max_pressure_angle": chk.max_pressure_angle,
         "cam.pressure_angle_limit": chk.pressure_angle_limit, "cam.jumps": float(len(model.program.jumps)),
     }
-    if np.isfinite(chk.min_pitch_radius):
+    flat = model.follower.contact == "flat"
+    if np.isfinite(chk.min_pitch_radius) and not flat:  # a flat face's "pitch curve" is the surface itself
         values["cam.min_pitch_curvature_radius"] = chk.min_pitch_radius
     if np.isfinite(chk.min_surface_radius):
         values["cam.min_surface_curvature_radius"] = chk.min_surface_radius
@@ -230,6 +234,8 @@ def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
     failed = list(chk.failed)
     for key, val in (("cam.min_base_radius_pressure", chk.min_base_radius_pressure),
                      ("cam.min_base_radius_curvature", chk.min_base_radius_curvature)):
+        if flat and key == "cam.min_base_radius_pressure":
+            continue  # the face is square to the path: the pressure angle is 0 whatever the base circle
         if np.isfinite(val):
             values[key] = val
         else:
@@ -251,6 +257,7 @@ def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
                    "cam.rms_torque": float(np.sqrt(np.mean(forces.torque**2))),
                    "cam.work_per_cycle": forces.work_per_cycle,
                    "cam.mean_power": forces.work_per_cycle * speed / (2 * np.pi),
+                   "cam.peak_power": float(np.max(np.abs(forces.torque))) * speed,
                    "cam.max_reduced_inertia": float(np.max(train.cam_inertia + train.mass * m.v**2))}
         if np.isfinite(forces.jump_speed):
             values["cam.jump_speed"] = forces.jump_speed
@@ -267,7 +274,8 @@ def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
     labels = {}
     if osc:
         labels = {k: Label(t, u[0], u[1]) for k, (t, _, u) in _MOTION_LABELS.items()}
-    result = CamResult(model, speed, chk, spring, forces, sim, cam.rotation == "cw")
+    result = CamResult(model, speed, chk, spring, forces, sim, cam.rotation == "cw",
+                       None if cam.checks.face_width is None else float(cam.checks.face_width))
     return Outcome(results=result, scalars=values, labels=labels, series=_series(result, osc),
                    files=_files(problem, prof), summary=tuple(k for k in SUMMARY if k in values),
                    warnings=tuple(warnings), failed_checks=tuple(failed))

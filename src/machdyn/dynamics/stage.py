@@ -282,6 +282,11 @@ def run_flywheel(ctx: StageContext) -> Outcome:
             raise ProblemFileError([("drive.speed", f"must be > 0 for [flywheel] (the crank turns "
                                                     f"counter-clockwise); got {speed:g} rad/s")])
         machine = equivalent_machine(mech, table.positions, speed_loads=speed_loads(table))
+        if "shaft_cam" in ctx.outcomes:  # a cam on the crank shaft: its reduced quantities add to the linkage's
+            from ..cams.shaft import with_shaft_cam
+
+            machine = with_shaft_cam(machine, ctx.outcomes["shaft_cam"], ctx.problem.shaft_cam.phase,
+                                     table.positions)
     target = table.delta if table.delta is not None else 0.02
     sizing = size_flywheel(machine, speed, target)
     if table.inertia is not None:
@@ -431,4 +436,5 @@ CAPABILITY = Capability(
     labels=LABELS,
     report="machdyn.report.dynamics:sections",
     check=check_flywheel,
+    after=("shaft_cam",),
 )

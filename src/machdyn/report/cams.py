@@ -59,9 +59,10 @@ def plot_profile(ax: Any, r: Any) -> Any:
             label="base circle")
     th = p.svaj.theta
     i = int(np.argmin(np.abs(th - c.max_pressure_angle_at)))
-    ax.plot(p.surface[0, i] * 1e3, p.surface[1, i] * 1e3, "o", color=PALETTE[1],
-            label=f"largest pressure angle {format_value(np.degrees(c.max_pressure_angle))}° "
-                  f"at θ = {format_value(np.degrees(th[i]))}°")
+    if f.contact != "flat":  # a flat face's pressure angle is 0 everywhere
+        ax.plot(p.surface[0, i] * 1e3, p.surface[1, i] * 1e3, "o", color=PALETTE[1],
+                label=f"largest pressure angle {format_value(np.degrees(c.max_pressure_angle))}° "
+                      f"at θ = {format_value(np.degrees(th[i]))}°")
     k = int(np.argmin(np.abs(th - c.min_radius_at)))
     if np.isfinite(c.min_pitch_radius) or f.contact == "flat":
         rho = c.min_surface_radius if f.contact == "flat" else c.min_pitch_radius
@@ -84,8 +85,21 @@ def plot_profile(ax: Any, r: Any) -> Any:
 
 
 def plot_pressure_and_curvature(ax: Any, r: Any) -> Any:
+    """The pressure angle against its limit; for a flat face (whose pressure angle is 0) the contact point's
+    distance from the follower's axis against the face's half width."""
     p = r.model.profile
     deg = np.degrees(p.svaj.theta)
+    if r.model.follower.contact == "flat":
+        off = (p.contact_offset - r.model.follower.offset) * 1e3
+        ax.plot(deg, off, color=PALETTE[0], label="contact point from the follower's axis")
+        width = r.face_width_given
+        if width is not None:
+            ax.axhline(width * 500, color=PALETTE[1], linestyle="--", linewidth=0.8, label="edge of the face")
+            ax.axhline(-width * 500, color=PALETTE[1], linestyle="--", linewidth=0.8)
+        ax.set_ylabel("contact offset [mm]")
+        _cam_axis(ax)
+        ax.set_xlabel("cam angle θ [deg]")
+        return _finish(ax, "Contact point on the flat face")
     ax.plot(deg, np.degrees(p.pressure_angle), color=PALETTE[0], label="pressure angle φ")
     lim = np.degrees(r.checks.pressure_angle_limit)
     ax.axhline(lim, color=PALETTE[1], linestyle="--", linewidth=0.8, label=f"limit ±{format_value(lim)}°")
@@ -106,6 +120,11 @@ def plot_forces(ax: Any, r: Any) -> Any:
     ax.set_ylabel("force [N]")
     _cam_axis(ax)
     ax.set_xlabel("cam angle θ [deg]")
+    sim = r.simulation
+    if sim is not None:
+        order = np.argsort(np.mod(sim.theta, 2 * np.pi))
+        ax.plot(np.degrees(np.mod(sim.theta, 2 * np.pi))[order], sim.contact[order] / arm, color="#333333",
+                linewidth=0.7, linestyle=":", label="contact force, forward simulation")
     tw = ax.twinx()
     tw.plot(deg, f.torque, color=PALETTE[1], linewidth=1.0, linestyle="--", label="camshaft torque")
     tw.set_ylabel("torque [N·m]", color=PALETTE[1])
@@ -130,13 +149,15 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
     figs = [_render("cam-svaj", "Follower motion (SVAJ)", "Displacement, velocity, acceleration and jerk per "
                     "second at the running speed.", (8.0, 7.0), draw_svaj, margins=(0.9, 0.2, 0.5, 0.35),
                     hspace=0.15),
-            _render("cam-profile", "Cam profile and pressure angle", "The profile as written to cam_profile.dxf "
+            _render("cam-profile", "Cam profile and pressure angle" if r.model.follower.contact != "flat" else
+                    "Cam profile and contact point on the face", "The profile as written to cam_profile.dxf "
                     "and cam_profile.csv, with the largest pressure angle and the smallest radius of curvature "
                     "marked.", (10.0, 5.6), draw_profile, margins=(0.7, 0.3, 1.35, 0.35), wspace=0.3)]
     if r.forces is not None:
         figs.append(_render("cam-forces", "Contact force and camshaft torque", "Force the cam must supply along "
-                            "the follower's path (it loses contact where it would turn negative) and the "
-                            "camshaft torque by virtual work.", (8.0, 3.6), lambda fig: plot_forces(fig.subplots(),
+                            "the follower's path (it loses contact where it would turn negative), the same force "
+                            "from the forward simulation of the follower on the cam (dotted), and the camshaft "
+                            "torque by virtual work.", (8.0, 3.6), lambda fig: plot_forces(fig.subplots(),
                                                                                                         r),
                             margins=(0.8, 0.8, 0.5, 0.35)))
     rows = [[str(j), ""] for j in r.model.program.jumps]
@@ -156,3 +177,8 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
         html += "<p>Jumps in the program (the fundamental law of cam design asks for none):</p>" + rows_html(
             [[row[0]] for row in rows], ("jump",))
     return [("Cam", html + figures_html(figs))]
+
+
+def shaft_sections(outcome: Any) -> list[tuple[str, str]]:
+    """The ``[shaft_cam]`` section of a linkage file: the cam's section under its own heading."""
+    return [("Cam on the crank shaft", html) for _, html in sections(outcome)]
