@@ -196,3 +196,18 @@ def test_order_levels_of_a_record_are_its_lines_rms(tmp_path):
     result.write(tmp_path / "out")
     html = (tmp_path / "out" / "report.html").read_text()
     assert "Orders of the running speed" in html
+
+
+def test_machine_tables_without_their_main_table_name_it(tmp_path):
+    """A machine's file whose [mechanism] is missing is not taken for records alone without a word: the
+    message names the machine's tables and the main tables a machine needs."""
+    text = EXAMPLE.read_text()
+    start = text.index("[mechanism]\n")
+    end = text.index("[drive]\n")  # [mechanism] and its sub-tables come first
+    path = tmp_path / "no_mechanism.toml"
+    path.write_text(text.replace(text[start:end], ""))
+    for command in (["check", str(path)], ["run", str(path), "--out", str(tmp_path / "out")]):
+        result = CliRunner().invoke(app, command)
+        assert result.exit_code == 2
+        assert "[drive], [frame], [loads] describe a machine" in result.output
+        assert "[mechanism]" in result.output and "[rotary_screen]" in result.output
