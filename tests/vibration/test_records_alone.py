@@ -211,3 +211,16 @@ def test_machine_tables_without_their_main_table_name_it(tmp_path):
         assert result.exit_code == 2
         assert "[drive], [frame], [loads] describe a machine" in result.output
         assert "[mechanism]" in result.output and "[rotary_screen]" in result.output
+
+
+def test_records_alone_from_python_read_relative_records_against_the_file(tmp_path, monkeypatch):
+    from machdyn.problem import load_problem
+
+    path = _file(tmp_path, "")
+    monkeypatch.chdir(ROOT)  # elsewhere than the problem file's folder
+    problem = load_problem(path)
+    assert problem.source == str(path)
+    result = run_problem(problem)
+    assert result.kind == "signals"
+    assert result.outcomes["signals"].scalars["signals.velocity_rms.before.bearing"] == pytest.approx(
+        A3 / math.sqrt(2), rel=1e-6)
