@@ -367,10 +367,11 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
             raise _fail(f"error: the outputs of {file} could not be produced: {exc}", EXIT_FAILED) from None
     if not quiet:
         _print_rows(result.summary, format, result.warnings)
-        explored: Any = getattr(result.outcomes.get("sweep"), "results", None)
-        if getattr(explored, "reused", 0):
-            typer.echo(f"resumed: {explored.reused} partition(s) reused from {explored.store}, "
-                       f"{explored.computed} computed", err=True)
+        for outcome in result.outcomes.values():  # a stage that resumed from partitions on disk says so
+            explored: Any = outcome.results
+            if getattr(explored, "reused", 0):
+                typer.echo(f"resumed: {explored.reused} partition(s) reused from {explored.store}, "
+                           f"{explored.computed} computed", err=True)
         if format is TableFormat.table:
             elapsed = time.perf_counter() - started
             typer.echo(f"wrote {len(paths)} file(s) to {out}/ ({', '.join(p.name for p in paths)}) in "
