@@ -367,8 +367,8 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
             raise _fail(f"error: the outputs of {file} could not be produced: {exc}", EXIT_FAILED) from None
     if not quiet:
         _print_rows(result.summary, format, result.warnings)
-        for outcome in result.outcomes.values():  # a stage that resumed from partitions on disk says so
-            explored: Any = outcome.results
+        for outcome in result.outcomes.values():  # a resumed exploration says what it took from disk
+            explored: Any = getattr(outcome, "results", None)
             if getattr(explored, "reused", 0):
                 typer.echo(f"resumed: {explored.reused} partition(s) reused from {explored.store}, "
                            f"{explored.computed} computed", err=True)
