@@ -100,3 +100,15 @@ def test_screw_shorter_than_a_pitch_puts_the_whole_force_on_one_turn():
     assert flight_turn_pressure(1000.0, d, d_o, 0.2, 0.15, annulus) == pytest.approx(flight_pressure(1000.0, d, d_o))
     # a material section larger than the annulus (a circle filling above the pipe) is clipped to the annulus
     assert flight_turn_pressure(1000.0, d, d_o, 0.2, 0.1, 2 * annulus) == pytest.approx(flight_pressure(1000.0, d, d_o))
+
+
+def test_report_says_which_capacity_section_and_flight_load_were_used(tmp_path):
+    from typer.testing import CliRunner
+
+    from machdyn.cli import app
+
+    out = tmp_path / "out"
+    result = CliRunner().invoke(app, ["run", str(ROOT / "examples" / "iodized_salt_conveyor.toml"), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    html = (out / "report.html").read_text()
+    assert "Capacity over the whole circle" in html and "each flight turn loaded by its pitch" in html

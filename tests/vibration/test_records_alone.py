@@ -196,3 +196,31 @@ def test_order_levels_of_a_record_are_its_lines_rms(tmp_path):
     result.write(tmp_path / "out")
     html = (tmp_path / "out" / "report.html").read_text()
     assert "Orders of the running speed" in html
+
+
+def test_machine_tables_without_their_main_table_name_it(tmp_path):
+    """A machine's file whose [mechanism] is missing is not taken for records alone without a word: the
+    message names the machine's tables and the main tables a machine needs."""
+    text = EXAMPLE.read_text()
+    start = text.index("[mechanism]\n")
+    end = text.index("[drive]\n")  # [mechanism] and its sub-tables come first
+    path = tmp_path / "no_mechanism.toml"
+    path.write_text(text.replace(text[start:end], ""))
+    for command in (["check", str(path)], ["run", str(path), "--out", str(tmp_path / "out")]):
+        result = CliRunner().invoke(app, command)
+        assert result.exit_code == 2
+        assert "[drive], [frame], [loads] describe a machine" in result.output
+        assert "[mechanism]" in result.output and "[rotary_screen]" in result.output
+
+
+def test_records_alone_from_python_read_relative_records_against_the_file(tmp_path, monkeypatch):
+    from machdyn.problem import load_problem
+
+    path = _file(tmp_path, "")
+    monkeypatch.chdir(ROOT)  # elsewhere than the problem file's folder
+    problem = load_problem(path)
+    assert problem.source == str(path)
+    result = run_problem(problem)
+    assert result.kind == "signals"
+    assert result.outcomes["signals"].scalars["signals.velocity_rms.before.bearing"] == pytest.approx(
+        A3 / math.sqrt(2), rel=1e-6)

@@ -122,6 +122,11 @@ def conveyor_html_section(result: Any, *, figures: bool = True) -> str:
         parts.append(f"<p>{escape(p.description)}</p>")
     parts.append(f"<p>Material: {escape(p.material_name)}; drive sized by <b>{escape(result.selected_method)}"
                  f"</b>. Overall: <b>{'all checks pass' if result.passed else 'CHECKS FAIL'}</b>.</p>")
+    section = ("the annulus around the pipe, π/4·(D² − d_o²), as in CEMA 350" if p.capacity_section == "annulus"
+               else "the whole circle, π/4·D², as in seed 004 (eq 2.83)")
+    flight = ("its pitch's share F_a·S/L of the axial force on the material's section (eq 2.92)"
+              if p.flight_load == "per_pitch" else "the whole axial force on one turn's whole face (eq 2.56)")
+    parts.append(f"<p>Capacity over {escape(section)}; each flight turn loaded by {escape(flight)}.</p>")
     parts.append(f"<h3>Design</h3><table {_TABLE}>")
     parts.append(_row(["Quantity", "Value", "Unit"], head=True))
     for key, value in result.scalars.items():

@@ -12,7 +12,8 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["band_order_warnings", "orders_outside_band"]
+__all__ = ["RESONANCE_MARGIN", "band_order_warnings", "near_resonances", "order_levels", "orders_outside_band",
+           "resonance_warnings"]
 
 
 def orders_outside_band(band, running_speed: float, orders: int | None = None) -> tuple[list[int], list[int]]:
