@@ -166,6 +166,8 @@ def build(problem: Any) -> tuple[ShaftLine | None, list[tuple[str, str]]]:
     if loco is not None:
         if not cylinders:
             problems.append(("locomotive", "the locomotive's balance needs its [[cylinders]]"))
+        if loco.dead_load is not None and not loco.dead_load > 0:
+            problems.append(("locomotive.dead_load", f"must be > 0 N; got {loco.dead_load:g} N"))
         if loco.wheel_planes[0] == loco.wheel_planes[1]:
             problems.append(("locomotive.wheel_planes", f"the two wheel planes must stand apart; both at "
                              f"{loco.wheel_planes[0]:g} m"))
