@@ -29,6 +29,7 @@ from machdyn.shafts.reciprocating import (
 )
 from machdyn.shafts.rotating import Bearing, Mass, bearing_reactions, cycle, rotating_loads
 
+ROOT_EXAMPLES = __import__("pathlib").Path(__file__).resolve().parents[2] / "examples"
 MODULES = ["machdyn.shafts.rotating", "machdyn.shafts.balance", "machdyn.shafts.grades",
            "machdyn.shafts.reciprocating", "machdyn.shafts.field"]
 
@@ -260,3 +261,71 @@ planes = [ { name = "web", position = "0 mm", radius = "40 mm" } ]
     assert result.engine.secondary_force == pytest.approx(math.sqrt(2) * 0.5 * 0.04 * (3000 * math.pi / 30) ** 2
                                                           / 3.5, rel=1e-12)
     assert second > 0.9 * result.engine.secondary_force
+
+
+SLIDER_CRANK = """
+[linkages.mechanism]
+type = "slider_crank"
+crank = { length = "50 mm", mass = "2.5 kg", inertia = "0.004 kg*m^2", com = ["15 mm", "0 mm"] }
+rod = { length = "200 mm", mass = "1.2 kg", inertia = "0.0055 kg*m^2", com = ["60 mm", "0 mm"] }
+slider = { mass = "1.5 kg" }
+"""
+
+LINKAGE_LINE = """
+[shaft_line]
+speed = "1500 rpm"
+reference = "0 mm"
+
+[[linkages]]
+name = "front"
+position = "{z1}"
+phase = "0 deg"
+""" + SLIDER_CRANK + """
+[[linkages]]
+name = "rear"
+position = "{z2}"
+phase = "180 deg"
+axis = "90 deg"
+""" + SLIDER_CRANK
+
+
+def test_linkages_on_the_shaft_carry_the_planar_engine_shaking_force_into_space():
+    """Two slider-cranks of examples/slider_crank.toml (rod with its own inertia) in two planes, the second turned
+    90 deg about the shaft and half a turn behind: the shaft line's force is the planar engine's shaking force of
+    each, turned into shaft axes, and its couple z x F; in one plane at z = 0 the couple vanishes."""
+    from machdyn.problem.loader import load_problem, read_problem
+    from machdyn.shafts.model import analyse, build
+
+    problem = load_problem(LINKAGE_LINE.replace("{z1}", "-100 mm").replace("{z2}", "150 mm"))
+    line, problems = build(problem)
+    assert problems == []
+    result = analyse(problem, line)
+    w = 1500 * math.pi / 30
+    mech = read_problem(ROOT_EXAMPLES / "slider_crank.toml").model
+    from dataclasses import replace
+
+    quiet = replace(mech, forces=(), torques=(), springs=(), point_masses=())
+    theta = result.loads.angle
+    a, b = frame_loads(quiet, theta, w), frame_loads(quiet, theta + math.pi, w)
+    fx = a.fx - b.fy  # the rear one turned by 90 deg: (x, y) -> (-y, x)
+    fy = a.fy + b.fx
+    assert np.allclose(result.loads.fx, fx, atol=1e-9 * np.max(np.abs(fx)))
+    assert np.allclose(result.loads.fy, fy, atol=1e-9 * np.max(np.abs(fy)))
+    assert np.allclose(result.loads.my, -0.1 * a.fx + 0.15 * (-b.fy), atol=1e-9 * np.max(np.abs(fx)))
+    assert np.allclose(result.linkage_torque.sum(axis=0), a.moment + b.moment, atol=1e-9 * np.max(np.abs(a.moment)))
+    one = load_problem(LINKAGE_LINE.replace("{z1}", "0 mm").replace("{z2}", "0 mm"))
+    r1 = analyse(one, build(one)[0])
+    assert np.max(r1.loads.couple) <= 1e-12 * np.max(r1.loads.force)
+
+
+def test_a_linkage_whose_crank_pivot_is_off_the_shaft_is_refused():
+    from dataclasses import replace
+
+    from machdyn.errors import InputError
+    from machdyn.shafts.linkages import LinkagePlane
+
+    mech = slider_crank(0.05, 0.2)
+    LinkagePlane("ok", mech, 0.0)
+    moved = replace(mech, ground={**mech.ground, "O": (0.1, 0.0)})
+    with pytest.raises(InputError, match="must lie on the shaft axis"):
+        LinkagePlane("off", moved, 0.0)

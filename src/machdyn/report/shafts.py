@@ -22,6 +22,7 @@ def plot_shaft(ax: Any, result: Any) -> Any:
     if result.balance is not None:
         items += [(c.plane.position, c.unbalance, c.angle, f"corr. {c.plane.name}", PALETTE[1])
                   for c in result.balance.corrections]
+    items += [(lk.position, 0.0, 0.0, f"linkage {lk.name}", PALETTE[3]) for lk in line.linkages]
     zs = [z for z, *_ in items] + [b.position for b in line.bearings] or [0.0]
     z0, z1 = min(zs), max(zs)
     span = max(z1 - z0, 1e-3)
@@ -131,7 +132,7 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
     """The shaft-line section."""
     result = outcome.results
     figs = []
-    has_masses = bool(result.line.masses or result.line.cylinders)
+    has_masses = bool(result.line.masses or result.line.cylinders or result.line.linkages)
     if has_masses:
         def draw(fig: Any) -> None:
             axes = fig.subplots(1, 3)

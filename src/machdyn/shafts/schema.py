@@ -9,6 +9,8 @@ its unit; unknown keys are refused.
 
 from __future__ import annotations
 
+from typing import Annotated
+
 from pydantic import Field
 
 from ..problem.fields import (
@@ -25,7 +27,7 @@ from ..problem.fields import (
     PositiveStiffness,
     Stiffness,
 )
-from ..problem.schema import Meta, Name, Spec
+from ..problem.schema import CounterweightSpec, MechanismSpec, Meta, Name, Spec
 
 
 class ShaftLineSpec(Spec):
@@ -55,6 +57,19 @@ class CylinderSpec(Spec):
     rod: PositiveLength
     reciprocating_mass: Mass
     rotating_mass: Mass = 0.0
+
+
+class LinkageSpec(Spec):
+    """A planar linkage of machdyn (the ``[mechanism]`` of a linkage file, any type) at an axial ``position``,
+    its crank at ``phase`` for shaft angle 0, its x axis turned by ``axis`` about the shaft; its crank pivot must
+    be its origin (on the shaft). ``counterweights`` as in a linkage file."""
+
+    name: Name
+    position: Length
+    phase: Angle = 0.0
+    axis: Angle = 0.0
+    mechanism: Annotated[MechanismSpec, Field(discriminator="type")]
+    counterweights: list[CounterweightSpec] = []
 
 
 class BearingSpec(Spec):
@@ -172,6 +187,7 @@ class ShaftLineProblem(Spec):
     shaft_line: ShaftLineSpec
     masses: list[MassSpec] = []
     cylinders: list[CylinderSpec] = []
+    linkages: list[LinkageSpec] = []
     bearings: list[BearingSpec] = []
     balance: BalanceSpec | None = None
     grade: GradeSpec | None = None
