@@ -329,3 +329,32 @@ def test_a_linkage_whose_crank_pivot_is_off_the_shaft_is_refused():
     moved = replace(mech, ground={**mech.ground, "O": (0.1, 0.0)})
     with pytest.raises(InputError, match="must lie on the shaft axis"):
         LinkagePlane("off", moved, 0.0)
+
+
+def test_first_harmonic_target_cancels_the_forward_first_harmonic_of_linkages_in_two_planes():
+    """The tamper line of two double tampers: corrections aimed at the forward-turning first harmonic leave
+    none of it in the force or the couple (to 1e-9); the backward part and the higher orders stay. For rotating
+    masses alone the same target gives the classical two-plane corrections."""
+    from machdyn.problem.loader import load_problem
+    from machdyn.shafts.balance import forward_first_harmonic
+    from machdyn.shafts.model import analyse, build
+
+    text = (ROOT_EXAMPLES / "shaft_tamper_line.toml").read_text() + """
+[balance]
+target = "first_harmonic"
+planes = [{ name = "L", position = "100 mm", radius = "80 mm" }, { name = "R", position = "2300 mm", radius = "80 mm" }]
+"""
+    problem = load_problem(text)
+    result = analyse(problem, build(problem)[0])
+    a0, c0 = forward_first_harmonic(result.loads)
+    a1, c1 = forward_first_harmonic(result.balance.after)
+    assert abs(c0) > 0 and abs(a1) <= 1e-9 * (abs(a0) + abs(c0)) and abs(c1) <= 1e-9 * abs(c0)
+    assert result.balance.after.peak_couple < result.loads.peak_couple
+    masses = [Mass("a", 2.0, 0.1, 0.4, 0.2), Mass("b", 1.0, 0.2, 2.5, 0.9)]
+    from machdyn.shafts.balance import first_harmonic_corrections
+
+    planes = (Plane("L", 0.0, 0.1), Plane("M", 1.0, 0.1))
+    fh = first_harmonic_corrections(rotating_loads(masses, 50.0, reference=0.3), planes)
+    classic = two_plane(masses, *planes).corrections
+    for x, y in zip(fh, classic, strict=True):
+        assert x.mass == pytest.approx(y.mass, rel=1e-12) and x.angle == pytest.approx(y.angle, abs=1e-12)

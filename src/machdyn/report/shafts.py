@@ -66,6 +66,15 @@ def _vectors(result: Any, moment: bool) -> list[tuple[complex, str, str]]:
     out = []
     for m in line.balanced_masses():
         out.append((m.unbalance * ((m.position - ref) if moment else 1.0), m.name, PALETTE[0]))
+    if result.balance is not None and line.balance_target == "first_harmonic":
+        from ..shafts.balance import forward_first_harmonic
+
+        a, cm = forward_first_harmonic(result.loads)
+        w2 = result.loads.speed ** 2
+        known = sum((m.unbalance * ((m.position - ref) if moment else 1.0) for m in line.balanced_masses()), 0j)
+        rest = (cm if moment else a) / w2 - known
+        if abs(rest) > 0:
+            out.append((rest, "cylinders and linkages, forward 1x", PALETTE[3]))
     if result.balance is not None:
         for c in result.balance.corrections:
             m = c.as_mass()

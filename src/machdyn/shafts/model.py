@@ -14,7 +14,14 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
-from .balance import BalanceResult, Plane, equivalent_in_planes, single_plane, two_plane
+from .balance import (
+    BalanceResult,
+    Plane,
+    equivalent_in_planes,
+    first_harmonic_corrections,
+    single_plane,
+    two_plane,
+)
 from .field import FieldBalance, Reading, TrialRun, split_onto_holes
 from .field import single_plane as field_single
 from .field import two_plane as field_two
@@ -48,6 +55,7 @@ class ShaftLine:
     frame: Frame6 | None = None
     reciprocating_share: float = 0.0
     linkages: tuple[LinkagePlane, ...] = ()
+    balance_target: str = "rotating"
 
     def balanced_masses(self) -> list[Mass]:
         """The masses the corrections balance: rotating masses, the cylinders' rotating masses and the share c of
@@ -160,6 +168,9 @@ def build(problem: Any) -> tuple[ShaftLine | None, list[tuple[str, str]]]:
             problems.append(("balance.planes[1].position", f"the two correction planes must stand at different "
                              f"axial positions (a couple cannot be corrected in one plane); both are at "
                              f"{planes[0].position:g} m"))
+        if problem.balance.target == "first_harmonic" and problem.balance.reciprocating_fraction > 0:
+            problems.append(("balance.reciprocating_fraction", "applies to target \"rotating\"; the first "
+                             "harmonic's target already takes all a counterweight can reach"))
         if any(0 < p.holes < 2 for p in problem.balance.planes):
             problems.append(("balance.planes", "a split onto fixed holes needs at least 2 holes"))
     g = problem.grade
@@ -230,7 +241,8 @@ def build(problem: Any) -> tuple[ShaftLine | None, list[tuple[str, str]]]:
         return None, problems
     return ShaftLine(s.speed, s.positions, s.harmonics, s.reference, masses, cylinders, bearings, planes, holes,
                      field, field_holes, names_f, frame,
-                     problem.balance.reciprocating_fraction if problem.balance is not None else 0.0, linkages), []
+                     problem.balance.reciprocating_fraction if problem.balance is not None else 0.0, linkages,
+                     problem.balance.target if problem.balance is not None else "rotating"), []
 
 
 @dataclass(frozen=True)
@@ -300,7 +312,9 @@ def analyse(problem: Any, line: ShaftLine) -> ShaftLineResult:
     applied: tuple[Mass, ...] = ()
     if line.planes:
         rotating = line.balanced_masses()
-        if len(line.planes) == 2:
+        if problem.balance.target == "first_harmonic":
+            balance = BalanceResult(first_harmonic_corrections(loads, line.planes), loads, loads)
+        elif len(line.planes) == 2:
             balance = two_plane(rotating, line.planes[0], line.planes[1], line.speed, theta, line.reference)
         else:
             balance = single_plane(rotating, line.planes[0], line.speed, theta, line.reference)

@@ -94,6 +94,9 @@ class BalanceSpec(Spec):
     # share c of each cylinder's reciprocating mass balanced as if it revolved at its crank pin (1/2: the
     # direct-crank half of every primary force, all of it for a 90 deg V-twin or a radial engine)
     reciprocating_fraction: float = Field(0.0, ge=0.0, le=1.0)
+    # "rotating": the rotating masses (and the share above); "first_harmonic": the forward-turning first harmonic
+    # of everything on the shaft, linkages included -- all a counterweight turning with the shaft can cancel
+    target: str = Field("rotating", pattern="^(rotating|first_harmonic)$")
 
 
 class GradeSpec(Spec):
