@@ -358,3 +358,16 @@ planes = [{ name = "L", position = "100 mm", radius = "80 mm" }, { name = "R", p
     classic = two_plane(masses, *planes).corrections
     for x, y in zip(fh, classic, strict=True):
         assert x.mass == pytest.approx(y.mass, rel=1e-12) and x.angle == pytest.approx(y.angle, abs=1e-12)
+
+
+def test_opposed_flat_twin_cancels_primary_and_secondary_forces_but_leaves_a_primary_couple():
+    """A flat twin (boxer): cylinders on opposite sides (axes 0 and 180 deg), cranks 180 deg apart, offset along
+    the shaft by a: the pistons move in opposition, so both forces cancel; the primary couple m w^2 r a and the
+    secondary couple m w^2 r a / n remain (Uicker, Pennock & Shigley, 5th ed., sec. 16.9, opposed engines)."""
+    m, r, l, a, w = 0.4, 0.035, 0.12, 0.08, 600.0
+    cyl = [Cylinder("L", 0.0, 0.0, 0.0, r, l, m), Cylinder("R", a, math.pi, math.pi, r, l, m)]
+    e = engine_orders(cyl, w, 720, 4, reference=a / 2)
+    assert e.primary_force <= 1e-12 * m * r * w**2 and e.force_order[0] <= 1e-9 * m * r * w**2
+    assert e.secondary_force <= 1e-12 * m * r * w**2 and e.force_order[1] <= 1e-9 * m * r * w**2
+    assert e.primary_couple == pytest.approx(m * w**2 * r * a, rel=1e-12)
+    assert e.secondary_couple == pytest.approx(m * w**2 * r * a / (l / r), rel=1e-12)
