@@ -339,11 +339,8 @@ def test_first_harmonic_target_cancels_the_forward_first_harmonic_of_linkages_in
     from machdyn.shafts.balance import forward_first_harmonic
     from machdyn.shafts.model import analyse, build
 
-    text = (ROOT_EXAMPLES / "shaft_tamper_line.toml").read_text() + """
-[balance]
-target = "first_harmonic"
-planes = [{ name = "L", position = "100 mm", radius = "80 mm" }, { name = "R", position = "2300 mm", radius = "80 mm" }]
-"""
+    text = (ROOT_EXAMPLES / "shaft_tamper_line.toml").read_text()  # [balance] target = "first_harmonic"
+    assert 'target = "first_harmonic"' in text
     problem = load_problem(text)
     result = analyse(problem, build(problem)[0])
     a0, c0 = forward_first_harmonic(result.loads)
@@ -371,3 +368,21 @@ def test_opposed_flat_twin_cancels_primary_and_secondary_forces_but_leaves_a_pri
     assert e.secondary_force <= 1e-12 * m * r * w**2 and e.force_order[1] <= 1e-9 * m * r * w**2
     assert e.primary_couple == pytest.approx(m * w**2 * r * a, rel=1e-12)
     assert e.secondary_couple == pytest.approx(m * w**2 * r * a / (l / r), rel=1e-12)
+
+
+def test_trial_masses_left_on_in_sequence_still_recover_the_unbalance():
+    """Two-plane runs where the first trial mass stays on during the second trial run: the second influence
+    coefficient is measured from the first trial run's readings, and the corrections to add are the true ones less
+    the masses left on."""
+    speed, planes, sensors, radius = 150.0, (0.1, 0.9), (0.0, 1.0), 0.2
+    true = [0.01 * np.exp(2.0j), 0.02 * np.exp(-0.5j)]
+
+    def run(extra):
+        u = [(t + e) * radius for t, e in zip(true, extra, strict=True)]
+        return tuple(reading(v) for v in _rigid_rotor(u, planes, sensors, speed))
+
+    w1, w2 = 0.008, 0.012 * np.exp(1j)
+    trials = [TrialRun(0, 0.008, 0.0, run([w1, 0]), removed=False),
+              TrialRun(1, 0.012, 1.0, run([w1, w2]), removed=True)]
+    fb = field_two(run([0, 0]), trials)
+    assert np.allclose(fb.correction(), [-true[0] - w1, -true[1]], rtol=1e-9, atol=1e-15)

@@ -160,9 +160,10 @@ def outcome_of(result: Any, problem_text: Any = None) -> Outcome:
             summary.append("shaft.grade.margin")
         summary.append("shaft.grade.achieved_G")
         if not g.passes:
-            failed.append(f"the rotor misses balance grade G {g.grade:g}: residual unbalance "
-                          f"{max(g.residual) * 1e6:.4g} g*mm in a bearing plane exceeds the allowed "
-                          f"{min(g.allowed) * 1e6:.4g} g*mm (ISO 21940-11)")
+            over = "; ".join(f"{name}: {res * 1e6:.4g} g*mm > {allowed * 1e6:.4g} g*mm" for name, allowed, res in
+                             zip(g.bearings, g.allowed, g.residual, strict=True) if res > allowed * (1 + 1e-12))
+            failed.append(f"the rotor misses balance grade G {g.grade:g} (ISO 21940-11), residual unbalance in "
+                          f"the bearing planes: {over}")
     if result.locomotive is not None:
         lo = result.locomotive
         sc |= {"shaft.locomotive.hammer_blow": lo.hammer_blow,
