@@ -54,6 +54,7 @@ class ShaftLine:
     field_names: tuple[str, ...]
     frame: Frame6 | None = None
     reciprocating_share: float = 0.0
+    field_runs: tuple[tuple[Reading, ...], ...] = ()  # original and trial-run readings as entered (for the report)
     linkages: tuple[LinkagePlane, ...] = ()
     balance_target: str = "rotating"
 
@@ -126,6 +127,15 @@ def _linkage(spec: Any, where: str, speed: float, problems: list) -> LinkagePlan
     if plane is not None and speed > 0:  # every crank angle of the turn must assemble
         _try(problems, where, lambda: linkage_loads((plane,), speed, np.linspace(0, 2 * np.pi, 36, endpoint=False)))
     return plane
+
+
+def _runs(problem: Any) -> tuple[tuple[Reading, ...], ...]:
+    fb = problem.field_balancing
+    if fb is None:
+        return ()
+    runs = [tuple(Reading(r.amplitude, r.phase) for r in fb.original)]
+    runs += [tuple(Reading(r.amplitude, r.phase) for r in t.readings) for t in fb.trials]
+    return tuple(runs)
 
 
 def build(problem: Any) -> tuple[ShaftLine | None, list[tuple[str, str]]]:
@@ -240,9 +250,10 @@ def build(problem: Any) -> tuple[ShaftLine | None, list[tuple[str, str]]]:
     if problems:
         return None, problems
     return ShaftLine(s.speed, s.positions, s.harmonics, s.reference, masses, cylinders, bearings, planes, holes,
-                     field, field_holes, names_f, frame,
-                     problem.balance.reciprocating_fraction if problem.balance is not None else 0.0, linkages,
-                     problem.balance.target if problem.balance is not None else "rotating"), []
+                     field, field_holes, names_f, frame=frame,
+                     reciprocating_share=problem.balance.reciprocating_fraction if problem.balance is not None else 0.0,
+                     field_runs=_runs(problem), linkages=linkages,
+                     balance_target=problem.balance.target if problem.balance is not None else "rotating"), []
 
 
 @dataclass(frozen=True)
