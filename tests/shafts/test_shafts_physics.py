@@ -29,6 +29,7 @@ from machdyn.shafts.reciprocating import (
 )
 from machdyn.shafts.rotating import Bearing, Mass, bearing_reactions, cycle, rotating_loads
 
+ROOT_EXAMPLES = __import__("pathlib").Path(__file__).resolve().parents[2] / "examples"
 MODULES = ["machdyn.shafts.rotating", "machdyn.shafts.balance", "machdyn.shafts.grades",
            "machdyn.shafts.reciprocating", "machdyn.shafts.field"]
 
@@ -260,3 +261,128 @@ planes = [ { name = "web", position = "0 mm", radius = "40 mm" } ]
     assert result.engine.secondary_force == pytest.approx(math.sqrt(2) * 0.5 * 0.04 * (3000 * math.pi / 30) ** 2
                                                           / 3.5, rel=1e-12)
     assert second > 0.9 * result.engine.secondary_force
+
+
+SLIDER_CRANK = """
+[linkages.mechanism]
+type = "slider_crank"
+crank = { length = "50 mm", mass = "2.5 kg", inertia = "0.004 kg*m^2", com = ["15 mm", "0 mm"] }
+rod = { length = "200 mm", mass = "1.2 kg", inertia = "0.0055 kg*m^2", com = ["60 mm", "0 mm"] }
+slider = { mass = "1.5 kg" }
+"""
+
+LINKAGE_LINE = """
+[shaft_line]
+speed = "1500 rpm"
+reference = "0 mm"
+
+[[linkages]]
+name = "front"
+position = "{z1}"
+phase = "0 deg"
+""" + SLIDER_CRANK + """
+[[linkages]]
+name = "rear"
+position = "{z2}"
+phase = "180 deg"
+axis = "90 deg"
+""" + SLIDER_CRANK
+
+
+def test_linkages_on_the_shaft_carry_the_planar_engine_shaking_force_into_space():
+    """Two slider-cranks of examples/slider_crank.toml (rod with its own inertia) in two planes, the second turned
+    90 deg about the shaft and half a turn behind: the shaft line's force is the planar engine's shaking force of
+    each, turned into shaft axes, and its couple z x F; in one plane at z = 0 the couple vanishes."""
+    from machdyn.problem.loader import load_problem, read_problem
+    from machdyn.shafts.model import analyse, build
+
+    problem = load_problem(LINKAGE_LINE.replace("{z1}", "-100 mm").replace("{z2}", "150 mm"))
+    line, problems = build(problem)
+    assert problems == []
+    result = analyse(problem, line)
+    w = 1500 * math.pi / 30
+    mech = read_problem(ROOT_EXAMPLES / "slider_crank.toml").model
+    from dataclasses import replace
+
+    quiet = replace(mech, forces=(), torques=(), springs=(), point_masses=())
+    theta = result.loads.angle
+    a, b = frame_loads(quiet, theta, w), frame_loads(quiet, theta + math.pi, w)
+    fx = a.fx - b.fy  # the rear one turned by 90 deg: (x, y) -> (-y, x)
+    fy = a.fy + b.fx
+    assert np.allclose(result.loads.fx, fx, atol=1e-9 * np.max(np.abs(fx)))
+    assert np.allclose(result.loads.fy, fy, atol=1e-9 * np.max(np.abs(fy)))
+    assert np.allclose(result.loads.my, -0.1 * a.fx + 0.15 * (-b.fy), atol=1e-9 * np.max(np.abs(fx)))
+    assert np.allclose(result.linkage_torque.sum(axis=0), a.moment + b.moment, atol=1e-9 * np.max(np.abs(a.moment)))
+    one = load_problem(LINKAGE_LINE.replace("{z1}", "0 mm").replace("{z2}", "0 mm"))
+    r1 = analyse(one, build(one)[0])
+    assert np.max(r1.loads.couple) <= 1e-12 * np.max(r1.loads.force)
+
+
+def test_a_linkage_whose_crank_pivot_is_off_the_shaft_is_refused():
+    from dataclasses import replace
+
+    from machdyn.errors import InputError
+    from machdyn.shafts.linkages import LinkagePlane
+
+    mech = slider_crank(0.05, 0.2)
+    LinkagePlane("ok", mech, 0.0)
+    moved = replace(mech, ground={**mech.ground, "O": (0.1, 0.0)})
+    with pytest.raises(InputError, match="must lie on the shaft axis"):
+        LinkagePlane("off", moved, 0.0)
+
+
+def test_first_harmonic_target_cancels_the_forward_first_harmonic_of_linkages_in_two_planes():
+    """The tamper line of two double tampers: corrections aimed at the forward-turning first harmonic leave
+    none of it in the force or the couple (to 1e-9); the backward part and the higher orders stay. For rotating
+    masses alone the same target gives the classical two-plane corrections."""
+    from machdyn.problem.loader import load_problem
+    from machdyn.shafts.balance import forward_first_harmonic
+    from machdyn.shafts.model import analyse, build
+
+    text = (ROOT_EXAMPLES / "shaft_tamper_line.toml").read_text()  # [balance] target = "first_harmonic"
+    assert 'target = "first_harmonic"' in text
+    problem = load_problem(text)
+    result = analyse(problem, build(problem)[0])
+    a0, c0 = forward_first_harmonic(result.loads)
+    a1, c1 = forward_first_harmonic(result.balance.after)
+    assert abs(c0) > 0 and abs(a1) <= 1e-9 * (abs(a0) + abs(c0)) and abs(c1) <= 1e-9 * abs(c0)
+    assert result.balance.after.peak_couple < result.loads.peak_couple
+    masses = [Mass("a", 2.0, 0.1, 0.4, 0.2), Mass("b", 1.0, 0.2, 2.5, 0.9)]
+    from machdyn.shafts.balance import first_harmonic_corrections
+
+    planes = (Plane("L", 0.0, 0.1), Plane("M", 1.0, 0.1))
+    fh = first_harmonic_corrections(rotating_loads(masses, 50.0, reference=0.3), planes)
+    classic = two_plane(masses, *planes).corrections
+    for x, y in zip(fh, classic, strict=True):
+        assert x.mass == pytest.approx(y.mass, rel=1e-12) and x.angle == pytest.approx(y.angle, abs=1e-12)
+
+
+def test_opposed_flat_twin_cancels_primary_and_secondary_forces_but_leaves_a_primary_couple():
+    """A flat twin (boxer): cylinders on opposite sides (axes 0 and 180 deg), cranks 180 deg apart, offset along
+    the shaft by a: the pistons move in opposition, so both forces cancel; the primary couple m w^2 r a and the
+    secondary couple m w^2 r a / n remain (Uicker, Pennock & Shigley, 5th ed., sec. 16.9, opposed engines)."""
+    m, r, l, a, w = 0.4, 0.035, 0.12, 0.08, 600.0
+    cyl = [Cylinder("L", 0.0, 0.0, 0.0, r, l, m), Cylinder("R", a, math.pi, math.pi, r, l, m)]
+    e = engine_orders(cyl, w, 720, 4, reference=a / 2)
+    assert e.primary_force <= 1e-12 * m * r * w**2 and e.force_order[0] <= 1e-9 * m * r * w**2
+    assert e.secondary_force <= 1e-12 * m * r * w**2 and e.force_order[1] <= 1e-9 * m * r * w**2
+    assert e.primary_couple == pytest.approx(m * w**2 * r * a, rel=1e-12)
+    assert e.secondary_couple == pytest.approx(m * w**2 * r * a / (l / r), rel=1e-12)
+
+
+def test_trial_masses_left_on_in_sequence_still_recover_the_unbalance():
+    """Two-plane runs where the first trial mass stays on during the second trial run: the second influence
+    coefficient is measured from the first trial run's readings, and the corrections to add are the true ones less
+    the masses left on."""
+    speed, planes, sensors, radius = 150.0, (0.1, 0.9), (0.0, 1.0), 0.2
+    true = [0.01 * np.exp(2.0j), 0.02 * np.exp(-0.5j)]
+
+    def run(extra):
+        u = [(t + e) * radius for t, e in zip(true, extra, strict=True)]
+        return tuple(reading(v) for v in _rigid_rotor(u, planes, sensors, speed))
+
+    w1, w2 = 0.008, 0.012 * np.exp(1j)
+    trials = [TrialRun(0, 0.008, 0.0, run([w1, 0]), removed=False),
+              TrialRun(1, 0.012, 1.0, run([w1, w2]), removed=True)]
+    fb = field_two(run([0, 0]), trials)
+    assert np.allclose(fb.correction(), [-true[0] - w1, -true[1]], rtol=1e-9, atol=1e-15)

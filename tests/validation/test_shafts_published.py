@@ -162,3 +162,19 @@ def test_iso_1940_permissible_unbalance_in_imperial_units():
         assert u == pytest.approx(6.015 * grade * pounds / rpm, rel=1e-4)
     ua, ub = allocate(1.0, 0.4, 0.0, 1.0)  # centre of mass 0.4 L from bearing A: A carries 0.6
     assert (ua, ub) == (pytest.approx(0.6), pytest.approx(0.4)) and ua + ub == pytest.approx(1.0)
+
+
+def test_khurmi_v_twin_at_right_angles_primary_balance_and_secondary_force():
+    """Khurmi & Gupta, *Theory of Machines*, 14th ed., ch. 22 (V-engines), the example of a vee-twin with cylinder
+    axes at right angles on a common crank, 11.5 kg reciprocating per cylinder, crank 75 mm, rod 0.3 m, 500 rpm
+    (problem text also at askfilo.com, 'vee-twin engine has the cylinder axes at right angles'): the primary
+    forces add up to one force turning with the crank, so a revolving mass balances them; the largest resultant
+    secondary force, printed as sqrt(2) m w^2 r / n = 836 N."""
+    w = 500 * RPM
+    cyl = [Cylinder("1", 0.0, 0.0, math.radians(45), 0.075, 0.3, 11.5),
+           Cylinder("2", 0.0, 0.0, math.radians(-45), 0.075, 0.3, 11.5)]
+    e = engine_orders(cyl, w)
+    d, r = e.primary_dr
+    assert abs(r) <= 1e-12 and abs(d) == pytest.approx(11.5 * 0.075, rel=1e-12)  # one direct crank of m r
+    assert e.primary_force == pytest.approx(11.5 * w**2 * 0.075, rel=1e-9)  # constant in size, turning
+    assert e.secondary_force == pytest.approx(836.0, abs=1.0)

@@ -22,6 +22,7 @@ def plot_shaft(ax: Any, result: Any) -> Any:
     if result.balance is not None:
         items += [(c.plane.position, c.unbalance, c.angle, f"corr. {c.plane.name}", PALETTE[1])
                   for c in result.balance.corrections]
+    items += [(lk.position, 0.0, 0.0, f"linkage {lk.name}", PALETTE[3]) for lk in line.linkages]
     zs = [z for z, *_ in items] + [b.position for b in line.bearings] or [0.0]
     z0, z1 = min(zs), max(zs)
     span = max(z1 - z0, 1e-3)
@@ -65,6 +66,15 @@ def _vectors(result: Any, moment: bool) -> list[tuple[complex, str, str]]:
     out = []
     for m in line.balanced_masses():
         out.append((m.unbalance * ((m.position - ref) if moment else 1.0), m.name, PALETTE[0]))
+    if result.balance is not None and line.balance_target == "first_harmonic":
+        from ..shafts.balance import forward_first_harmonic
+
+        a, cm = forward_first_harmonic(result.loads)
+        w2 = result.loads.speed ** 2
+        known = sum((m.unbalance * ((m.position - ref) if moment else 1.0) for m in line.balanced_masses()), 0j)
+        rest = (cm if moment else a) / w2 - known
+        if abs(rest) > 0:
+            out.append((rest, "cylinders and linkages, forward 1x", PALETTE[3]))
     if result.balance is not None:
         for c in result.balance.corrections:
             m = c.as_mass()
@@ -106,6 +116,44 @@ def plot_orders(ax: Any, engine: Any) -> Any:
     return _finish(ax, "Engine: exact harmonic orders (blue force, green couple)", legend=False)
 
 
+def plot_readings(ax: Any, original: Any, trials: Any, unit: str = "") -> Any:
+    """The 1x readings as vectors from the origin: the original run (solid) and each trial run (dashed), one
+    colour per sensor; angles are the phase lags."""
+    for j, o in enumerate(original):
+        colour = PALETTE[j % len(PALETTE)]
+        v = o.amplitude * np.exp(1j * o.phase)
+        ax.annotate("", (v.real, v.imag), (0, 0), arrowprops={"arrowstyle": "->", "color": colour, "linewidth": 1.6})
+        ax.text(v.real, v.imag, f"O{j + 1}", color=colour, fontsize="x-small")
+        for k, t in enumerate(trials):
+            r = t[j]
+            u = r.amplitude * np.exp(1j * r.phase)
+            ax.annotate("", (u.real, u.imag), (0, 0), arrowprops={"arrowstyle": "->", "color": colour,
+                                                                  "linestyle": "--", "linewidth": 1.0})
+            ax.text(u.real, u.imag, f"T{k + 1}", color=colour, fontsize="x-small")
+    top = max([o.amplitude for o in original] + [r.amplitude for t in trials for r in t] + [1e-12]) * 1.15
+    ax.set_xlim(-top, top)
+    ax.set_ylim(-top, top)
+    ax.set_aspect("equal")
+    ax.axhline(0, color="#bbbbbb", linewidth=0.6)
+    ax.axvline(0, color="#bbbbbb", linewidth=0.6)
+    ax.set_xlabel(f"amplitude · cos(phase) {unit}".strip())
+    ax.set_ylabel(f"amplitude · sin(phase) {unit}".strip())
+    return _finish(ax, "1x readings (O original, T trial runs)", legend=False)
+
+
+def plot_grade(ax: Any, grade: Any) -> Any:
+    """Residual unbalance in each bearing plane beside its ISO 21940-11 allowance."""
+    k = np.arange(len(grade.bearings))
+    ax.bar(k - 0.2, np.asarray(grade.allowed) * 1e6, width=0.4, color="#bbbbbb", label="allowed")
+    ax.bar(k + 0.2, np.asarray(grade.residual) * 1e6, width=0.4,
+           color=[PALETTE[2] if r <= a else PALETTE[1] for r, a in zip(grade.residual, grade.allowed, strict=True)],
+           label="residual")
+    ax.set_xticks(k)
+    ax.set_xticklabels([f"bearing {n}" for n in grade.bearings])
+    ax.set_ylabel("unbalance [g·mm]")
+    return _finish(ax, f"ISO 21940-11, G {format_value(grade.grade)}")
+
+
 def record_sections(outcome: Any) -> list[tuple[str, str]]:
     """The ``[field_records]`` section: the 1x readings read from each record and the corrections."""
     r = outcome.results
@@ -124,14 +172,18 @@ def record_sections(outcome: Any) -> list[tuple[str, str]]:
     intro = ("<p>1x amplitude and phase lag (the angle the shaft turns from the reference pulse to the positive "
              "peak) of every channel, over the whole revolutions of each record; mass angles are measured from the "
              "reference mark against rotation.</p>")
-    return [("Field balancing from records", intro + rows_html(rows, ("run", "1x readings")))]
+    fig = _render("shaft-records", "1x readings of the runs", "Original (solid) and trial runs (dashed) at each "
+                  "sensor, as read from the records.", (4.6, 4.2),
+                  lambda f: plot_readings(f.subplots(1, 1), r.original.readings, [t.readings for t in r.trials]),
+                  margins=(0.8, 0.3, 0.6, 0.45))
+    return [("Field balancing from records", intro + figures_html([fig]) + rows_html(rows, ("run", "1x readings")))]
 
 
 def sections(outcome: Any) -> list[tuple[str, str]]:
     """The shaft-line section."""
     result = outcome.results
     figs = []
-    has_masses = bool(result.line.masses or result.line.cylinders)
+    has_masses = bool(result.line.masses or result.line.cylinders or result.line.linkages)
     if has_masses:
         def draw(fig: Any) -> None:
             axes = fig.subplots(1, 3)
@@ -156,6 +208,22 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
         figs.append(_render("shaft-loads", "Frame loads over the turn", "Resultant force and couple about the "
                             "reference plane, as given and after the corrections.", (4.6 * n, 3.4), draw_loads,
                             margins=(0.7, 0.6, 0.6, 0.45), wspace=0.45))
+    small = []
+    f = result.line.field
+    if result.grade is not None:
+        small.append(("grade", lambda ax: plot_grade(ax, result.grade)))
+    if f is not None and result.line.field_runs:
+        runs = result.line.field_runs
+        small.append(("field", lambda ax: plot_readings(ax, runs[0], runs[1:])))
+    if small:
+        def draw_small(fig: Any) -> None:
+            axes = np.atleast_1d(fig.subplots(1, len(small)))
+            for ax, (_, fn) in zip(axes, small, strict=True):
+                fn(ax)
+
+        figs.append(_render("shaft-checks", "Grade check and field readings", "Residual unbalance against the "
+                            "allowance of each bearing plane; 1x readings of the field-balancing runs.",
+                            (4.8 * len(small), 3.8), draw_small, margins=(0.8, 0.3, 0.6, 0.45), wspace=0.4))
     rows: list[list[str]] = []
     if result.balance is not None:
         for c in result.balance.corrections:
@@ -181,7 +249,6 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
             rows.append([f"mount {name}: largest dynamic force", f"{format_value(force)} N"])
         for name, v in result.frame_response.rms_velocity.items():
             rows.append([f"frame point {name}: RMS velocity", f"{format_value(v * 1e3)} mm/s"])
-    f = result.line.field
     if f is not None:
         for name, m, a, eff in zip(result.line.field_names, f.correction_mass, f.correction_angle, f.trial_effect,
                                    strict=True):

@@ -140,3 +140,36 @@ def equivalent_in_planes(masses: Sequence[Mass], z_a: float, z_b: float) -> tupl
 def peak_residual(result: BalanceResult) -> tuple[float, float]:
     """Largest |force| [N] and |couple| [N*m] left after the corrections, over the turn."""
     return float(np.max(result.after.force)), float(np.max(result.after.couple))
+
+
+def forward_first_harmonic(loads: ShaftLoads) -> tuple[complex, complex]:
+    """The forward-turning part of the first harmonic of the resultant force and of its first moment about the
+    loads' reference plane: with F = F_x + i F_y = A e^{i theta} + B e^{-i theta} + (other orders), A [N]; likewise
+    C [N m] for sum z F. Only A (and C) can be cancelled by masses turning with the shaft; B turns backwards
+    (the reverse cranks of Khurmi & Gupta, 14th ed., sec. 22.10). Uniform angles over one turn."""
+    theta = loads.angle
+    turn = np.exp(-1j * theta)
+    force = loads.fx + 1j * loads.fy
+    moment = loads.first_moment_x() + 1j * loads.first_moment_y()
+    return complex(np.mean(force * turn)), complex(np.mean(moment * turn))
+
+
+def first_harmonic_corrections(loads: ShaftLoads, planes: Sequence[Plane]) -> tuple[Correction, ...]:
+    """Corrections in one or two planes cancelling the forward first harmonic of ``loads`` (force, and couple
+    with two planes): U = -A / w^2 in one plane; U_L + U_M = -A / w^2 and (z_L - z_ref) U_L + (z_M - z_ref) U_M =
+    -C / w^2 in two. For rotating masses alone this is :func:`two_plane` (or :func:`single_plane`); for a
+    cylinder it balances the direct crank, half the reciprocating mass."""
+    a, c = forward_first_harmonic(loads)
+    w2 = loads.speed**2
+    if not w2 > 0:
+        raise InputError(f"Balancing the first harmonic needs a shaft speed > 0; got {loads.speed:g} rad/s.")
+    if len(planes) == 1:
+        return (_correction(planes[0], -a / w2),)
+    pl, pm = planes
+    zl, zm = pl.position - loads.reference, pm.position - loads.reference
+    if abs(zm - zl) <= 1e-9 * max(1.0, abs(pl.position), abs(pm.position)):
+        raise InputError(f"The two correction planes '{pl.name}' and '{pm.name}' must stand at different axial "
+                         f"positions; both are at {pl.position:g} m.")
+    u_m = (-c / w2 + zl * a / w2) / (zm - zl)
+    u_l = -a / w2 - u_m
+    return (_correction(pl, u_l), _correction(pm, u_m))

@@ -13,8 +13,8 @@ measured with rotation. For a linear machine at a fixed speed
 so that the corrections W = -a^{-1} V0 cancel the original vibration (single plane: W = -V0 / a) (Thomson &
 Dahleh, *Theory of Vibration with Applications*, 5th ed., sec. 3.3-3.4 (field balancing); Rao, *Mechanical
 Vibrations*, 5th ed., sec. 9.2-9.3; ISO 21940-13's influence-coefficient procedure). Masses are at the trial
-masses' radius in their planes; a trial mass stays on unless ``removed``; the result is the total correction
-(the trial mass's own contribution included when it stays).
+masses' radius in their planes. The trial runs are taken in the order given; a trial mass left on (``removed``
+false) is part of the starting state of the runs after it, and the correction reported is what to add to it.
 
 A reading without a phase cannot enter this method (the amplitude-only four-run method needs three trial runs);
 an influence matrix that is singular or nearly so (a trial mass too small to change the readings, or placed at a
@@ -109,16 +109,22 @@ def _solve(original: Sequence[Reading], trials: Sequence[TrialRun]) -> FieldBala
                          f"{[t.plane + 1 for t in trials]}.")
     v0 = _vectors(original, "of the original run")
     a = np.zeros((n, n), dtype=complex)
-    effects = []
-    for k, t in enumerate(sorted(trials, key=lambda t: t.plane)):
+    effects = [0.0] * n
+    kept = np.zeros(n, dtype=complex)
+    baseline = v0  # the runs in the order given: a trial mass left on is part of the next run's starting state
+    for t in trials:
+        k = t.plane
         check_positive(f"trial mass of plane {t.plane + 1}", t.mass, "kg")
         check_finite(f"trial-mass angle of plane {t.plane + 1}", t.angle, "rad")
         if len(t.readings) != n:
             raise InputError(f"The trial run of plane {t.plane + 1} has {len(t.readings)} reading(s); {n} needed.")
         vt = _vectors(t.readings, f"of the trial run in plane {t.plane + 1}")
-        a[:, k] = (vt - v0) / t.weight
-        scale = max(float(np.max(np.abs(v0))), float(np.max(np.abs(vt))), 1e-300)
-        effects.append(float(np.max(np.abs(vt - v0))) / scale)
+        a[:, k] = (vt - baseline) / t.weight
+        scale = max(float(np.max(np.abs(baseline))), float(np.max(np.abs(vt))), 1e-300)
+        effects[k] = float(np.max(np.abs(vt - baseline))) / scale
+        if not t.removed:
+            kept[k] += t.weight
+            baseline = vt
     if n == 1:
         singular = effects[0] <= SINGULAR_EFFECT
         detail = f"the trial mass changed the reading by {effects[0]:.3g} of its size"
@@ -134,10 +140,6 @@ def _solve(original: Sequence[Reading], trials: Sequence[TrialRun]) -> FieldBala
             "at a node of the vibration, or two trial runs that act alike. Repeat the trial run with a larger trial "
             "mass (one that changes the amplitude by 30 % or the phase by 30 deg) or in another plane."
         )
-    kept = np.zeros(n, dtype=complex)
-    for k, t in enumerate(sorted(trials, key=lambda t: t.plane)):
-        if not t.removed:
-            kept[k] = t.weight
     w = np.linalg.solve(a, -v0) - kept
     mass = tuple(float(abs(x)) for x in w)
     angle = tuple(float(math.atan2(x.imag, x.real) % (2 * math.pi)) if abs(x) > 0 else 0.0 for x in w)

@@ -13,6 +13,10 @@ from .schema import ShaftLineProblem
 LABELS = {
     "shaft.force.peak": Label("Shaft line: largest resultant force on the frame", "N"),
     "shaft.couple.peak": Label("Shaft line: largest resultant couple about the reference plane", "N*m"),
+    "shaft.linkages.torque.peak": Label("Linkages: largest shaking moment about the shaft axis (drive's reaction "
+                                        "included)", "N*m", zero_below="shaft.linkages.torque.gross"),
+    "shaft.linkages.torque.gross": Label("Linkages: sum of their largest shaking moments about the shaft axis",
+                                         "N*m"),
     "shaft.unbalance": Label("Rotating masses: resultant unbalance sum(m r)", "kg*m", "g*mm",
                              zero_below="shaft.unbalance.gross"),
     "shaft.unbalance.gross": Label("Rotating masses: sum of the unbalances |m r|", "kg*m", "g*mm"),
@@ -61,16 +65,21 @@ def outcome_of(result: Any, problem_text: Any = None) -> Outcome:
     labels: dict[str, Label] = {}
     summary: list[str] = []
     rotating = [*line.masses, *(c.crank_mass() for c in line.cylinders)]
-    if rotating:
+    if rotating or line.linkages:
         sc |= {"shaft.force.peak": loads.peak_force, "shaft.couple.peak": loads.peak_couple}
         summary += ["shaft.force.peak", "shaft.couple.peak"]
+    if result.linkage_torque is not None:
+        sc["shaft.linkages.torque.peak"] = float(abs(result.linkage_torque.sum(axis=0)).max())
+        sc["shaft.linkages.torque.gross"] = float(abs(result.linkage_torque).max(axis=1).sum())
+        summary.append("shaft.linkages.torque.peak")
+    if rotating:
         s0, s1 = unbalance(rotating, line.reference)
         sc["shaft.unbalance"], sc["shaft.couple_unbalance"] = abs(s0), abs(s1)
         sc["shaft.unbalance.gross"] = sum(abs(m.unbalance) for m in rotating)
         sc["shaft.couple_unbalance.gross"] = sum(abs(m.unbalance * (m.position - line.reference)) for m in rotating)
         summary += ["shaft.unbalance", "shaft.couple_unbalance"]
     series: dict[str, Any] = {}
-    if rotating:
+    if rotating or line.linkages:
         series["shaft_loads"] = {"angle": (loads.angle, "rad"), "fx": (loads.fx, "N"), "fy": (loads.fy, "N"),
                                  "mx": (loads.mx, "N*m"), "my": (loads.my, "N*m")}
     if result.reactions is not None:
@@ -151,9 +160,10 @@ def outcome_of(result: Any, problem_text: Any = None) -> Outcome:
             summary.append("shaft.grade.margin")
         summary.append("shaft.grade.achieved_G")
         if not g.passes:
-            failed.append(f"the rotor misses balance grade G {g.grade:g}: residual unbalance "
-                          f"{max(g.residual) * 1e6:.4g} g*mm in a bearing plane exceeds the allowed "
-                          f"{min(g.allowed) * 1e6:.4g} g*mm (ISO 21940-11)")
+            over = "; ".join(f"{name}: {res * 1e6:.4g} g*mm > {allowed * 1e6:.4g} g*mm" for name, allowed, res in
+                             zip(g.bearings, g.allowed, g.residual, strict=True) if res > allowed * (1 + 1e-12))
+            failed.append(f"the rotor misses balance grade G {g.grade:g} (ISO 21940-11), residual unbalance in "
+                          f"the bearing planes: {over}")
     if result.locomotive is not None:
         lo = result.locomotive
         sc |= {"shaft.locomotive.hammer_blow": lo.hammer_blow,

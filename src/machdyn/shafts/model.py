@@ -14,12 +14,20 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
-from .balance import BalanceResult, Plane, equivalent_in_planes, single_plane, two_plane
+from .balance import (
+    BalanceResult,
+    Plane,
+    equivalent_in_planes,
+    first_harmonic_corrections,
+    single_plane,
+    two_plane,
+)
 from .field import FieldBalance, Reading, TrialRun, split_onto_holes
 from .field import single_plane as field_single
 from .field import two_plane as field_two
 from .frame6 import Frame6, Mount6, Response6, modes6, steady_response
 from .grades import GRADES, GradeCheck, allocate, permissible_unbalance
+from .linkages import LinkagePlane, linkage_loads
 from .locomotive import LocomotiveBalance, locomotive_balance
 from .phases import PhaseSearch, search_phases
 from .reciprocating import Cylinder, EngineOrders, engine_orders, reciprocating_loads
@@ -46,6 +54,9 @@ class ShaftLine:
     field_names: tuple[str, ...]
     frame: Frame6 | None = None
     reciprocating_share: float = 0.0
+    field_runs: tuple[tuple[Reading, ...], ...] = ()  # original and trial-run readings as entered (for the report)
+    linkages: tuple[LinkagePlane, ...] = ()
+    balance_target: str = "rotating"
 
     def balanced_masses(self) -> list[Mass]:
         """The masses the corrections balance: rotating masses, the cylinders' rotating masses and the share c of
@@ -99,16 +110,46 @@ def _field(spec: Any, problems: list) -> FieldBalance | None:
     return _try(problems, "field_balancing", lambda: field_two(original, trials))
 
 
+def _linkage(spec: Any, where: str, speed: float, problems: list) -> LinkagePlane | None:
+    from ..errors import ProblemFileError
+    from ..problem.build import build_mechanism
+    from ..problem.schema import DriveSpec, LinkageProblem, LoadsSpec
+
+    try:
+        drive = DriveSpec.model_construct(speed=speed, acceleration=0.0, positions=360, start=None, stop=None)
+        mech = build_mechanism(LinkageProblem.model_construct(
+            mechanism=spec.mechanism, drive=drive, loads=LoadsSpec(gravity="off"),
+            counterweights=list(spec.counterweights)))
+    except ProblemFileError as exc:
+        problems += [(f"{where}.{path}", message) for path, message in exc.problems]
+        return None
+    plane = _try(problems, where, lambda: LinkagePlane(spec.name, mech, spec.position, spec.phase, spec.axis))
+    if plane is not None and speed > 0:  # every crank angle of the turn must assemble
+        _try(problems, where, lambda: linkage_loads((plane,), speed, np.linspace(0, 2 * np.pi, 36, endpoint=False)))
+    return plane
+
+
+def _runs(problem: Any) -> tuple[tuple[Reading, ...], ...]:
+    fb = problem.field_balancing
+    if fb is None:
+        return ()
+    runs = [tuple(Reading(r.amplitude, r.phase) for r in fb.original)]
+    runs += [tuple(Reading(r.amplitude, r.phase) for r in t.readings) for t in fb.trials]
+    return tuple(runs)
+
+
 def build(problem: Any) -> tuple[ShaftLine | None, list[tuple[str, str]]]:
     """The :class:`ShaftLine` of a validated problem and every mistake found building it."""
     problems: list[tuple[str, str]] = []
     s = problem.shaft_line
     if s.speed <= 0:
         problems.append(("shaft_line.speed", f"must be > 0 rad/s; got {s.speed:g} rad/s"))
-    if not problem.masses and not problem.cylinders and problem.field_balancing is None and \
+    linkages = tuple(lk for i, spec in enumerate(problem.linkages)
+                     if (lk := _linkage(spec, f"linkages[{i}]", s.speed, problems)) is not None)
+    if not problem.masses and not problem.cylinders and not problem.linkages and problem.field_balancing is None and \
             getattr(problem, "field_records", None) is None:
-        problems.append(("shaft_line", "a shaft line needs [[masses]], [[cylinders]], [field_balancing] or "
-                         "[field_records]"))
+        problems.append(("shaft_line", "a shaft line needs [[masses]], [[cylinders]], [[linkages]], "
+                         "[field_balancing] or [field_records]"))
     for table, items in (("masses", problem.masses), ("cylinders", problem.cylinders), ("bearings", problem.bearings)):
         names = [m.name for m in items]
         for i, name in enumerate(names):
@@ -137,6 +178,9 @@ def build(problem: Any) -> tuple[ShaftLine | None, list[tuple[str, str]]]:
             problems.append(("balance.planes[1].position", f"the two correction planes must stand at different "
                              f"axial positions (a couple cannot be corrected in one plane); both are at "
                              f"{planes[0].position:g} m"))
+        if problem.balance.target == "first_harmonic" and problem.balance.reciprocating_fraction > 0:
+            problems.append(("balance.reciprocating_fraction", "applies to target \"rotating\"; the first "
+                             "harmonic's target already takes all a counterweight can reach"))
         if any(0 < p.holes < 2 for p in problem.balance.planes):
             problems.append(("balance.planes", "a split onto fixed holes needs at least 2 holes"))
     g = problem.grade
@@ -166,6 +210,8 @@ def build(problem: Any) -> tuple[ShaftLine | None, list[tuple[str, str]]]:
     if loco is not None:
         if not cylinders:
             problems.append(("locomotive", "the locomotive's balance needs its [[cylinders]]"))
+        if loco.dead_load is not None and not loco.dead_load > 0:
+            problems.append(("locomotive.dead_load", f"must be > 0 N; got {loco.dead_load:g} N"))
         if loco.wheel_planes[0] == loco.wheel_planes[1]:
             problems.append(("locomotive.wheel_planes", f"the two wheel planes must stand apart; both at "
                              f"{loco.wheel_planes[0]:g} m"))
@@ -188,8 +234,9 @@ def build(problem: Any) -> tuple[ShaftLine | None, list[tuple[str, str]]]:
             frame = _try(problems, "frame", lambda: Frame6(fs.mass, fs.inertia, mounts, fs.com))
         if frame is not None:
             _try(problems, "frame.mounts", lambda: modes6(frame))
-        if not masses and not cylinders:
-            problems.append(("frame", "the frame's response needs the shaft line's [[masses]] or [[cylinders]]"))
+        if not masses and not cylinders and not problem.linkages:
+            problems.append(("frame", "the frame's response needs the shaft line's [[masses]], [[cylinders]] or "
+                             "[[linkages]]"))
         if fs.orders >= s.positions // 2:
             problems.append(("frame.orders", f"must be < {s.positions // 2} for {s.positions} angles per turn; "
                              f"got {fs.orders}"))
@@ -203,8 +250,10 @@ def build(problem: Any) -> tuple[ShaftLine | None, list[tuple[str, str]]]:
     if problems:
         return None, problems
     return ShaftLine(s.speed, s.positions, s.harmonics, s.reference, masses, cylinders, bearings, planes, holes,
-                     field, field_holes, names_f, frame,
-                     problem.balance.reciprocating_fraction if problem.balance is not None else 0.0), []
+                     field, field_holes, names_f, frame=frame,
+                     reciprocating_share=problem.balance.reciprocating_fraction if problem.balance is not None else 0.0,
+                     field_runs=_runs(problem), linkages=linkages,
+                     balance_target=problem.balance.target if problem.balance is not None else "rotating"), []
 
 
 @dataclass(frozen=True)
@@ -225,6 +274,7 @@ class ShaftLineResult:
     frame_frequencies: np.ndarray | None = None
     frame_response: Response6 | None = None
     phases: PhaseSearch | None = None
+    linkage_torque: np.ndarray | None = None
 
 
 def _applied(line: ShaftLine, balance: BalanceResult, splits: tuple[dict[int, float], ...],
@@ -262,6 +312,10 @@ def analyse(problem: Any, line: ShaftLine) -> ShaftLineResult:
         engine = engine_orders(line.cylinders, line.speed, line.positions, min(line.harmonics, line.positions // 2 - 1),
                                line.reference, include_rotating=True)
         loads = loads + reciprocating_loads(line.cylinders, line.speed, theta, line.reference)
+    torque = None
+    if line.linkages:
+        extra, torque = linkage_loads(line.linkages, line.speed, theta, line.reference)  # torques per linkage
+        loads = loads + extra
     reactions = bearing_reactions(loads, line.bearings) if len(line.bearings) >= 2 else None
     balance = None
     splits: tuple[dict[int, float], ...] = ()
@@ -269,7 +323,9 @@ def analyse(problem: Any, line: ShaftLine) -> ShaftLineResult:
     applied: tuple[Mass, ...] = ()
     if line.planes:
         rotating = line.balanced_masses()
-        if len(line.planes) == 2:
+        if problem.balance.target == "first_harmonic":
+            balance = BalanceResult(first_harmonic_corrections(loads, line.planes), loads, loads)
+        elif len(line.planes) == 2:
             balance = two_plane(rotating, line.planes[0], line.planes[1], line.speed, theta, line.reference)
         else:
             balance = single_plane(rotating, line.planes[0], line.speed, theta, line.reference)
@@ -300,4 +356,4 @@ def analyse(problem: Any, line: ShaftLine) -> ShaftLineResult:
         ps = problem.phase_search
         phases = search_phases(line.cylinders, ps.cylinders, ps.objective, ps.step, line.speed, line.reference)
     return ShaftLineResult(line, loads, reactions, engine, balance, reactions_after, splits, applied, grade, loco,
-                           field_splits, freqs, response, phases)
+                           field_splits, freqs, response, phases, torque)

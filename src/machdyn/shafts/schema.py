@@ -9,6 +9,8 @@ its unit; unknown keys are refused.
 
 from __future__ import annotations
 
+from typing import Annotated
+
 from pydantic import Field
 
 from ..problem.fields import (
@@ -25,7 +27,7 @@ from ..problem.fields import (
     PositiveStiffness,
     Stiffness,
 )
-from ..problem.schema import Meta, Name, Spec
+from ..problem.schema import CounterweightSpec, MechanismSpec, Meta, Name, Spec
 
 
 class ShaftLineSpec(Spec):
@@ -57,6 +59,19 @@ class CylinderSpec(Spec):
     rotating_mass: Mass = 0.0
 
 
+class LinkageSpec(Spec):
+    """A planar linkage of machdyn (the ``[mechanism]`` of a linkage file, any type) at an axial ``position``,
+    its crank at ``phase`` for shaft angle 0, its x axis turned by ``axis`` about the shaft; its crank pivot must
+    be its origin (on the shaft). ``counterweights`` as in a linkage file."""
+
+    name: Name
+    position: Length
+    phase: Angle = 0.0
+    axis: Angle = 0.0
+    mechanism: Annotated[MechanismSpec, Field(discriminator="type")]
+    counterweights: list[CounterweightSpec] = []
+
+
 class BearingSpec(Spec):
     name: Name
     position: Length
@@ -79,6 +94,9 @@ class BalanceSpec(Spec):
     # share c of each cylinder's reciprocating mass balanced as if it revolved at its crank pin (1/2: the
     # direct-crank half of every primary force, all of it for a 90 deg V-twin or a radial engine)
     reciprocating_fraction: float = Field(0.0, ge=0.0, le=1.0)
+    # "rotating": the rotating masses (and the share above); "first_harmonic": the forward-turning first harmonic
+    # of everything on the shaft, linkages included -- all a counterweight turning with the shaft can cancel
+    target: str = Field("rotating", pattern="^(rotating|first_harmonic)$")
 
 
 class GradeSpec(Spec):
@@ -172,6 +190,7 @@ class ShaftLineProblem(Spec):
     shaft_line: ShaftLineSpec
     masses: list[MassSpec] = []
     cylinders: list[CylinderSpec] = []
+    linkages: list[LinkageSpec] = []
     bearings: list[BearingSpec] = []
     balance: BalanceSpec | None = None
     grade: GradeSpec | None = None
