@@ -4,7 +4,6 @@ coloured by the objective, with the best designs marked, and the table of the be
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import numpy as np
@@ -97,13 +96,10 @@ def exploration_section(done: Any) -> str:
            "sobol": f"a scrambled Sobol' sequence (seed {space.seed})"}[space.method]
     intro = (f"<p>{digest.designs:,} designs drawn from {how} over {len(space.names)} quantities, in "
              f"{space.partitions:,} partition(s) of up to {space.partition:,} designs; {digest.regular:,} regular "
-             "(assemble everywhere, pass no dead point and keep clear of one, change no branch, transmit force at "
-             f"an angle of at least {math.degrees(done.plan.min_transmission_angle):g}°). Objective: lowest "
-             f"<code>{escape(done.plan.objective)}"
+             f"(assemble everywhere and pass no dead position). Objective: lowest <code>{escape(done.plan.objective)}"
              f"</code>. Every design is in <code>{escape(str(done.store))}</code> (Parquet, SI units in the "
              f"schema).</p><p>Shown: a uniform sample of {len(digest.sample.get('design', [])):,} regular designs, "
-             "coloured by the objective (its scale spans the regular designs only); the best designs ringed in red. "
-             "The <code>status</code> column of the Parquet folder names each other design's fault.</p>")
+             "coloured by the objective; the best designs ringed in red.</p>")
     if len(space.names) > MATRIX_QUANTITIES:
         intro += f"<p>The matrix shows the first {MATRIX_QUANTITIES} quantities; the table lists all.</p>"
     columns = ["design", *space.names, done.plan.objective]
