@@ -45,3 +45,30 @@ def test_plot_of_a_sweep_scales_to_the_regular_designs():
                      quantity="peak force", unit="N", regular=[True, True, False, True])
     low, high = ax.get_ylim()
     assert 5.0 < low and high < 20.0
+
+
+def test_any_result_of_the_catalogue_can_be_asked_for_as_a_sweep_column():
+    """``[sweep] columns`` adds results of the full analysis (kinetic energy, the flywheel's energy) computed per
+    design by the run's own function: each variant's value equals that variant run alone."""
+    result = _sweep('columns = ["kinetic_energy.fluctuation", "flywheel.energy_fluctuation"]\n')
+    scalars = result.results_json()["scalars"]
+    alone = run_problem(load_problem((ROOT / "examples" / "four_bar.toml").read_text(encoding="utf-8")
+                                     .replace('length = "40 mm"', 'length = "80 mm"', 1))).results
+    got = scalars["sweep.kinetic_energy.fluctuation"]["value"]
+    assert np.isclose(got[1], alone["kinetic_energy.fluctuation"], rtol=1e-9)
+    assert np.isnan(got[2]) and np.isnan(got[3])
+    assert np.isclose(scalars["sweep.flywheel.energy_fluctuation"]["value"][1], alone["flywheel.energy_fluctuation"],
+                      rtol=1e-9)
+
+
+def test_a_column_that_names_no_result_is_refused_with_its_path():
+    from machdyn.errors import ProblemFileError
+    from machdyn.runner import check_problem
+
+    text = (ROOT / "examples" / "four_bar.toml").read_text(encoding="utf-8") + SWEEP
+    try:
+        check_problem(load_problem(text + 'columns = ["joint.Z.max_force"]\n'))
+    except ProblemFileError as exc:
+        assert exc.problems[0][0] == "sweep.columns[0]" and "joint.Z.max_force" in exc.problems[0][1]
+    else:
+        raise AssertionError("an unknown column was accepted")

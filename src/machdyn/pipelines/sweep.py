@@ -54,10 +54,20 @@ def variants(problem: Any) -> tuple[Any, list[Any]]:
 
 def check(problem: Any, _table: Any, source: str | None = None) -> list[tuple[str, str]]:
     try:
-        variants(problem)
+        _, mechs = variants(problem)
     except ProblemFileError as exc:
         return list(exc.problems)
-    return []
+    return unknown_columns(problem, mechs[0])
+
+
+def unknown_columns(problem: Any, mech: Any) -> list[tuple[str, str]]:
+    """The ``[sweep] columns`` that name no result of this mechanism, as (path, message)."""
+    from ..problem.errors import did_you_mean
+    from ..results.population import result_names
+
+    known = result_names(mech, getattr(problem.mechanism, "machine", None))
+    return [(f"sweep.columns[{i}]", f"'{key}' is not a result of this mechanism{did_you_mean(key, known)}")
+            for i, key in enumerate(problem.sweep.extra_columns) if key not in known]
 
 
 def run_sweep(problem: Any) -> SweepRun:
@@ -78,7 +88,7 @@ def run_sweep(problem: Any) -> SweepRun:
     about = tuple(problem.output.shaking_moment_about)
     mech = stack_designs(mechs)
     machine = getattr(problem.mechanism, "machine", None)
-    wanted = sweep_columns(mech, machine)
+    wanted = sweep_columns(mech, machine, extra=problem.sweep.extra_columns)
     columns = evaluate_population(mech, angles, speed, accel, wanted, about=about, machine=machine,
                                   min_transmission_angle=problem.sweep.transmission_limit)
     n = len(plan.problems)

@@ -39,6 +39,7 @@ from typing import Any
 
 import numpy as np
 
+from ..errors import InputError
 from ..linkage.diagnostics import output_bodies, time_ratio
 from ..linkage.model import GROUND, RRR, Mechanism, split_ref
 from .catalogue import ENGINE_SUMMARIES, MECHANISM, find, population_quantities
@@ -111,14 +112,17 @@ def result_names(mech: Mechanism, machine: str | None = None) -> list[str]:
 SWEEP_GROUPS = ("forces", "motion", "geometry")
 
 
-def sweep_columns(mech: Mechanism, machine: str | None = None, objective: str | None = None) -> list[str]:
+def sweep_columns(mech: Mechanism, machine: str | None = None, objective: str | None = None,
+                  extra: tuple[str, ...] = ()) -> list[str]:
     """The per-design results a sweep or an exploration keeps for every design: those of
-    :data:`SWEEP_GROUPS`, the Grashof class of a four-bar, and the ``objective`` if it is another result."""
+    :data:`SWEEP_GROUPS`, the Grashof class of a four-bar, the ``objective`` if it is another result, and the
+    ``extra`` results asked for (``[sweep] columns``)."""
     names = [k for k in result_names(mech, machine) if (f := find(k)) is not None and f[0].group in SWEEP_GROUPS]
     if "grashof.margin" in names:
         names.append("grashof.class")
-    if objective is not None and objective not in names:
-        names.append(objective)
+    for key in (objective, *extra):
+        if key is not None and key not in names:
+            names.append(key)
     return names
 
 
@@ -311,7 +315,10 @@ def _motion_chunk(mech, kin, phi, shape, wanted, about, machine, limit) -> tuple
         from ..linkage import mass_centre
         from ..linkage.mass_centre import inertial_shaking_moment
 
-        ix, iy = mass_centre(kin).inertia_force
+        try:
+            ix, iy = mass_centre(kin).inertia_force
+        except InputError:  # a massless (statics) model: no centre of mass, no inertia force
+            ix = iy = np.zeros(shape)
         results["inertial_shaking_force.max"] = np.where(ok, np.hypot(ix, iy), -np.inf).max(axis=1)
         moment = np.abs(np.broadcast_to(inertial_shaking_moment(kin, (about[0], about[1])), shape))
         results["inertial_shaking_moment.max_abs"] = np.where(ok, moment, -np.inf).max(axis=1)
