@@ -72,3 +72,15 @@ def test_a_column_that_names_no_result_is_refused_with_its_path():
         assert exc.problems[0][0] == "sweep.columns[0]" and "joint.Z.max_force" in exc.problems[0][1]
     else:
         raise AssertionError("an unknown column was accepted")
+
+
+def test_a_threshold_outside_0_to_90_deg_is_refused():
+    from machdyn.errors import ProblemFileError
+
+    text = (ROOT / "examples" / "four_bar.toml").read_text(encoding="utf-8") + SWEEP
+    try:
+        load_problem(text + 'min_transmission_angle = "95 deg"\n')
+    except ProblemFileError as exc:
+        assert "min_transmission_angle must be at least 0 deg and below 90 deg; got 95 deg" in str(exc)
+    else:
+        raise AssertionError("a threshold of 95 deg was accepted")

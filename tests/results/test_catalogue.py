@@ -165,11 +165,11 @@ def test_inertial_shaking_moment_is_the_frame_moment_without_loads_or_weight():
 
 
 def test_inertial_shaking_force_is_not_the_frame_force_of_a_press():
-    """The crank press's punch force closes through its frame: the frame force is tens of kN, the inertial
-    shaking force a few hundred N; a run, a sweep column and an objective name them apart."""
+    """The crank press's punch force (60 kN) closes through its frame: the frame force is some 59 kN, the
+    inertial shaking force tens of N (docs/results.md quotes both)."""
     result = run_problem(ROOT / "examples" / "crank_press.toml").results
     assert result["frame_force.max"] > 50e3
-    assert result["inertial_shaking_force.max"] < 0.05 * result["frame_force.max"]
+    assert result["inertial_shaking_force.max"] < 1e-2 * result["frame_force.max"]
 
 
 def test_the_documented_catalogue_example_runs_and_lists_every_mechanism_key():
