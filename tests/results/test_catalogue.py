@@ -49,6 +49,10 @@ NOT_IN_EXAMPLES = {
     "balance.spring_stiffness": "a balancing spring (tests/balancing)",
     "balance.spring_free_length": "a balancing spring (tests/balancing)",
     "optimise.front_size": "a Pareto front of several objectives (tests/optimise/test_stage.py)",
+    "optimise.front_spacing": "a Pareto front of several objectives (tests/correctness)",
+    "optimise.front_hypervolume": "a Pareto front of several objectives (tests/correctness)",
+    "cam.face_width": "a flat-faced follower (tests/cams)",
+    "synthesis.best.offset": "the synthesis of a slider-crank (tests/synthesis)",
 }
 #: Prefixes of capability keys that carry a result's own key after them.
 CARRIERS = ("sweep.best.", "sweep.lowest_", "sweep.", "optimise.best.")
@@ -67,7 +71,12 @@ def test_every_catalogue_entry_is_written_by_some_example(written):
         found = find(key, RUN_TIME)
         if found is not None:
             produced.add(found[0].key)
-    missing = sorted(q.key for q in everything if q.key not in produced and q.key not in NOT_IN_EXAMPLES)
+    from machdyn.kinds import CAPABILITIES, KINDS
+
+    # The catalogue may declare the run-time keys of a kind or capability that is not registered (not shipped).
+    registered = {*KINDS, *CAPABILITIES, "mechanism:compactor", "population"}
+    missing = sorted(q.key for q in everything if q.key not in produced and q.key not in NOT_IN_EXAMPLES
+                     and q.producer in registered)
     assert not missing, missing
 
 
