@@ -31,6 +31,9 @@ def test_a_design_near_its_dead_point_is_flagged_not_regular():
     assert 10.0 < worst[1] < 40.0 and np.isnan(worst[2])  # in deg; no results for a degenerate design
     assert scalars["sweep.grashof.margin"]["value"][2] < 0 < scalars["sweep.grashof.margin"]["value"][3]
     assert scalars["sweep.regular_count"]["value"] == 2.0
+    counts = {k.removeprefix("sweep.count."): v["value"] for k, v in scalars.items() if k.startswith("sweep.count.")}
+    assert counts == {"does_not_assemble": 1.0, "dead_point": 0.0, "branch_change": 0.0, "near_dead_point": 0.0,
+                      "poor_transmission": 1.0}
 
 
 def test_the_transmission_threshold_is_the_users():

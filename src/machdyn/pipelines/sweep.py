@@ -12,6 +12,7 @@ from ..errors import ProblemFileError
 from ..pipeline import Outcome, StageContext
 from ..results.catalogue import label
 from ..results.labels import Label
+from ..results.population import FAULTS
 
 #: The per-design results a sweep ranks its designs by in the summary (the lowest of each is named).
 RANKED = ("driving_torque.max_abs", "frame_force.max")
@@ -22,6 +23,8 @@ LABELS = {
     "sweep.status": Label("Sweep: status of each design (regular or its first fault)"),
     "sweep.designs": Label("Sweep: designs"),
     "sweep.regular_count": Label("Sweep: regular designs"),
+    **{f"sweep.count.{fault.replace(' ', '_')}": Label(f"Sweep: designs whose first fault is: {fault}")
+       for _flag, fault in FAULTS},
 }
 
 
@@ -125,6 +128,12 @@ def run(ctx: StageContext) -> Outcome:
         labels[f"sweep.{key}"] = Label(f"Sweep: {text[:1].lower() + text[1:]} of each design",
                                        done.units.get(key, ""), found.display if found is not None else None)
     summary = ["sweep.designs", "sweep.regular_count"]
+    status = np.asarray(cols["status"]).astype(str)
+    for _flag, fault in FAULTS:
+        key = f"sweep.count.{fault.replace(' ', '_')}"
+        values[key] = float(np.count_nonzero(status == fault))
+        if values[key]:
+            summary.append(key)
     warnings = []
     if regular.any():
         for key in RANKED:
