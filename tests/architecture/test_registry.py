@@ -131,3 +131,19 @@ def test_plain_run_succeeds(tmp_path):
     path.write_text(FILE, encoding="utf-8")
     result = CliRunner().invoke(app, ["run", str(path), "--out", str(tmp_path / "out"), "--quiet"])
     assert result.exit_code == EXIT_OK, result.output
+
+
+def test_the_registry_entries_the_architecture_page_names_exist():
+    """Every ``"machdyn.<module>:<OBJECT>"`` of docs/architecture.md but those of its two worked examples (the
+    torque-limit capability and the press kind, which the page writes) imports."""
+    import re
+    from pathlib import Path
+
+    from machdyn.pipeline import import_object
+
+    text = (Path(__file__).resolve().parents[2] / "docs" / "architecture.md").read_text(encoding="utf-8")
+    examples = ("machdyn.mypackage.", "machdyn.press.", "machdyn.report.torque_limit", "machdyn.report.press")
+    entries = [e for e in re.findall(r'"(machdyn\.[\w.]+:\w+)"', text) if not e.startswith(examples)]
+    assert entries
+    for entry in entries:
+        assert import_object(entry) is not None, entry

@@ -76,3 +76,16 @@ def test_a_grid_of_one_quantity_explored_equals_the_one_quantity_sweep(tmp_path)
     grid = explore(load_problem(BASE + sweep + "seed = 0\n"), store=tmp_path / "s").frame()
     np.testing.assert_array_equal(grid["driving_torque.max_abs"], legacy["driving_torque.max_abs [N*m]"])
     np.testing.assert_array_equal(grid["driving_torque.rms"], legacy["driving_torque.rms [N*m]"])
+
+
+def test_an_exploration_keeps_the_columns_asked_for_and_flags_each_design(tmp_path):
+    """``columns`` adds an analysis result to every design; each design's status is regular or names its fault,
+    and only regular designs have results."""
+    text = explore_text(samples=32, partition=32, extra='columns = ["kinetic_energy.max"]\n')
+    frame = explore(load_problem(text), store=tmp_path / "s").frame()
+    regular = frame["regular"].to_numpy(dtype=bool)
+    assert regular.any() and (~regular).any()
+    assert set(frame.loc[regular, "status"]) == {"regular"}
+    assert "regular" not in set(frame.loc[~regular, "status"])
+    assert np.isfinite(frame.loc[regular, "kinetic_energy.max"]).all()
+    assert frame.loc[~regular, "kinetic_energy.max"].isna().all()

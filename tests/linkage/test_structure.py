@@ -83,7 +83,7 @@ def test_mechanism_joints_come_from_the_declarations():
 def test_standard_mechanism_table_matches_its_declaration(kind):
     declaration = STANDARD_MECHANISMS[kind]
     spec = MECHANISM_SPECS[kind]
-    assert [n for n in spec.model_fields if n not in ("name", "linear_density", "type", "machine")] == [
+    assert [n for n in spec.model_fields if n not in ("name", "linear_density", "machine", "type")] == [
         f.name for f in declaration.fields
     ]
     signature = inspect.signature(declaration.builder).parameters

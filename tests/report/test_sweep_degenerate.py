@@ -31,6 +31,9 @@ def test_a_design_near_its_dead_point_is_flagged_not_regular():
     assert 10.0 < worst[1] < 40.0 and np.isnan(worst[2])  # in deg; no results for a degenerate design
     assert scalars["sweep.grashof.margin"]["value"][2] < 0 < scalars["sweep.grashof.margin"]["value"][3]
     assert scalars["sweep.regular_count"]["value"] == 2.0
+    counts = {k.removeprefix("sweep.count."): v["value"] for k, v in scalars.items() if k.startswith("sweep.count.")}
+    assert counts == {"does_not_assemble": 1.0, "dead_point": 0.0, "branch_change": 0.0, "near_dead_point": 0.0,
+                      "poor_transmission": 1.0}
 
 
 def test_the_transmission_threshold_is_the_users():
@@ -45,3 +48,42 @@ def test_plot_of_a_sweep_scales_to_the_regular_designs():
                      quantity="peak force", unit="N", regular=[True, True, False, True])
     low, high = ax.get_ylim()
     assert 5.0 < low and high < 20.0
+
+
+def test_any_result_of_the_catalogue_can_be_asked_for_as_a_sweep_column():
+    """``[sweep] columns`` adds results of the full analysis (kinetic energy, the flywheel's energy) computed per
+    design by the run's own function: each variant's value equals that variant run alone."""
+    result = _sweep('columns = ["kinetic_energy.fluctuation", "flywheel.energy_fluctuation"]\n')
+    scalars = result.results_json()["scalars"]
+    alone = run_problem(load_problem((ROOT / "examples" / "four_bar.toml").read_text(encoding="utf-8")
+                                     .replace('length = "40 mm"', 'length = "80 mm"', 1))).results
+    got = scalars["sweep.kinetic_energy.fluctuation"]["value"]
+    assert np.isclose(got[1], alone["kinetic_energy.fluctuation"], rtol=1e-9)
+    assert np.isnan(got[2]) and np.isnan(got[3])
+    assert np.isclose(scalars["sweep.flywheel.energy_fluctuation"]["value"][1], alone["flywheel.energy_fluctuation"],
+                      rtol=1e-9)
+
+
+def test_a_column_that_names_no_result_is_refused_with_its_path():
+    from machdyn.errors import ProblemFileError
+    from machdyn.runner import check_problem
+
+    text = (ROOT / "examples" / "four_bar.toml").read_text(encoding="utf-8") + SWEEP
+    try:
+        check_problem(load_problem(text + 'columns = ["joint.Z.max_force"]\n'))
+    except ProblemFileError as exc:
+        assert exc.problems[0][0] == "sweep.columns[0]" and "joint.Z.max_force" in exc.problems[0][1]
+    else:
+        raise AssertionError("an unknown column was accepted")
+
+
+def test_a_threshold_outside_0_to_90_deg_is_refused():
+    from machdyn.errors import ProblemFileError
+
+    text = (ROOT / "examples" / "four_bar.toml").read_text(encoding="utf-8") + SWEEP
+    try:
+        load_problem(text + 'min_transmission_angle = "95 deg"\n')
+    except ProblemFileError as exc:
+        assert "min_transmission_angle must be at least 0 deg and below 90 deg; got 95 deg" in str(exc)
+    else:
+        raise AssertionError("a threshold of 95 deg was accepted")

@@ -49,6 +49,10 @@ NOT_IN_EXAMPLES = {
     "balance.spring_stiffness": "a balancing spring (tests/balancing)",
     "balance.spring_free_length": "a balancing spring (tests/balancing)",
     "optimise.front_size": "a Pareto front of several objectives (tests/optimise/test_stage.py)",
+    "optimise.front_spacing": "a Pareto front of several objectives (tests/correctness)",
+    "optimise.front_hypervolume": "a Pareto front of several objectives (tests/correctness)",
+    "cam.face_width": "a flat-faced follower (tests/cams)",
+    "synthesis.best.offset": "the synthesis of a slider-crank (tests/synthesis)",
 }
 #: Prefixes of capability keys that carry a result's own key after them.
 CARRIERS = ("sweep.best.", "sweep.lowest_", "sweep.", "optimise.best.")
@@ -67,7 +71,12 @@ def test_every_catalogue_entry_is_written_by_some_example(written):
         found = find(key, RUN_TIME)
         if found is not None:
             produced.add(found[0].key)
-    missing = sorted(q.key for q in everything if q.key not in produced and q.key not in NOT_IN_EXAMPLES)
+    from machdyn.kinds import CAPABILITIES, KINDS
+
+    # The catalogue may declare the run-time keys of a kind or capability that is not registered (not shipped).
+    registered = {*KINDS, *CAPABILITIES, "mechanism:compactor", "population"}
+    missing = sorted(q.key for q in everything if q.key not in produced and q.key not in NOT_IN_EXAMPLES
+                     and q.producer in registered)
     assert not missing, missing
 
 
@@ -165,11 +174,11 @@ def test_inertial_shaking_moment_is_the_frame_moment_without_loads_or_weight():
 
 
 def test_inertial_shaking_force_is_not_the_frame_force_of_a_press():
-    """The crank press's punch force closes through its frame: the frame force is tens of kN, the inertial
-    shaking force a few hundred N; a run, a sweep column and an objective name them apart."""
+    """The crank press's punch force (60 kN) closes through its frame: the frame force is some 59 kN, the
+    inertial shaking force tens of N (docs/results.md quotes both)."""
     result = run_problem(ROOT / "examples" / "crank_press.toml").results
     assert result["frame_force.max"] > 50e3
-    assert result["inertial_shaking_force.max"] < 0.05 * result["frame_force.max"]
+    assert result["inertial_shaking_force.max"] < 1e-2 * result["frame_force.max"]
 
 
 def test_the_documented_catalogue_example_runs_and_lists_every_mechanism_key():

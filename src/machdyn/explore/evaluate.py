@@ -43,6 +43,8 @@ class ExplorePlan:
     vectorised: bool = True
     #: the threshold [rad] of a design's poor_transmission (see machdyn.results.population)
     min_transmission_angle: float = math.radians(DEFAULT_MIN_TRANSMISSION_DEG)
+    #: results kept besides the default columns ([sweep] columns, catalogue keys)
+    extra_columns: tuple[str, ...] = ()
 
     @property
     def fingerprint(self) -> str:
@@ -57,7 +59,7 @@ class ExplorePlan:
                       [[q.parameter, q.values, q.start, q.stop] for q in self.space.quantities]],
             "angles": [float(a) for a in self.angles],
             "about": list(self.about),
-            "columns": [self.objective, self.min_transmission_angle, COLUMNS_VERSION],
+            "columns": [self.objective, self.min_transmission_angle, COLUMNS_VERSION, list(self.extra_columns)],
         }
         return hashlib.sha256(json.dumps(data, sort_keys=True).encode()).hexdigest()
 
@@ -114,9 +116,13 @@ def evaluate_designs(plan: ExplorePlan, values: np.ndarray) -> dict[str, np.ndar
 
     mech, speed, accel = build_designs(plan, values)
     machine = getattr(plan.problem.mechanism, "machine", None)
-    wanted = sweep_columns(mech, machine, plan.objective)
+    wanted = sweep_columns(mech, machine, plan.objective, plan.extra_columns)
     res = evaluate_population(mech, plan.angles, speed, accel, wanted, about=plan.about, machine=machine,
                               min_transmission_angle=plan.min_transmission_angle)
+    missing = [(f"sweep.columns[{i}]", f"'{k}' is not a result of this mechanism")
+               for i, k in enumerate(plan.extra_columns) if k not in res]
+    if missing:
+        raise ProblemFileError(missing)
     columns: dict[str, np.ndarray] = {p: np.ascontiguousarray(values[:, k]) for k, p in enumerate(plan.space.names)}
     for key, data in res.items():
         if key != "assembled_fraction":

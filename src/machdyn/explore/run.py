@@ -52,7 +52,7 @@ def plan_exploration(problem: Any) -> ExplorePlan:
                                                     f"make more than {MAX_PARTITIONS:,} partitions; give a partition "
                                                     f"of at least {least:,} designs")])
     plan = ExplorePlan(problem, space, crank_angles(problem), tuple(problem.output.shaking_moment_about),
-                       spec.goal, min_transmission_angle=spec.transmission_limit)
+                       spec.goal, min_transmission_angle=spec.transmission_limit, extra_columns=spec.extra_columns)
     _, first = next(partition_designs(space, [0]))
     probe = first[np.unique([0, first.shape[0] // 2, first.shape[0] - 1])]
     plan = replace(plan, vectorised=check_vectorised_build(plan, probe))

@@ -9,7 +9,7 @@ import numpy as np
 
 from .diagnostics import Diagnostics, diagnose
 from .energy import Energy, WorkBalance, energy
-from .kinematics import Kinematics, kinematics
+from .kinematics import Kinematics, is_full_turn, kinematics
 from .kinetostatics import Forces, kinetostatics
 from .model import Mechanism
 
@@ -54,7 +54,7 @@ def analysed_range(crank_angle) -> tuple[float, float] | None:
     if phi.size < 2:
         return None if phi.size == 0 else (float(phi[0]), float(phi[0]))
     span = float(phi.max() - phi.min())
-    even_turn = np.allclose(np.abs(np.diff(phi)), 2 * np.pi / phi.size, rtol=1e-9, atol=1e-12)
+    even_turn = is_full_turn(phi) or is_full_turn(phi[::-1])  # turning either way
     if even_turn or span >= 2 * np.pi * (1.0 - 1e-9):
         return None
     return (float(phi[0]), float(phi[-1]))

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .kinematics import Kinematics
+from .kinematics import Kinematics, is_full_turn
 
 
 def angle_weights(crank_angle) -> np.ndarray:
@@ -39,7 +39,7 @@ def angle_weights(crank_angle) -> np.ndarray:
     phi = np.asarray(crank_angle, dtype=float)
     if phi.ndim == 0 or phi.size < 2:
         return np.ones(np.shape(phi))
-    if np.allclose(np.diff(phi), 2 * np.pi / phi.size, rtol=1e-9, atol=1e-12):
+    if is_full_turn(phi):
         return np.ones(phi.shape)
     dphi = np.zeros(phi.shape)
     steps = np.diff(phi)

@@ -13,7 +13,7 @@ import numpy as np
 
 from ..errors import InputError
 from .grashof import grashof_type
-from .kinematics import Kinematics, angle_ranges, crank_angles, format_ranges, kinematics, singular
+from .kinematics import Kinematics, angle_ranges, crank_angles, format_ranges, is_full_turn, kinematics, singular
 from .model import Mechanism
 
 #: Below this transmission angle [deg] force transmission is poor (Norton, §4.10: keep mu >= 40 deg).
@@ -135,7 +135,7 @@ def _revolution(kin: Kinematics) -> Kinematics:
     phi = np.asarray(kin.crank_angle, dtype=float)
     n = phi.size
     if (kin.mechanism.design_count is not None or phi.ndim != 1 or n < 4 or np.ndim(kin.assembled) != 1
-            or not np.allclose(np.diff(phi), 2 * np.pi / n, rtol=1e-9, atol=1e-12)):
+            or not is_full_turn(phi)):
         raise InputError(
             "Diagnostics from a kinematics result need one design over a full revolution sampled evenly "
             f"(crank_angles(n)); got crank angles of shape {phi.shape} and results of shape {kin.shape}."
@@ -194,8 +194,14 @@ def _diagnose(mech: Mechanism, kin: Kinematics, window: tuple[float, float] | No
         if v.size:
             strokes[body] = float(v.max() - v.min())
     full_turn = window is None and bool(ok.all())
-    time_ratio = _time_ratio(limits, full_turn)
-    time_ratios = {body: _time_ratio([p for p in limits if p.body == body], full_turn) for body in strokes}
+    # A sign change of the rate right at a dead position is a branch change, not a limit position.
+    clear = ok & np.array([all(abs(_angle_between(a, d)) > 2.5 * step for d in dead) for a in phi], dtype=bool)
+    time_ratios = {}
+    for body, _values, rates in _outputs(mech, kin):
+        if body in strokes:
+            ratio = float(time_ratio(phi, rates, clear, full_turn)[0])
+            time_ratios[body] = ratio if np.isfinite(ratio) else None
+    first = time_ratios.get(limits[0].body) if limits else None  # the first output with a limit position
     if window is not None:
         warnings.append(
             f"The diagnostics describe the crank range {np.degrees(window[0]):.1f}°–"
@@ -217,8 +223,65 @@ def _diagnose(mech: Mechanism, kin: Kinematics, window: tuple[float, float] | No
             + ", ".join(f"{np.degrees(a):.1f}°" for a in sorted(dead))
             + "; forces are unbounded there."
         )
-    return Diagnostics(kind, ranges, gaps, sorted(dead), limits, strokes, time_ratio,
+    return Diagnostics(kind, ranges, gaps, sorted(dead), limits, strokes, first,
                        float(t_min), float(t_max), warnings, window, time_ratios, transmission_angles)
+
+
+def time_ratio(phi, rates, ok, full_cycle: bool) -> np.ndarray:
+    """Quick-return ratio of an output for each design: the longer over the shorter crank interval between the
+    output's two limit positions (where its rate changes sign), located by linear interpolation between
+    neighbouring crank angles (Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th ed., §1.9).
+    The one implementation: the diagnostics of a run and the population evaluator both call it.
+
+    Parameters
+    ----------
+    phi : array_like
+        Crank angles [rad], M of them, evenly spaced for a full cycle.
+    rates : array_like
+        The output's velocity (designs x M) [m/s or rad/s]; a 1-D array is one design.
+    ok : array_like of bool
+        Where each design is regular (designs x M); a limit position needs both neighbours regular.
+    full_cycle : bool
+        True when ``phi`` covers one full turn without its end point (the last angle neighbours the first).
+
+    Returns
+    -------
+    numpy.ndarray
+        The ratio [-] per design, >= 1; NaN unless the crank turns fully and the output has exactly two
+        limit positions.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> phi = np.arange(360) * np.pi / 180
+    >>> rates = np.cos(phi - 0.3)                  # limit positions 180 deg apart: no quick return
+    >>> float(time_ratio(phi, rates, np.ones(360, bool), True)[0])
+    1.0
+    """
+    phi = np.asarray(phi, dtype=float)
+    rates = np.atleast_2d(np.asarray(rates, dtype=float))
+    ok = np.broadcast_to(np.atleast_2d(ok), rates.shape)
+    nxt = np.roll(rates, -1, axis=1)
+    ok_pair = ok & np.roll(ok, -1, axis=1)
+    if not full_cycle:
+        ok_pair[:, -1] = False
+    with np.errstate(invalid="ignore"):
+        cross = ok_pair & ((rates == 0.0) | (rates * nxt < 0.0))
+    count = cross.sum(axis=1)
+    step = np.mod(np.roll(phi, -1) - phi, 2 * np.pi)
+    with np.errstate(all="ignore"):
+        frac = np.where(rates == 0.0, 0.0, rates / (rates - nxt))
+    where = np.broadcast_to(phi, rates.shape) + np.broadcast_to(step, rates.shape) * frac
+    i1 = np.argmax(cross, axis=1)
+    rest = cross.copy()
+    rest[np.arange(len(i1)), i1] = False
+    i2 = np.argmax(rest, axis=1)
+    rows = np.arange(len(i1))
+    forward = np.mod(where[rows, i2] - where[rows, i1], 2 * np.pi)
+    back = 2 * np.pi - forward
+    with np.errstate(all="ignore"):
+        ratio = np.maximum(forward, back) / np.minimum(forward, back)
+    return np.where((count == 2) & full_cycle, ratio, np.nan)
 
 
 def _angle_between(a: float, b: float) -> float:
@@ -247,30 +310,42 @@ def _dead_positions(phi, reports, assembled, ok, assembly_ranges) -> list[float]
     return unique
 
 
+def output_bodies(mech: Mechanism) -> list[tuple[str, str]]:
+    """The outputs of a mechanism whose limit positions, strokes and time ratios matter, in dyad order.
+
+    The one definition of an output: each dyad declares its own (``Dyad.outputs``), a slider on a ground
+    guide (its travel) or a rocker pinned to the ground (its angle).
+
+    Parameters
+    ----------
+    mech : Mechanism
+        The mechanism.
+
+    Returns
+    -------
+    list of (str, str)
+        (body, "slide" or "angle") of each output.
+
+    Examples
+    --------
+    >>> from machdyn.linkage import four_bar, slider_crank
+    >>> output_bodies(four_bar(0.02, 0.08, 0.07, 0.09)), output_bodies(slider_crank(0.1, 0.3))
+    ([('rocker', 'angle')], [('slider', 'slide')])
+    """
+    return [(out.body, out.kind) for d in mech.dyads for out in d.outputs()]
+
+
 def _outputs(mech: Mechanism, kin):
-    """The outputs whose limit positions matter: sliders (travel) and rockers pinned to the ground (angle)."""
-    for d in mech.dyads:
-        for out in d.outputs():
-            if out.kind == "slide":
-                sm = kin.slide(out.body)
-                yield out.body, np.asarray(sm.s), np.asarray(sm.v)
-            else:
-                b = kin.body(out.body)
-                angle = np.asarray(b.angle)
-                good = np.isfinite(angle)
-                unwrapped = np.full(angle.shape, np.nan)
-                unwrapped[good] = np.unwrap(angle[good])  # NaN (not assembled) would spread through unwrap
-                yield out.body, unwrapped, np.asarray(b.omega)
-
-
-def _time_ratio(limits: list, full_rotation: bool) -> float | None:
-    """Quick-return ratio: the longer over the shorter crank interval between the two limit positions of the
-    first output (None unless the crank turns fully and the output has exactly two limit positions)."""
-    if not full_rotation or not limits:
-        return None
-    first = [p for p in limits if p.body == limits[0].body]
-    if len(first) != 2:
-        return None
-    forward = (first[1].crank_angle - first[0].crank_angle) % (2 * np.pi)
-    back = 2 * np.pi - forward
-    return float(max(forward, back) / min(forward, back))
+    """The outputs whose limit positions matter with their values and rates: sliders (travel [m]) and rockers
+    pinned to the ground (angle [rad])."""
+    for body, kind in output_bodies(mech):
+        if kind == "slide":
+            sm = kin.slide(body)
+            yield body, np.asarray(sm.s), np.asarray(sm.v)
+        else:
+            b = kin.body(body)
+            angle = np.asarray(b.angle)
+            good = np.isfinite(angle)
+            unwrapped = np.full(angle.shape, np.nan)
+            unwrapped[good] = np.unwrap(angle[good])  # NaN (not assembled) would spread through unwrap
+            yield body, unwrapped, np.asarray(b.omega)

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from .kinematics import is_full_turn
 
 
 @dataclass(frozen=True)
@@ -60,7 +61,7 @@ def harmonics(values, crank_angle, orders: int = 6) -> Harmonics:
     n = phi.size
     if phi.ndim != 1 or n < 4:
         raise InputError(f"Harmonics need a 1-D array of at least 4 crank angles; got shape {phi.shape}.")
-    if not np.allclose(np.diff(phi), 2 * np.pi / n, rtol=1e-9, atol=1e-12):
+    if not is_full_turn(phi):
         raise InputError(
             "Harmonics need crank angles evenly spaced over one full revolution (end point excluded); "
             f"got {n} angles from {np.degrees(phi[0]):.3f}° to {np.degrees(phi[-1]):.3f}°."

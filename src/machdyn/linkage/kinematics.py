@@ -129,6 +129,31 @@ def crank_angles(count: int = 360, start: float = 0.0) -> np.ndarray:
     return start + np.arange(int(count)) * (2.0 * np.pi / count)
 
 
+def is_full_turn(crank_angle) -> bool:
+    """Whether crank angles are evenly spaced over one revolution without its end point, as
+    :func:`crank_angles` makes them: the sampling over which cycle means, RMS values, harmonics and time ratios
+    are exact. The one test of it, used wherever a full turn is required.
+
+    Parameters
+    ----------
+    crank_angle : array_like
+        Crank angles [rad], increasing.
+
+    Returns
+    -------
+    bool
+        True for at least two angles whose steps all equal 2 pi / count (to 1e-9 relative).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> is_full_turn(crank_angles(360)), is_full_turn(np.linspace(0.0, 2 * np.pi, 361))
+    (True, False)
+    """
+    phi = np.asarray(crank_angle, dtype=float).ravel()
+    return phi.size >= 2 and bool(np.allclose(np.diff(phi), 2 * np.pi / phi.size, rtol=1e-9, atol=1e-12))
+
+
 def kinematics(
     mech: Mechanism,
     crank_angle,
@@ -229,7 +254,7 @@ def angle_ranges(phi: np.ndarray, mask: np.ndarray) -> list[tuple[float, float]]
     edges = np.diff(np.concatenate(([False], mask, [False])).astype(np.int8))
     starts, ends = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1) - 1
     runs = [(float(phi[a]), float(phi[b])) for a, b in zip(starts, ends, strict=True)]
-    full_turn = len(phi) > 2 and np.allclose(np.diff(phi), 2 * np.pi / len(phi), rtol=1e-9, atol=1e-12)
+    full_turn = len(phi) > 2 and is_full_turn(phi)
     if full_turn and len(runs) > 1 and mask[0] and mask[-1]:
         runs = [(runs[-1][0], runs[0][1])] + runs[1:-1]
     return runs

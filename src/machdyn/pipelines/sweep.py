@@ -12,6 +12,7 @@ from ..errors import ProblemFileError
 from ..pipeline import Outcome, StageContext
 from ..results.catalogue import label
 from ..results.labels import Label
+from ..results.population import FAULTS
 
 #: The per-design results a sweep ranks its designs by in the summary (the lowest of each is named).
 RANKED = ("driving_torque.max_abs", "frame_force.max")
@@ -22,6 +23,8 @@ LABELS = {
     "sweep.status": Label("Sweep: status of each design (regular or its first fault)"),
     "sweep.designs": Label("Sweep: designs"),
     "sweep.regular_count": Label("Sweep: regular designs"),
+    **{f"sweep.count.{fault.replace(' ', '_')}": Label(f"Sweep: designs whose first fault is: {fault}")
+       for _flag, fault in FAULTS},
 }
 
 
@@ -55,10 +58,20 @@ def variants(problem: Any) -> tuple[Any, list[Any]]:
 
 def check(problem: Any, _table: Any, source: str | None = None) -> list[tuple[str, str]]:
     try:
-        variants(problem)
+        _, mechs = variants(problem)
     except ProblemFileError as exc:
         return list(exc.problems)
-    return []
+    return unknown_columns(problem, mechs[0])
+
+
+def unknown_columns(problem: Any, mech: Any) -> list[tuple[str, str]]:
+    """The ``[sweep] columns`` that name no result of this mechanism, as (path, message)."""
+    from ..problem.errors import did_you_mean
+    from ..results.population import result_names
+
+    known = result_names(mech, getattr(problem.mechanism, "machine", None))
+    return [(f"sweep.columns[{i}]", f"'{key}' is not a result of this mechanism{did_you_mean(key, known)}")
+            for i, key in enumerate(problem.sweep.extra_columns) if key not in known]
 
 
 def run_sweep(problem: Any) -> SweepRun:
@@ -79,7 +92,7 @@ def run_sweep(problem: Any) -> SweepRun:
     about = tuple(problem.output.shaking_moment_about)
     mech = stack_designs(mechs)
     machine = getattr(problem.mechanism, "machine", None)
-    wanted = sweep_columns(mech, machine)
+    wanted = sweep_columns(mech, machine, extra=problem.sweep.extra_columns)
     columns = evaluate_population(mech, angles, speed, accel, wanted, about=about, machine=machine,
                                   min_transmission_angle=problem.sweep.transmission_limit)
     n = len(plan.problems)
@@ -137,6 +150,12 @@ def run(ctx: StageContext) -> Outcome:
         labels[f"sweep.{key}"] = Label(f"Sweep: {text[:1].lower() + text[1:]} of each design",
                                        done.units.get(key, ""), found.display if found is not None else None)
     summary = ["sweep.designs", "sweep.regular_count"]
+    status = np.asarray(cols["status"]).astype(str)
+    for _flag, fault in FAULTS:
+        key = f"sweep.count.{fault.replace(' ', '_')}"
+        values[key] = float(np.count_nonzero(status == fault))
+        if values[key]:
+            summary.append(key)
     warnings = []
     if regular.any():
         for key in RANKED:

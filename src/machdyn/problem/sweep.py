@@ -87,7 +87,9 @@ class SweepSpec(BaseModel):
     """``[sweep]``: the quantity to vary and its values (a list, or start/stop/count evenly spaced), or several
     quantities explored together (``quantities``, ``method``, ``samples``, ``seed``), and where and how the
     designs are evaluated (``partition`` designs per task, ``scheduler`` a Dask address, ``workers`` local
-    worker processes, ``store`` the Parquet folder, ``objective`` the summary that ranks the designs)."""
+    worker processes, ``store`` the Parquet folder, ``objective`` the result that ranks the designs), and what
+    each design keeps (``columns``: results besides the default ones; ``min_transmission_angle``: the threshold
+    of a degenerate design's poor transmission)."""
 
     model_config = {"extra": "forbid", "frozen": True}
 
@@ -106,6 +108,7 @@ class SweepSpec(BaseModel):
     workers: int | None = Field(None, ge=1, le=512, strict=True)
     store: str | None = Field(None, min_length=1)
     min_transmission_angle: Angle | None = None
+    columns: list[str] | None = Field(None, max_length=256)
 
     @field_validator("scheduler")
     @classmethod
@@ -142,6 +145,14 @@ class SweepSpec(BaseModel):
                 raise ValueError("objective must name a per-design result (a key of docs/results.md such as "
                                  "driving_torque.max_abs, frame_force.max or joint.<name>.max_force); got "
                                  f"'{self.objective}'{hint}")
+        for i, column in enumerate(self.columns or ()):
+            from ..results.catalogue import canonical, find
+
+            found = find(canonical(column))
+            if found is None or not found[0].group or found[0].group == "status":
+                hint = did_you_mean(column, _objective_names())
+                raise ValueError(f"columns[{i}] must name a per-design result (a key of docs/results.md such as "
+                                 f"kinetic_energy.fluctuation); got '{column}'{hint}")
         lowest = self.min_transmission_angle
         if lowest is not None and not 0.0 <= lowest < math.pi / 2:
             raise ValueError(f"min_transmission_angle must be at least 0 deg and below 90 deg; got "
@@ -165,6 +176,13 @@ class SweepSpec(BaseModel):
         from ..results.catalogue import canonical
 
         return canonical(self.objective) if self.objective else DEFAULT_OBJECTIVE
+
+    @property
+    def extra_columns(self) -> tuple[str, ...]:
+        """The results asked for besides the default columns (``columns``, as catalogue keys)."""
+        from ..results.catalogue import canonical
+
+        return tuple(canonical(c) for c in self.columns or ())
 
     @property
     def transmission_limit(self) -> float:

@@ -1,8 +1,10 @@
 """The results stage: every scalar result in SI with its label and unit, and the one summary builder.
 
-:mod:`.labels` is the registry of what each result is called and how it is shown; :mod:`.store` holds the
+:mod:`.catalogue` declares every result once (key, label, SI and display unit, reductions, producer) and maps
+the old names to the keys; :mod:`.labels` holds :class:`Label` and the display units; :mod:`.store` holds the
 results of a run; :mod:`.summary` builds the summary table that the command line, the report and the Python API
-all show; :mod:`.linkage` computes the scalar results of a linkage analysis.
+all show; :mod:`.linkage` computes the scalar results of a linkage analysis; :mod:`.population` evaluates a
+population of designs for sweeps, explorations and the optimiser under the catalogue's keys.
 """
 
 from __future__ import annotations

@@ -19,6 +19,8 @@ import numpy as np
 
 from ..linkage import model as _model
 from ..linkage.averages import time_mean, time_rms
+from ..linkage.diagnostics import output_bodies
+from ..linkage.kinematics import is_full_turn
 from .catalogue import MECHANISM, labels
 from .labels import Label
 
@@ -207,7 +209,7 @@ def linkage_scalars(
 
     diag = getattr(analysis, "diagnostics", None)
     if diag is not None:
-        sliders = set(slider_bodies(mech)) if mech is not None else set()
+        sliders = {b for b, kind in output_bodies(mech) if kind == "slide"} if mech is not None else set()
         for body, stroke in (getattr(diag, "strokes", None) or {}).items():
             out[f"stroke.{body}"] = _scalar(stroke, designs)
             units[f"stroke.{body}"] = "m" if body in sliders else "rad"
@@ -261,7 +263,7 @@ def harmonic_scalars(analysis: Any, about: tuple[float, float], orders: int) -> 
     units: dict[str, str] = {}
     phi = np.asarray(analysis.kinematics.crank_angle, dtype=float)
     n = phi.size
-    if n < 4 or not np.allclose(np.diff(phi), 2 * math.pi / n, rtol=1e-9, atol=1e-12) or orders >= n / 2:
+    if n < 4 or not is_full_turn(phi) or orders >= n / 2:
         return values, units
     series = {
         "driving_torque": (analysis.forces.driving_torque, "N*m"),

@@ -39,6 +39,8 @@ from typing import Any
 
 import numpy as np
 
+from ..errors import InputError
+from ..linkage.diagnostics import output_bodies, time_ratio
 from ..linkage.model import GROUND, RRR, Mechanism, split_ref
 from .catalogue import ENGINE_SUMMARIES, MECHANISM, find, population_quantities
 
@@ -60,12 +62,6 @@ FAULTS = (("assembled", "does not assemble"), ("dead_point", "dead point"), ("br
 
 
 # ------------------------------------------------------------------------------------------------ names
-
-
-def output_bodies(mech: Mechanism) -> list[tuple[str, str]]:
-    """(body, 'slide' or 'angle') of every output with limit positions, in dyad order: sliders on ground guides
-    (travel) and rockers pinned to the ground (angle), as the dyads declare them."""
-    return [(out.body, out.kind) for d in mech.dyads for out in d.outputs()]
 
 
 def per_output(mech: Mechanism) -> list[str]:
@@ -116,14 +112,17 @@ def result_names(mech: Mechanism, machine: str | None = None) -> list[str]:
 SWEEP_GROUPS = ("forces", "motion", "geometry")
 
 
-def sweep_columns(mech: Mechanism, machine: str | None = None, objective: str | None = None) -> list[str]:
+def sweep_columns(mech: Mechanism, machine: str | None = None, objective: str | None = None,
+                  extra: tuple[str, ...] = ()) -> list[str]:
     """The per-design results a sweep or an exploration keeps for every design: those of
-    :data:`SWEEP_GROUPS`, the Grashof class of a four-bar, and the ``objective`` if it is another result."""
+    :data:`SWEEP_GROUPS`, the Grashof class of a four-bar, the ``objective`` if it is another result, and the
+    ``extra`` results asked for (``[sweep] columns``)."""
     names = [k for k in result_names(mech, machine) if (f := find(k)) is not None and f[0].group in SWEEP_GROUPS]
     if "grashof.margin" in names:
         names.append("grashof.class")
-    if objective is not None and objective not in names:
-        names.append(objective)
+    for key in (objective, *extra):
+        if key is not None and key not in names:
+            names.append(key)
     return names
 
 
@@ -246,9 +245,9 @@ def _motion(mech, phi, speed, acceleration, n, wanted, about, machine, limit, ou
 
 def _full_cycle(phi: np.ndarray) -> bool:
     """True if the crank angles are evenly spaced over one full turn without the end point."""
-    from .linkage import full_uniform_cycle, includes_end_point
+    from ..linkage.kinematics import is_full_turn
 
-    return full_uniform_cycle(phi) and not includes_end_point(phi)
+    return is_full_turn(phi)
 
 
 def _motion_chunk(mech, kin, phi, shape, wanted, about, machine, limit) -> tuple[dict, dict]:
@@ -316,7 +315,10 @@ def _motion_chunk(mech, kin, phi, shape, wanted, about, machine, limit) -> tuple
         from ..linkage import mass_centre
         from ..linkage.mass_centre import inertial_shaking_moment
 
-        ix, iy = mass_centre(kin).inertia_force
+        try:
+            ix, iy = mass_centre(kin).inertia_force
+        except InputError:  # a massless (statics) model: no centre of mass, no inertia force
+            ix = iy = np.zeros(shape)
         results["inertial_shaking_force.max"] = np.where(ok, np.hypot(ix, iy), -np.inf).max(axis=1)
         moment = np.abs(np.broadcast_to(inertial_shaking_moment(kin, (about[0], about[1])), shape))
         results["inertial_shaking_moment.max_abs"] = np.where(ok, moment, -np.inf).max(axis=1)
@@ -339,36 +341,6 @@ def _transmission(kin, ok, shape) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     worst = np.where(good, np.minimum(mu, np.pi - mu), np.inf).min(axis=(0, 2))
     none = ~good.any(axis=(0, 2))
     return (np.where(none, np.nan, low), np.where(none, np.nan, high), np.where(none, np.nan, worst))
-
-
-def time_ratio(phi, rates, ok, full_cycle: bool) -> np.ndarray:
-    """Quick-return ratio per design (Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th ed.,
-    §1.9): the longer over the shorter crank interval [rad / rad] between the output's two limit positions
-    (rate = 0), located by linear interpolation between neighbouring crank angles ``phi`` [rad]; ``rates``
-    (designs x angles) the output's velocity, ``ok`` where the design is regular. NaN unless the crank turns
-    fully and there are exactly two limit positions."""
-    rates = np.atleast_2d(rates)
-    ok = np.broadcast_to(ok, rates.shape)
-    nxt = np.roll(rates, -1, axis=1)
-    ok_pair = ok & np.roll(ok, -1, axis=1)
-    if not full_cycle:
-        ok_pair[:, -1] = False
-    cross = ok_pair & ((rates == 0.0) | (rates * nxt < 0.0))
-    count = cross.sum(axis=1)
-    step = np.mod(np.roll(phi, -1) - phi, 2 * np.pi)
-    with np.errstate(all="ignore"):
-        frac = np.where(rates == 0.0, 0.0, rates / (rates - nxt))
-    where = np.broadcast_to(phi, rates.shape) + np.broadcast_to(step, rates.shape) * frac
-    i1 = np.argmax(cross, axis=1)
-    rest = cross.copy()
-    rest[np.arange(len(i1)), i1] = False
-    i2 = np.argmax(rest, axis=1)
-    rows = np.arange(len(i1))
-    forward = np.mod(where[rows, i2] - where[rows, i1], 2 * np.pi)
-    back = 2 * np.pi - forward
-    with np.errstate(all="ignore"):
-        ratio = np.maximum(forward, back) / np.minimum(forward, back)
-    return np.where((count == 2) & full_cycle, ratio, np.nan)
 
 
 def _compactor_results(mech, kin, phi, ok, shape) -> dict[str, np.ndarray]:
