@@ -1,4 +1,4 @@
-"""The textbook tutorial (docs/tutorial.md) runs as written and prints what it shows.
+"""The textbook tutorial (docs/textbook-examples.md) runs as written and prints what it shows.
 
 Each ``python`` block is run in order in one namespace; the ``text`` block right after it is the output it must
 print. The published values the tutorial quotes are checked with their tolerances in
@@ -10,7 +10,7 @@ import io
 import re
 from pathlib import Path
 
-TUTORIAL = Path(__file__).resolve().parents[2] / "docs" / "tutorial.md"
+TUTORIAL = Path(__file__).resolve().parents[2] / "docs" / "textbook-examples.md"
 BLOCK = re.compile(r"```(python|text)\n(.*?)```", re.DOTALL)
 
 
