@@ -324,8 +324,12 @@ def _run_guard(out: Path):
         yield
     except OperationalError as exc:
         raise _fail(f"error: {exc}", EXIT_FAILED) from None
-    except _Terminated:
-        raise _fail("stopped: the run was terminated; run it again to resume", 143) from None
+    except KeyboardInterrupt as stop:
+        if not isinstance(stop, _Terminated) and not isinstance(stop.__cause__, _Terminated):
+            raise  # Ctrl-C: said by run's own handler
+        said = getattr(stop, "message", None)
+        raise _fail(f"stopped: the run was terminated; {said}" if said else
+                    "stopped: the run was terminated; run it again to resume", 143) from None
     finally:
         if previous is not None:
             signal.signal(signal.SIGTERM, previous)

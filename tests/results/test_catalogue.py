@@ -52,6 +52,7 @@ NOT_IN_EXAMPLES = {
     "optimise.front_spacing": "a Pareto front of several objectives (tests/correctness)",
     "optimise.front_hypervolume": "a Pareto front of several objectives (tests/correctness)",
     "cam.face_width": "a flat-faced follower (tests/cams)",
+    "shaft_cam.face_width": "a flat-faced follower on a crank shaft (the same result as cam.face_width)",
     "synthesis.best.offset": "the synthesis of a slider-crank (tests/synthesis)",
 }
 #: Prefixes of capability keys that carry a result's own key after them.

@@ -121,13 +121,23 @@ def with_shaft_cam(machine: Any, outcome: Outcome, phase: float, positions: int)
                              machine.speed_loads, machine.single)
 
 
+def _shaft_labels() -> dict[str, Label]:
+    """The cam's own results under the ``shaft_cam.`` prefix, declared once for the catalogue."""
+    from .stage import LABELS
+
+    return {_rename(k): Label(f"Shaft cam: {lab.text}", lab.unit, lab.display,
+                              None if lab.zero_below is None else _rename(lab.zero_below))
+            for k, lab in LABELS.items()}
+
+
 CAPABILITY = Capability(
     table="shaft_cam",
     schema=ShaftCamTable,
     run=run,
     step="cam on the crank shaft",
     kinds=("mechanism",),
-    labels={"shaft_cam.combined_peak_torque": Label("Shaft: peak driving torque, linkage + cam", "N*m"),
+    labels={**_shaft_labels(),
+            "shaft_cam.combined_peak_torque": Label("Shaft: peak driving torque, linkage + cam", "N*m"),
             "shaft_cam.linkage_peak_torque": Label("Shaft: peak driving torque of the linkage alone", "N*m")},
     report="machdyn.report.cams:shaft_sections",
     check=check,

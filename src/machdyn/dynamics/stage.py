@@ -206,7 +206,8 @@ def check_flywheel(problem: Any, table: FlywheelTable, source: str | None = None
     from .drives import InductionMotor
 
     found: list[tuple[str, str]] = []
-    speed = float(problem.drive.speed)
+    drive = getattr(problem, "drive", None)  # a cam file turns its camshaft at the cam's own speed
+    speed = float(drive.speed) if drive is not None else 1.0
     if not speed > 0:
         found.append(("drive.speed", f"must be > 0 for [flywheel] (the crank turns counter-clockwise); got "
                                      f"{speed:g} rad/s"))

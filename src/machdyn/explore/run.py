@@ -225,8 +225,8 @@ def explore(
             try:
                 stats = run_partitions(plan, keeper, units, workers=workers, scheduler=scheduler,
                                        progress=report or None, on_partition=on_partition)
-            except KeyboardInterrupt:
-                raise ExplorationInterrupted(folder, len(keeper.done()), plan.space.partitions) from None
+            except KeyboardInterrupt as stop:  # kept as the cause: a SIGTERM stays told apart from Ctrl-C
+                raise ExplorationInterrupted(folder, len(keeper.done()), plan.space.partitions) from stop
     except BaseException:
         keeper.close()
         raise
