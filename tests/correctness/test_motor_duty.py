@@ -65,6 +65,8 @@ def test_too_many_starts_per_hour_is_a_failed_check_with_its_figure(tmp_path):
     said = " ".join(run.stderr.split())
     assert f"stands {allowed:.4g} starts per hour" in said and "fewer than the 30 asked for" in said
     assert s["flywheel.motor_start_rotor_loss"] > 0
+    report = (tmp_path / "out" / "report.html").read_text(encoding="utf-8")
+    assert "starts per hour it stands" in report and "rotor loss of one start" in report
 
 
 def test_the_selected_motor_stands_the_starts_asked_for(tmp_path):

@@ -120,3 +120,12 @@ def test_starts_per_hour_from_the_rotor_heat():
 def test_bad_duty_input_names_the_rule(call, message):
     with pytest.raises(InputError, match=message):
         call()
+
+
+def test_duty_results_are_in_the_catalogue():
+    from machdyn.results.catalogue import catalogue
+
+    keys = {q.key: q for q in catalogue()}
+    for key in ("flywheel.motor_duty_load", "flywheel.motor_duty_rated_torque", "flywheel.motor_start_rotor_loss",
+                "flywheel.motor_starts_per_hour"):
+        assert key in keys and keys[key].producer == "flywheel"
