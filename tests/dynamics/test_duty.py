@@ -62,12 +62,23 @@ def test_rms_is_invariant_under_splitting_a_segment(segments, which, share):
 
 
 @settings(max_examples=40, deadline=None)
-@given(st.sampled_from(["S3", "S6"]), st.floats(0.05, 1.0), st.floats(1.0, 100.0), st.floats(0.0, 0.9))
-def test_the_duty_rating_is_where_the_equivalent_torque_meets_the_s1_rating(duty, cdf, rated, idle):
+@given(st.sampled_from(["S3", "S6"]), st.floats(0.05, 1.0), st.floats(1.0, 100.0), st.floats(0.0, 0.9),
+       st.floats(0.1, 1.0))
+def test_the_duty_rating_is_where_the_equivalent_torque_meets_the_s1_rating(duty, cdf, rated, idle, cooling):
     """The load torque allowed in S3/S6 heats the motor exactly as its rated torque does in S1."""
     t0 = idle * rated
-    allowed = rated_torque_for_duty(rated, duty, cdf, t0)
-    assert equivalent_torque(allowed, duty, cdf, t0) == pytest.approx(rated, rel=1e-9)
+    allowed = rated_torque_for_duty(rated, duty, cdf, t0, cooling)
+    assert equivalent_torque(allowed, duty, cdf, t0, cooling) == pytest.approx(rated, rel=1e-9)
+
+
+def test_poorer_cooling_at_rest_derates_s3():
+    """h = 1 is the Parvalux rule; a motor that cools less at rest (h < 1) carries less; with h -> small the rest
+    no longer cools and S3 tends to S1."""
+    assert equivalent_torque(10.0, "S3", 0.4, rest_cooling=1.0) == pytest.approx(10.0 * 0.4**0.5, rel=1e-12)
+    assert equivalent_torque(10.0, "S3", 0.4, rest_cooling=0.5) == pytest.approx(10.0 * (0.4 / 0.7) ** 0.5,
+                                                                                  rel=1e-12)
+    assert rated_torque_for_duty(10.0, "S3", 0.4, rest_cooling=0.5) < rated_torque_for_duty(10.0, "S3", 0.4)
+    assert rated_torque_for_duty(10.0, "S3", 0.4, rest_cooling=1e-9) == pytest.approx(10.0, rel=1e-6)
 
 
 def test_rotor_loss_of_a_free_run_up_is_the_kinetic_energy():
@@ -115,6 +126,7 @@ def test_starts_per_hour_from_the_rotor_heat():
     (lambda: equivalent_torque(1.0, "S2", 0.5), "duty must be one of"),
     (lambda: equivalent_torque(1.0, "S3", 0.0), "cyclic_duration_factor must be in"),
     (lambda: rms_torque([1.0], [0.0]), "not all 0"),
+    (lambda: equivalent_torque(1.0, "S3", 0.5, rest_cooling=0.0), "rest_cooling must be in"),
     (lambda: start_rotor_loss(1.0, 100.0, 5.0, 6.0), "must exceed the load torque"),
 ])
 def test_bad_duty_input_names_the_rule(call, message):

@@ -15,11 +15,17 @@ standard's preferred factors are 15, 25, 40 and 60 % with a cycle of 10 min; the
 cycles short against the motor's thermal time constant (tens of minutes for motors above ~1 kW), i.e. for a
 press's strokes and pauses, not for hour-long cycles.
 
-**Rating for S3/S6 from the S1 rating.** A motor whose S1 rated torque is T_S1 may carry, in a duty with load
-share ``cdf`` and zero torque otherwise, the torque T_S1/√cdf (Parvalux, "What is an S3 duty cycle?", FAQ: "the
-rated torque is equal to the continuous torque multiplied by 1/√(x/100)"); it is the RMS rule with a rest at zero
-torque. It neglects the poorer cooling of a self-ventilated motor at rest (S3) — manufacturers then derate more —
-and so it is the upper bound of a catalogue's S3 rating. In S6 the no-load periods carry a no-load torque T_0
+**Rating for S3/S6 from the S1 rating.** A motor whose S1 rated torque is T_S1 may carry, in a duty with load share
+``cdf`` and zero torque otherwise, the torque T_S1/√cdf (Parvalux, "What is an S3 duty cycle?", FAQ: "the rated
+torque is equal to the continuous torque multiplied by 1/√(x/100)" — stated there for permanent-magnet DC motors;
+the thermal argument, losses growing with the square of the torque, is the same for an induction motor near its
+rated point); it is the RMS rule with a rest at zero torque. It neglects the poorer cooling of a self-ventilated
+motor at rest (S3) — manufacturers then derate more — and so it is the upper bound of a catalogue's S3 rating. The
+``rest_cooling`` factor h = heat dissipated at rest / heat dissipated running (h = 1: the rule above; a
+self-ventilated motor cools much less at rest, and h comes from its maker; the same constant "heat dissipation ratio
+(ventilated/non-ventilated motor)" that Vanhoucke's duty-cycle calculator for MEZ motors asks for) weighs the rest
+periods in the mean heat balance: the mean loss cdf·T² over the mean dissipation cdf + h(1 − cdf) must not exceed
+T_S1² over 1, so T_eq = T √(cdf/(cdf + h(1 − cdf))) in S3. In S6 the no-load periods carry a no-load torque T_0
 (friction, the idling flywheel's losses), and the load torque allowed is √((T_S1² − (1 − cdf) T_0²)/cdf).
 
 **Starting.** During a run-up the rotor of an induction motor dissipates T·ω_s·s (slip s, air-gap torque T,
@@ -61,6 +67,11 @@ def _check_duty(duty: str, cdf: float) -> None:
         raise InputError(f"cyclic_duration_factor must be in (0, 1]; got {cdf!r}.")
 
 
+def _check_cooling(h: float) -> None:
+    if not (np.isfinite(h) and 0.0 < h <= 1.0):
+        raise InputError(f"rest_cooling must be in (0, 1]; got {h!r}.")
+
+
 def rms_torque(torques, durations) -> float:
     """The equivalent (RMS) torque [N·m] of a cycle of segments: √(Σ T_i² t_i / Σ t_i).
 
@@ -75,28 +86,37 @@ def rms_torque(torques, durations) -> float:
     return float(np.sqrt(np.sum(t * t * d) / np.sum(d)))
 
 
-def equivalent_torque(load_rms: float, duty: str = "S1", cdf: float = 1.0, no_load_torque: float = 0.0) -> float:
+def equivalent_torque(load_rms: float, duty: str = "S1", cdf: float = 1.0, no_load_torque: float = 0.0,
+                      rest_cooling: float = 1.0) -> float:
     """The thermally equivalent continuous torque [N·m] of a duty (IEC 60034-1:2022 §4.2.1, 4.2.3, 4.2.6):
-    S1: T_load; S3: √cdf · T_load (rest at zero torque); S6: √(cdf T_load² + (1 − cdf) T_0²).
+    S1: T_load; S3: T_load √(cdf/(cdf + h(1 − cdf))) (rest at zero torque; √cdf · T_load for h = 1);
+    S6: √(cdf T_load² + (1 − cdf) T_0²).
 
     load_rms : the RMS torque [N·m] while loaded; cdf : cyclic duration factor in (0, 1]; no_load_torque : T_0
-    [N·m] in the no-load periods of S6. Valid for cycles short against the thermal time constant.
+    [N·m] in the no-load periods of S6; rest_cooling : h in (0, 1], the cooling at rest against running (S3).
+    Valid for cycles short against the thermal time constant.
     """
     _check_duty(duty, cdf)
+    _check_cooling(rest_cooling)
     if duty == "S1":
         return float(load_rms)
     if duty == "S3":
-        return rms_torque([load_rms, 0.0], [cdf, 1.0 - cdf])
+        return rms_torque([load_rms, 0.0], [cdf, rest_cooling * (1.0 - cdf)])
     return rms_torque([load_rms, no_load_torque], [cdf, 1.0 - cdf])
 
 
-def rated_torque_for_duty(rated_s1: float, duty: str = "S1", cdf: float = 1.0, no_load_torque: float = 0.0) -> float:
-    """The load torque [N·m] a motor of S1 rated torque ``rated_s1`` [N·m] carries in the duty: S3 T_S1/√cdf
-    (Parvalux FAQ "What is an S3 duty cycle?"), S6 √((T_S1² − (1 − cdf) T_0²)/cdf) (0 if the no-load torque
-    alone overloads it). The inverse of :func:`equivalent_torque`; same validity."""
+def rated_torque_for_duty(rated_s1: float, duty: str = "S1", cdf: float = 1.0, no_load_torque: float = 0.0,
+                          rest_cooling: float = 1.0) -> float:
+    """The load torque [N·m] a motor of S1 rated torque ``rated_s1`` [N·m] carries in the duty: S3
+    T_S1 √((cdf + h(1 − cdf))/cdf), T_S1/√cdf for h = 1 (Parvalux FAQ "What is an S3 duty cycle?"), S6
+    √((T_S1² − (1 − cdf) T_0²)/cdf) (0 if the no-load torque alone overloads it). The inverse of
+    :func:`equivalent_torque`; same validity."""
     _check_duty(duty, cdf)
+    _check_cooling(rest_cooling)
     if duty == "S1":
         return float(rated_s1)
+    if duty == "S3":
+        return float(rated_s1 * np.sqrt((cdf + rest_cooling * (1.0 - cdf)) / cdf))
     t0 = no_load_torque if duty == "S6" else 0.0
     room = rated_s1**2 - (1.0 - cdf) * t0**2
     return float(np.sqrt(room / cdf)) if room > 0 else 0.0
@@ -158,6 +178,7 @@ class DutyCheck:
     starts_allowed: float
     starts_required: float | None
     no_load_torque: float = 0.0
+    rest_cooling: float = 1.0
 
     @property
     def load_ratio(self) -> float:
@@ -166,7 +187,7 @@ class DutyCheck:
     @property
     def rated_for_duty(self) -> float:
         """The torque [N·m] the motor may carry while loaded in its duty (:func:`rated_torque_for_duty`)."""
-        return rated_torque_for_duty(self.rated, self.duty, self.cdf, self.no_load_torque)
+        return rated_torque_for_duty(self.rated, self.duty, self.cdf, self.no_load_torque, self.rest_cooling)
 
     def failures(self) -> list[str]:
         """The failed checks: an overloaded motor, too few starts per hour."""
@@ -195,13 +216,13 @@ class DutyCheck:
 
 
 def motor_duty(drive, load_rms: float, duty: str = "S1", cdf: float = 1.0, no_load_torque: float = 0.0,
-               start_up=None, starts_required: float | None = None) -> DutyCheck:
+               start_up=None, starts_required: float | None = None, rest_cooling: float = 1.0) -> DutyCheck:
     """The duty check of an :class:`~machdyn.dynamics.drives.InductionMotor` (single design) whose steady
     RMS torque at the crank is ``load_rms`` [N·m]; ``start_up`` a :class:`~machdyn.dynamics.motion.StartUp`
     (its trajectory up to the time to steady running gives the rotor loss of a start)."""
     ratio, eff = float(np.max(drive.ratio)), float(np.max(drive.efficiency))
     rated = float(np.max(drive.rated_torque)) * ratio * eff
-    equivalent = equivalent_torque(load_rms, duty, cdf, no_load_torque)
+    equivalent = equivalent_torque(load_rms, duty, cdf, no_load_torque, rest_cooling)
     loss = heat = allowed = float("nan")
     if start_up is not None:
         tr = start_up.trajectory
@@ -214,4 +235,4 @@ def motor_duty(drive, load_rms: float, duty: str = "S1", cdf: float = 1.0, no_lo
         heat = rotor_heat_per_hour(float(np.max(drive.rated_power)), float(np.max(drive.rated_slip)))
         allowed = starts_per_hour(heat, equivalent / rated, loss) if loss > 0 else float("inf")
     return DutyCheck(duty, cdf, float(load_rms), equivalent, rated, loss, heat, allowed, starts_required,
-                     no_load_torque)
+                     no_load_torque, rest_cooling)

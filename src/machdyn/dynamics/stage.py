@@ -56,6 +56,7 @@ class MotorTable(Spec):
     duty: Literal["S1", "S3", "S6"] = "S1"
     cyclic_duration_factor: float | None = Field(None, gt=0.0, le=1.0, allow_inf_nan=False)
     no_load_torque: Torque = 0.0  # S6: the torque at the crank in the no-load periods
+    rest_cooling: float = Field(1.0, gt=0.0, le=1.0, allow_inf_nan=False)  # S3: cooling at rest / running
     starts_per_hour: float | None = Field(None, ge=0.0, allow_inf_nan=False)
 
     @model_validator(mode="after")
@@ -276,7 +277,8 @@ def _duty(drive, steady, motor: MotorTable, run=None):
     from .duty import motor_duty
 
     return motor_duty(drive, float(np.max(steady.rms_drive_torque)), motor.duty, motor.cyclic_duration_factor or 1.0,
-                      float(motor.no_load_torque), start_up=run, starts_required=motor.starts_per_hour)
+                      float(motor.no_load_torque), start_up=run, starts_required=motor.starts_per_hour,
+                      rest_cooling=motor.rest_cooling)
 
 
 #: The largest relative departure of the steady mean crank speed from the nominal ``[drive] speed`` accepted: the
