@@ -83,9 +83,15 @@ def test_the_selected_motor_stands_the_starts_asked_for(tmp_path):
     ('duty = "S3"\ncyclic_duration_factor = 1.5', "cyclic_duration_factor", "must be <= 1.0; got 1.5"),
     ('duty = "S4"', "duty", "S1"),
     ('starts_per_hour = -1', "starts_per_hour", "must be >= 0.0; got -1"),
+    ('rest_cooling = 0', "rest_cooling", "must be > 0.0; got 0"),
+    ('kind = "constant_torque"\nduty = "S3"\ncyclic_duration_factor = 0.4', "flywheel.motor",
+     "apply to an induction motor"),
 ])
 def test_bad_duty_fields_exit_2_naming_the_field(tmp_path, extra, field, rule):
-    check, run = check_and_run(tmp_path, _compactor(extra))
+    text = _compactor(extra)
+    if "constant_torque" in extra:
+        text = text.replace('kind = "induction"\n', "", 1)
+    check, run = check_and_run(tmp_path, text)
     assert check.code == 2 and run.code == 2, (check, run)
     said = " ".join(check.stderr.split())
     assert field in said and rule in said, said

@@ -64,6 +64,9 @@ class MotorTable(Spec):
         if self.duty != "S1" and self.cyclic_duration_factor is None:
             raise ValueError(f"duty {self.duty} needs cyclic_duration_factor (the share of the cycle under load, "
                              "in (0, 1])")
+        if self.kind in ("constant_torque", "hydraulic") and (self.duty != "S1" or self.starts_per_hour is not None):
+            raise ValueError(f"duty and starts_per_hour apply to an induction motor (kind = \"select\" or "
+                             f"\"induction\"); got kind = \"{self.kind}\"")
         if self.no_load_torque < 0:
             raise ValueError(f"no_load_torque must be >= 0; got {self.no_load_torque:g} N*m")
         if self.kind == "induction" and (self.rated_power is None or self.rated_speed is None):
