@@ -48,15 +48,15 @@ def test_a_motor_overloaded_in_s6_is_a_failed_check_with_its_figure(tmp_path):
     assert f"{100 * equivalent / rated:.4g} %" in said
 
 
-def _press(extra: str, motor: str = 'kind = "select"') -> str:
-    return PRESS.replace('kind = "select"\nsynchronous_speed = "1500 rpm"',
-                         f'{motor}\nsynchronous_speed = "1500 rpm"\n{extra}', 1)
+def _press(starts: int, motor: str = 'kind = "select"') -> str:
+    text = PRESS.replace("starts_per_hour = 10 ", f"starts_per_hour = {starts} ", 1)
+    return text.replace('kind = "select"\nsynchronous_speed', f'{motor}\nsynchronous_speed', 1)
 
 
 def test_too_many_starts_per_hour_is_a_failed_check_with_its_figure(tmp_path):
     """The crank press's 0.37 kW motor runs up its flywheel in about 4 s; its rotor heat allows some 16 starts an
     hour: 30 fail, naming both figures."""
-    text = _press("starts_per_hour = 30", 'kind = "induction"\nrated_power = "0.37 kW"\nrated_speed = "1440 rpm"')
+    text = _press(30, 'kind = "induction"\nrated_power = "0.37 kW"\nrated_speed = "1440 rpm"')
     check, run = check_and_run(tmp_path, text)
     assert check.code == 0 and run.code == 3, (check, run)
     s = _scalars(tmp_path)
@@ -71,11 +71,17 @@ def test_too_many_starts_per_hour_is_a_failed_check_with_its_figure(tmp_path):
 
 def test_the_selected_motor_stands_the_starts_asked_for(tmp_path):
     """Asked for 30 starts an hour, the selection goes past the 0.37 kW motor the press needs for its load."""
-    check, run = check_and_run(tmp_path, _press("starts_per_hour = 30"))
+    check, run = check_and_run(tmp_path, _press(30))
     assert (check.code, run.code) == (0, 0), (check, run)
     s = _scalars(tmp_path)
     assert s["flywheel.motor_rated_power"] > 0.37  # kW, as results.json shows it
     assert s["flywheel.motor_starts_per_hour"] >= 30.0
+
+
+def test_the_crank_press_example_stands_its_starts(tmp_path):
+    check, run = check_and_run(tmp_path, PRESS)
+    assert (check.code, run.code) == (0, 0), (check, run)
+    assert _scalars(tmp_path)["flywheel.motor_starts_per_hour"] >= 10.0
 
 
 @pytest.mark.parametrize("extra, field, rule", [
