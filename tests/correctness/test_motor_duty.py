@@ -101,3 +101,12 @@ def test_bad_duty_fields_exit_2_naming_the_field(tmp_path, extra, field, rule):
     assert check.code == 2 and run.code == 2, (check, run)
     said = " ".join(check.stderr.split())
     assert field in said and rule in said, said
+
+
+def test_starts_asked_for_without_a_start_up_are_said_to_be_unchecked(tmp_path):
+    check, run = check_and_run(tmp_path, _compactor('rated_power = "0.55 kW"\nstarts_per_hour = 5').replace(
+        'rated_power = "0.25 kW"\n', "", 1))
+    assert (check.code, run.code) == (0, 0), (check, run)
+    said = json.loads((tmp_path / "out" / "results.json").read_text())["warnings"]
+    assert any("starts_per_hour is not checked" in w for w in said), said
+    assert "flywheel.motor_starts_per_hour" not in _scalars(tmp_path)

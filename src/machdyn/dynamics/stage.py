@@ -407,9 +407,12 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         duty = _duty(drive, steady, table.motor, run)
         values |= {"flywheel.motor_duty_load": duty.load_ratio,
                    "flywheel.motor_duty_rated_torque": duty.rated_for_duty}
-        if run is not None:
+        if run is not None and np.isfinite(duty.starts_allowed):
             values |= {"flywheel.motor_start_rotor_loss": duty.start_loss,
                        "flywheel.motor_starts_per_hour": duty.starts_allowed}
+        elif table.motor.starts_per_hour is not None:
+            warnings.append("flywheel.motor.starts_per_hour is not checked: the start-up was not simulated "
+                            "([flywheel] start_up = false, or it did not settle)")
         failed += duty.too_many_starts()
     part = None
     if flywheel > 0:
