@@ -15,7 +15,17 @@ from pydantic import Field, model_validator
 
 from ..errors import InputError
 from ..pipeline import Capability, Outcome, StageContext
-from ..problem.fields import AngularVelocity, Density, Inertia, LinearDamping, Power, Pressure, RotaryDamping, Stress
+from ..problem.fields import (
+    AngularVelocity,
+    Density,
+    Inertia,
+    LinearDamping,
+    Power,
+    Pressure,
+    RotaryDamping,
+    Stress,
+    Torque,
+)
 from ..problem.fields import PositiveVelocity as Speed
 from ..problem.fields import Volume as Displacement
 from ..problem.fields import VolumeFlow as Flow
@@ -42,9 +52,23 @@ class MotorTable(Spec):
     pressure_limit: Pressure | None = None
     volumetric_efficiency: float = Field(0.95, gt=0.0, lt=1.0, allow_inf_nan=False)
     mechanical_efficiency: float = Field(0.9, gt=0.0, le=1.0, allow_inf_nan=False)
+    # duty of an induction motor (IEC 60034-1): S1 continuous, S3 intermittent, S6 with intermittent load
+    duty: Literal["S1", "S3", "S6"] = "S1"
+    cyclic_duration_factor: float | None = Field(None, gt=0.0, le=1.0, allow_inf_nan=False)
+    no_load_torque: Torque = 0.0  # S6: the torque at the crank in the no-load periods
+    rest_cooling: float = Field(1.0, gt=0.0, le=1.0, allow_inf_nan=False)  # S3: cooling at rest / running
+    starts_per_hour: float | None = Field(None, ge=0.0, allow_inf_nan=False)
 
     @model_validator(mode="after")
     def _complete(self):
+        if self.duty != "S1" and self.cyclic_duration_factor is None:
+            raise ValueError(f"duty {self.duty} needs cyclic_duration_factor (the share of the cycle under load, "
+                             "in (0, 1])")
+        if self.kind in ("constant_torque", "hydraulic") and (self.duty != "S1" or self.starts_per_hour is not None):
+            raise ValueError(f"duty and starts_per_hour apply to an induction motor (kind = \"select\" or "
+                             f"\"induction\"); got kind = \"{self.kind}\"")
+        if self.no_load_torque < 0:
+            raise ValueError(f"no_load_torque must be >= 0; got {self.no_load_torque:g} N*m")
         if self.kind == "induction" and (self.rated_power is None or self.rated_speed is None):
             raise ValueError("an induction motor needs rated_power and rated_speed")
         if self.kind == "hydraulic" and None in (self.displacement, self.flow, self.pressure_limit):
@@ -132,6 +156,11 @@ LABELS = {
     "flywheel.motor_breakdown_torque": Label("Motor: breakdown torque at the crank", "N*m"),
     "flywheel.gear_ratio": Label("Motor: gear ratio (motor / crank speed)", ""),
     "flywheel.motor_rms_load": Label("Motor: RMS torque over the cycle / rated torque (duty S1)", ""),
+    "flywheel.motor_duty_load": Label("Motor: equivalent torque of its duty (S1, S3 or S6) / rated torque", ""),
+    "flywheel.motor_duty_rated_torque": Label("Motor: torque it may carry while loaded in its duty, at the crank",
+                                              "N*m"),
+    "flywheel.motor_start_rotor_loss": Label("Motor: rotor loss of one start (run-up with the flywheel)", "J"),
+    "flywheel.motor_starts_per_hour": Label("Motor: starts per hour it stands (by the rotor heat of a start)", ""),
     "flywheel.torque_peak_constant_speed": Label("Driving torque into the linkage: peak at constant speed", "N*m"),
     "flywheel.torque_peak_real_speed": Label("Driving torque into the linkage: peak at the real speed", "N*m"),
     "flywheel.joint_force_change": Label("Largest change of a joint's peak force at the real speed", ""),
@@ -140,7 +169,7 @@ LABELS = {
 SUMMARY = ("flywheel.inertia", "flywheel.inertia_constant_torque", "flywheel.motor_slip_saving",
            "flywheel.target_delta", "flywheel.delta", "flywheel.method_difference",
            "flywheel.mean_speed", "flywheel.peak_drive_torque", "flywheel.mean_power", "flywheel.motor_rated_power",
-           "flywheel.motor_rms_load",
+           "flywheel.motor_rms_load", "flywheel.motor_duty_load", "flywheel.motor_starts_per_hour",
            "flywheel.time_to_steady", "flywheel.diameter", "flywheel.mass", "flywheel.rim_speed")
 
 
@@ -188,13 +217,16 @@ def _drive(motor: MotorTable, machine, flywheel: float, speed: float, mean_torqu
         except ValueError:
             continue
         if (float(np.max(ss.drive_torque)) * 1.3 <= float(candidate.breakdown_torque) and not ss.warnings
-                and not _overloaded(candidate, ss)):
+                and not _overloaded(candidate, ss, motor)):
             try:
-                start_up(machine, candidate, flywheel, steady=ss)
+                run = start_up(machine, candidate, flywheel, steady=ss)
             except ValueError:
                 continue  # cannot start the machine from rest
             except NotSettledError:
                 pass
+            else:
+                if motor.starts_per_hour and _duty(candidate, ss, motor, run).too_many_starts():
+                    continue  # its rotor does not stand the starts per hour asked for
             return candidate
     return InductionMotor(ratings[-1], choice.motor.rated_speed, choice.motor.synchronous_speed,
                           motor.breakdown_ratio, choice.motor.ratio, motor.efficiency, motor.rotor_inertia)
@@ -224,14 +256,17 @@ def check_flywheel(problem: Any, table: FlywheelTable, source: str | None = None
     return found
 
 
-def _overloaded(drive, steady) -> list[str]:
-    """The thermal check of an induction motor in continuous duty S1 (IEC 60034-1:2022, 4.2.1): the RMS over
+def _overloaded(drive, steady, motor: MotorTable | None = None) -> list[str]:
+    """The thermal check of the motor's duty: S3 and S6 (``motor.duty``) by :mod:`machdyn.dynamics.duty`; the
+    thermal check of an induction motor in continuous duty S1 (IEC 60034-1:2022, 4.2.1): the RMS over
     time of the torque it gives, referred to the crank, must not exceed its rated torque at the crank
     T_r i eta [N*m] (the equivalent-torque method: the winding losses, and so the temperature rise, grow with
     the square of the current, nearly proportional to the torque near rated load; Vogel, Elektrische Antriebe,
     or Pyrhönen, Jokinen & Hrabovcová, Design of Rotating Electrical Machines, 2nd ed. 2014, sec. 10.1)."""
     if getattr(drive, "name", "") != "induction motor":
         return []
+    if motor is not None and motor.duty != "S1":
+        return _duty(drive, steady, motor).overload()
     rated = float(np.max(drive.rated_torque * drive.ratio * drive.efficiency))
     rms = float(steady.rms_drive_torque)
     if rms > rated * (1.0 + 1e-9):
@@ -240,6 +275,14 @@ def _overloaded(drive, steady) -> list[str]:
                 f"N*m at the crank ({float(np.max(drive.rated_power)) / 1000:g} kW); it will overheat. Choose a "
                 "larger motor."]
     return []
+
+
+def _duty(drive, steady, motor: MotorTable, run=None):
+    from .duty import motor_duty
+
+    return motor_duty(drive, float(np.max(steady.rms_drive_torque)), motor.duty, motor.cyclic_duration_factor or 1.0,
+                      float(motor.no_load_torque), start_up=run, starts_required=motor.starts_per_hour,
+                      rest_cooling=motor.rest_cooling)
 
 
 #: The largest relative departure of the steady mean crank speed from the nominal ``[drive] speed`` accepted: the
@@ -317,7 +360,7 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         return Outcome(results=None, scalars={"flywheel.inertia": flywheel}, summary=("flywheel.inertia",),
                        failed_checks=(str(exc).rstrip("."),))
     warnings = list(steady.warnings)
-    failed: list[str] = [*steady.warnings, *_overloaded(drive, steady), *_off_speed(steady, speed)]
+    failed: list[str] = [*steady.warnings, *_overloaded(drive, steady, table.motor), *_off_speed(steady, speed)]
     run = None
     if table.start_up and table.motor.kind != "constant_torque":
         try:
@@ -362,6 +405,16 @@ def run_flywheel(ctx: StageContext) -> Outcome:
                    "flywheel.gear_ratio": float(drive.ratio),
                    "flywheel.motor_rms_load": float(steady.rms_drive_torque)
                    / float(np.max(drive.rated_torque * drive.ratio * drive.efficiency))}
+        duty = _duty(drive, steady, table.motor, run)
+        values |= {"flywheel.motor_duty_load": duty.load_ratio,
+                   "flywheel.motor_duty_rated_torque": duty.rated_for_duty}
+        if run is not None and np.isfinite(duty.starts_allowed):
+            values |= {"flywheel.motor_start_rotor_loss": duty.start_loss,
+                       "flywheel.motor_starts_per_hour": duty.starts_allowed}
+        elif table.motor.starts_per_hour is not None:
+            warnings.append("flywheel.motor.starts_per_hour is not checked: the start-up was not simulated "
+                            "([flywheel] start_up = false, or it did not settle)")
+        failed += duty.too_many_starts()
     part = None
     if flywheel > 0:
         limit = table.rim_speed_limit or rim_speed_limit(table.allowable_stress, table.density, table.shape)

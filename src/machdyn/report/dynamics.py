@@ -132,6 +132,7 @@ def flywheel_rows(run: Any) -> list[list[str]]:
         rows += [["motor", f"{format_value(float(d.rated_power) / 1000)} kW, "
                            f"{format_value(float(d.rated_speed) * RPM)} rpm, gear {format_value(float(d.ratio))}:1"],
                  ["breakdown torque at the crank", f"{format_value(float(d.breakdown_torque))} N·m"]]
+        rows += _duty_rows(run)
     else:
         rows += [["drive", d.name]]
     rows += [["peak / RMS drive torque", f"{format_value(float(run.steady.peak_drive_torque))} / "
@@ -139,6 +140,27 @@ def flywheel_rows(run: Any) -> list[list[str]]:
              ["mean power", f"{format_value(float(run.steady.mean_power))} W"]]
     if run.start_up is not None:
         rows += [["time to steady running", f"{format_value(float(run.start_up.time_to_steady))} s"]]
+    return rows
+
+
+def _duty_rows(run: Any) -> list[list[str]]:
+    """The motor's duty (IEC 60034-1 S1, S3 or S6) and its starts per hour (machdyn.dynamics.duty)."""
+    from ..dynamics.stage import _duty
+
+    motor = run.table.motor
+    duty = _duty(run.drive, run.steady, motor, run.start_up)
+    name = duty.duty if duty.duty == "S1" else f"{duty.duty}, cyclic duration factor {format_value(duty.cdf * 100)} %"
+    if duty.duty == "S6":
+        name += f", no-load torque {format_value(duty.no_load_torque)} N·m"
+    rows = [["duty (IEC 60034-1)", name],
+            ["equivalent torque / rated torque at the crank",
+             f"{format_value(duty.equivalent)} / {format_value(duty.rated)} N·m "
+             f"({format_value(duty.load_ratio * 100)} %)"],
+            ["torque allowed while loaded in this duty", f"{format_value(duty.rated_for_duty)} N·m"]]
+    if np.isfinite(duty.start_loss):
+        asked = "" if duty.starts_required is None else f" (asked for: {format_value(duty.starts_required)})"
+        rows += [["rotor loss of one start", f"{format_value(duty.start_loss)} J"],
+                 ["starts per hour it stands", format_value(duty.starts_allowed) + asked]]
     return rows
 
 
