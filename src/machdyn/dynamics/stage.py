@@ -41,9 +41,15 @@ class MotorTable(Spec):
     pressure_limit: Pressure | None = None
     volumetric_efficiency: float = Field(0.95, gt=0.0, lt=1.0, allow_inf_nan=False)
     mechanical_efficiency: float = Field(0.9, gt=0.0, le=1.0, allow_inf_nan=False)
+    # IEC 60034-1 duty type: "S1" continuous; "S3" intermittent periodic, running the fraction duty_factor of the time
+    duty: Literal["S1", "S3"] = "S1"
+    duty_factor: float | None = Field(None, gt=0.0, le=1.0, allow_inf_nan=False)
 
     @model_validator(mode="after")
     def _complete(self):
+        if (self.duty == "S3") != (self.duty_factor is not None):
+            raise ValueError("duty = \"S3\" needs its duty_factor (the running share of the duty cycle, e.g. 0.4), "
+                             "and duty_factor is for duty \"S3\" only")
         if self.kind == "induction" and (self.rated_power is None or self.rated_speed is None):
             raise ValueError("an induction motor needs rated_power and rated_speed")
         if self.kind == "hydraulic" and None in (self.displacement, self.flow, self.pressure_limit):
@@ -124,7 +130,7 @@ LABELS = {
     "flywheel.motor_rated_power": Label("Motor: rated power", "W", "kW"),
     "flywheel.motor_breakdown_torque": Label("Motor: breakdown torque at the crank", "N*m"),
     "flywheel.gear_ratio": Label("Motor: gear ratio (motor / crank speed)", ""),
-    "flywheel.motor_rms_load": Label("Motor: RMS torque over the cycle / rated torque (duty S1)", ""),
+    "flywheel.motor_rms_load": Label("Motor: equivalent (RMS) torque / rated torque, for its duty type", ""),
     "flywheel.torque_peak_constant_speed": Label("Driving torque into the linkage: peak at constant speed", "N*m"),
     "flywheel.torque_peak_real_speed": Label("Driving torque into the linkage: peak at the real speed", "N*m"),
     "flywheel.joint_force_change": Label("Largest change of a joint's peak force at the real speed", ""),
@@ -180,7 +186,7 @@ def _drive(motor: MotorTable, machine, flywheel: float, speed: float, mean_torqu
         except ValueError:
             continue
         if (float(np.max(ss.drive_torque)) * 1.3 <= float(candidate.breakdown_torque) and not ss.warnings
-                and not _overloaded(candidate, ss)):
+                and not _overloaded(candidate, ss, motor)):
             try:
                 start_up(machine, candidate, flywheel, steady=ss)
             except ValueError:
@@ -216,21 +222,40 @@ def check_flywheel(problem: Any, table: FlywheelTable, source: str | None = None
     return found
 
 
-def _overloaded(drive, steady) -> list[str]:
-    """The thermal check of an induction motor in continuous duty S1 (IEC 60034-1:2022, 4.2.1): the RMS over
-    time of the torque it gives, referred to the crank, must not exceed its rated torque at the crank
-    T_r i eta [N*m] (the equivalent-torque method: the winding losses, and so the temperature rise, grow with
-    the square of the current, nearly proportional to the torque near rated load; Vogel, Elektrische Antriebe,
-    or Pyrhönen, Jokinen & Hrabovcová, Design of Rotating Electrical Machines, 2nd ed. 2014, sec. 10.1)."""
+def equivalent_torque(rms_running: float, duty_factor: float = 1.0) -> float:
+    """The thermally equivalent torque [N*m] of a motor that gives ``rms_running`` [N*m] (RMS over time) while it
+    runs and rests, de-energised, for the rest of its duty cycle: T_eq = sqrt(sum T_i^2 dt_i / T_cycle) =
+    T_rms sqrt(epsilon), epsilon the cyclic duration factor (``duty_factor``, 1 for continuous duty S1; duty types
+    S1 and S3 of IEC 60034-1). The equivalent-torque (RMS) method of motor sizing: the winding losses, and so the
+    temperature rise, grow with the square of the torque (Siemens, *1FT7 synchronous motors, configuration
+    manual*, 6SN1197-0AD13-0BP2, 01/2009, sec. 2.4, "free duty cycle": M_rms = sqrt(sum M_i^2 dt_i / T) against
+    the rated torque). Valid for cycles short against the motor's thermal time constant (minutes), and for a
+    motor cooled as well at rest as running (separately ventilated); a self-ventilated motor cools less at rest,
+    for which this is not conservative.
+
+    >>> round(equivalent_torque(100.0, 0.25), 6)
+    50.0
+    """
+    return float(rms_running) * float(np.sqrt(duty_factor))
+
+
+def _overloaded(drive, steady, motor: MotorTable | None = None) -> list[str]:
+    """The thermal check of an induction motor: its equivalent torque (:func:`equivalent_torque`, from the RMS
+    over the steady cycle of the torque it gives, referred to the crank) must not exceed its rated torque at the
+    crank T_r i eta [N*m], for continuous duty S1 or, with ``duty = "S3"``, intermittent duty S3."""
     if getattr(drive, "name", "") != "induction motor":
         return []
     rated = float(np.max(drive.rated_torque * drive.ratio * drive.efficiency))
-    rms = float(steady.rms_drive_torque)
+    s3 = motor is not None and motor.duty == "S3"
+    factor = float(motor.duty_factor or 1.0) if motor is not None and s3 else 1.0
+    rms = equivalent_torque(float(steady.rms_drive_torque), factor)
     if rms > rated * (1.0 + 1e-9):
-        return [f"the induction motor is overloaded for continuous duty S1 (IEC 60034-1): the RMS torque over the "
-                f"cycle {rms:.4g} N*m at the crank is {100.0 * rms / rated:.4g} % of its rated torque {rated:.4g} "
-                f"N*m at the crank ({float(np.max(drive.rated_power)) / 1000:g} kW); it will overheat. Choose a "
-                "larger motor."]
+        what = (f"intermittent duty S3 at a cyclic duration factor of {100 * factor:g} % (IEC 60034-1): the "
+                f"equivalent torque T_rms sqrt({factor:g})" if s3 else
+                "continuous duty S1 (IEC 60034-1): the RMS torque over the cycle")
+        return [f"the induction motor is overloaded for {what} {rms:.4g} N*m at the crank is "
+                f"{100.0 * rms / rated:.4g} % of its rated torque {rated:.4g} N*m at the crank "
+                f"({float(np.max(drive.rated_power)) / 1000:g} kW); it will overheat. Choose a larger motor."]
     return []
 
 
@@ -288,7 +313,7 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         return Outcome(results=None, scalars={"flywheel.inertia": flywheel}, summary=("flywheel.inertia",),
                        failed_checks=(str(exc).rstrip("."),))
     warnings = list(steady.warnings)
-    failed: list[str] = [*steady.warnings, *_overloaded(drive, steady), *_off_speed(steady, speed)]
+    failed: list[str] = [*steady.warnings, *_overloaded(drive, steady, table.motor), *_off_speed(steady, speed)]
     run = None
     if table.start_up and table.motor.kind != "constant_torque":
         try:
@@ -326,7 +351,8 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         values |= {"flywheel.motor_rated_power": float(drive.rated_power),
                    "flywheel.motor_breakdown_torque": float(drive.breakdown_torque),
                    "flywheel.gear_ratio": float(drive.ratio),
-                   "flywheel.motor_rms_load": float(steady.rms_drive_torque)
+                   "flywheel.motor_rms_load": equivalent_torque(float(steady.rms_drive_torque),
+                                                                table.motor.duty_factor or 1.0)
                    / float(np.max(drive.rated_torque * drive.ratio * drive.efficiency))}
     part = None
     if flywheel > 0:
