@@ -65,8 +65,8 @@ def test_crank_with_only_a_rotating_unbalance_runs_without_transmission_angle(tm
     scalars = _scalars(tmp_path)
     assert not [k for k in scalars if k.startswith("transmission_angle")]
     assert all(math.isfinite(v["value"]) for v in scalars.values() if isinstance(v["value"], float))
-    # the rotating unbalance m r omega^2 is the whole frame force (gravity off): 3 kg * 0.02 m * (50 pi rad/s)^2
-    assert scalars["frame_force.max"]["value"] == pytest.approx(3 * 0.02 * (50 * math.pi) ** 2, rel=1e-9)
+    # the rotating unbalance m r omega^2 is the whole inertial shaking force: 3 kg * 0.02 m * (50 pi rad/s)^2
+    assert scalars["inertial_shaking_force.max"]["value"] == pytest.approx(3 * 0.02 * (50 * math.pi) ** 2, rel=1e-9)
 
 
 def test_massless_statics_slider_crank_with_a_process_force_runs(tmp_path):

@@ -45,3 +45,25 @@ def test_selected_motor_is_never_overloaded(tmp_path):
     scalars = json.loads((tmp_path / "out" / "results.json").read_text())["scalars"]
     assert scalars["flywheel.motor_rms_load"]["value"] <= 1.0
     assert np.isfinite(scalars["flywheel.motor_rated_power"]["value"])
+
+
+@pytest.mark.parametrize(("duty_factor", "code"), [(0.4, 0), (0.9, 3)])
+def test_intermittent_duty_s3_judges_the_equivalent_torque(tmp_path, duty_factor, code):
+    # the 0.25 kW motor is overloaded in S1; running 40 % of the time its equivalent torque T_rms sqrt(0.4) is
+    # within the rating, 90 % of the time it is not
+    duty = f'\nduty = "S3"\ncyclic_duration_factor = {duty_factor}'
+    text = _induction("0.25 kW").replace('rated_speed = "1440 rpm"', f'rated_speed = "1440 rpm"{duty}', 1)
+    check, run = check_and_run(tmp_path, text)
+    assert (check.code, run.code) == (0, code), (check, run)
+    scalars = json.loads((tmp_path / "out" / "results.json").read_text())["scalars"]
+    rms = scalars["flywheel.rms_drive_torque"]["value"]
+    assert scalars["flywheel.motor_duty_load"]["value"] == pytest.approx(rms * duty_factor**0.5 / 23.75, rel=1e-9)
+    if code == 3:
+        assert "intermittent periodic duty S3 at 90 %" in run.stderr
+
+
+def test_s3_without_its_cyclic_duration_factor_is_refused(tmp_path):
+    text = _induction("0.25 kW").replace('rated_speed = "1440 rpm"', 'rated_speed = "1440 rpm"\nduty = "S3"', 1)
+    check, run = check_and_run(tmp_path, text)
+    assert (check.code, run.code) == (2, 2)
+    assert "cyclic_duration_factor" in check.stderr

@@ -118,15 +118,21 @@ TEXT = ["abc", "", "\u202e45 mm", "45\u200b mm", "四十五 mm", "🙂", "1 mm" 
 NON_STRINGS: list[Any] = [datetime.date(2026, 11, 23), True, -1, 1e308, [], {}, [1, 2, 3], {"a": {"b": 1}}]
 
 
-def mutants(data: dict[str, Any], text: str, rng: random.Random, count: int) -> list[tuple[str, Any, tuple]]:
-    """(kind, content, mutated paths) tuples; content is a dict (written as TOML), text or bytes."""
-    leaves = _leaves(data)
+def mutants(data: dict[str, Any], text: str, rng: random.Random, count: int,
+            within: tuple = ()) -> list[tuple[str, Any, tuple]]:
+    """(kind, content, mutated paths) tuples; content is a dict (written as TOML), text or bytes. With ``within``
+    (a table's path, e.g. ``("flywheel", "motor")``) only the keys inside that table are mutated."""
+    leaves = [p for p in _leaves(data) if p[: len(within)] == within and len(p) > len(within)]
     out: list[tuple[str, Any, tuple]] = []
     for path in leaves:  # every key deleted once
         d = copy.deepcopy(data)
         _delete(d, path)
         out.append(("delete", d, (path,)))
     kinds = ["swap", "unit", "number", "string", "type", "unicode", "nest", "truncate", "binary", "unknown"]
+    if within:  # a third of the mutants delete a key of the table, the rest change one
+        kinds = [k for k in kinds if k not in ("truncate", "binary")]
+        rng.shuffle(out)
+        del out[max(1, count // 3):]
     while len(out) < count:
         kind = rng.choice(kinds)
         d = copy.deepcopy(data)
@@ -264,3 +270,63 @@ def test_deep_nesting_is_refused_without_a_traceback(tmp_path, text):
     file.write_text(text)
     result = CliRunner().invoke(app, ["check", str(file)])
     assert result.exit_code == EXIT_BAD_INPUT and "nested" in result.stderr and "Traceback" not in result.output
+
+
+# ------------------------------------------------------------------------ the capability tables, one by one
+
+#: table -> the shipped example whose table is mutated (made cheap to run: fewer positions, a short search)
+TABLE_BASES: dict[tuple, str] = {
+    ("flywheel",): "rotary_screen_drive",
+    ("flywheel", "motor"): "compactor_flywheel",
+    ("balance",): "slider_crank_balance",
+    ("frame",): "tamper_on_tyres",
+    ("signals",): "vibration_record",
+    ("optimise",): "compactor_optimise",
+    ("sweep",): "four_bar_sweep",
+}
+TABLE_CASES = 14  # mutants per table
+
+
+def _cheap(data: dict[str, Any]) -> dict[str, Any]:
+    data["drive"]["positions"] = min(int(data["drive"].get("positions", 360)), 90)
+    if "flywheel" in data:
+        data["flywheel"].update(positions=90, start_up=False)
+        if data["flywheel"].get("motor", {}).get("kind") == "select":
+            data["flywheel"]["motor"].update(kind="induction", rated_power="0.55 kW", rated_speed="1440 rpm")
+    if "optimise" in data:
+        data["optimise"].update(generations=2, population=6, positions=36)
+    if "sweep" in data:
+        data["sweep"]["count"] = 4
+    return data
+
+
+def test_fuzzed_capability_tables_check_agrees_with_run(tmp_path):
+    """Mutants of each capability table ([flywheel], [flywheel.motor], [balance], [frame], [signals], [optimise],
+    [sweep]): a file check refuses is refused by run (exit 2), and a file check accepts runs to 0 or 3, never 1,
+    2 or 4."""
+    rng = random.Random(SEED + 1)
+    runner = CliRunner()
+    counts = {"mutants": 0, "refused by both": 0, "accepted by both": 0, "disagreements": 0}
+    failures: list[str] = []
+    for within, example in TABLE_BASES.items():
+        data = _cheap(tomllib.loads((ROOT / "examples" / f"{example}.toml").read_text(encoding="utf-8")))
+        for i, (kind, content, path) in enumerate(mutants(data, to_toml(data), rng, TABLE_CASES, within)):
+            folder = tmp_path / f"{'_'.join(within)}{i}"
+            folder.mkdir()
+            file = _write(folder, content)
+            where = f"[{'.'.join(within)}] {kind} {' <-> '.join('.'.join(map(str, p)) for p in path)}"
+            checked = runner.invoke(app, ["check", str(file)])
+            ran = runner.invoke(app, ["run", str(file), "--out", str(folder / "out"), "--quiet"])
+            counts["mutants"] += 1
+            if checked.exit_code == EXIT_BAD_INPUT and ran.exit_code == EXIT_BAD_INPUT:
+                counts["refused by both"] += 1
+            elif checked.exit_code == 0 and ran.exit_code in (0, 3):
+                counts["accepted by both"] += 1
+            else:
+                counts["disagreements"] += 1
+                failures.append(f"{where}: check {checked.exit_code}, run {ran.exit_code}: {ran.output[-300:]}")
+            if "Traceback" in checked.output + ran.output:
+                failures.append(f"{where}: a traceback")
+    print(f"fuzz of the capability tables: {counts}")  # noqa: T201 - the counts are part of the suite's output
+    assert counts["mutants"] >= len(TABLE_BASES) * TABLE_CASES
+    assert not failures, f"{len(failures)} of {counts['mutants']} mutants failed:\n" + "\n".join(failures[:25])

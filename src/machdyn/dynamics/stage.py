@@ -271,9 +271,9 @@ def _overloaded(drive, steady, motor: MotorTable | None = None) -> list[str]:
     rms = float(steady.rms_drive_torque)
     if rms > rated * (1.0 + 1e-9):
         return [f"the induction motor is overloaded for continuous duty S1 (IEC 60034-1): the RMS torque over the "
-                f"cycle {rms:.4g} N*m at the crank is {100.0 * rms / rated:.4g} % of its rated torque {rated:.4g} "
-                f"N*m at the crank ({float(np.max(drive.rated_power)) / 1000:g} kW); it will overheat. Choose a "
-                "larger motor."]
+                f"cycle {rms:.4g} N*m at the crank is {100.0 * rms / rated:.4g} % of its rated torque {rated:.4g} N*m "
+                f"at the crank ({float(np.max(drive.rated_power)) / 1000:g} kW); it will overheat. Choose a larger "
+                "motor."]
     return []
 
 

@@ -33,9 +33,23 @@ from .fields import (
     Torque,
 )
 
+#: Bidirectional overrides and isolates: they make a text read differently from what it holds.
+_BIDI = frozenset("\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069")
+
 
 class Spec(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
+
+    @field_validator("*", mode="after")
+    @classmethod
+    def _plain_text(cls, value: Any) -> Any:
+        """Text of a problem file is plain: no control character (a NUL, an escape; tabs and line breaks are
+        fine) and no bidirectional override, which labels, names and file names would carry into the outputs."""
+        if isinstance(value, str):
+            for ch in value:
+                if (ch < " " and ch not in "\t\n\r") or "\x7f" <= ch <= "\x9f" or ch in _BIDI:
+                    raise FieldError(f"must be plain text; it contains the control character U+{ord(ch):04X}")
+        return value
 
 
 def _branch(value: Any) -> int:
