@@ -137,7 +137,29 @@ def parse_quantity(value: str | float | int, unit: str, *, field: str = "value")
 
 def quantity_of_text(text: str, *, field: str = "value") -> pint.Quantity:
     """The pint quantity written in ``text``, parsed by the bounded grammar of :mod:`machdyn.quantity_text`
-    (pint only looks up each unit name), so that any text is decided in well under a millisecond."""
+    (pint only looks up each unit name), so that any text is decided in well under a millisecond.
+
+    Parameters
+    ----------
+    text : str
+        A quantity such as ``"1.2 t/m^3"``.
+    field : str
+        Name of the input, used in error messages.
+
+    Returns
+    -------
+    pint.Quantity
+        The magnitude in the units written (not converted).
+
+    Examples
+    --------
+    >>> quantity_of_text("1.2 t/m^3").to("kg/m^3").magnitude
+    1200.0
+    >>> quantity_of_text("10**6 N")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+        ...
+    machdyn.errors.InputError: The value is not a quantity with a unit; got '10**6 N' (a number may not be ...
+    """
     from .quantity_text import QuantitySyntaxError, parse
 
     try:
@@ -148,7 +170,25 @@ def quantity_of_text(text: str, *, field: str = "value") -> pint.Quantity:
 
 
 def unit_of_text(text: str, *, field: str = "unit") -> pint.Unit:
-    """The pint unit written in ``text`` (``"kg*m^2"``), parsed like a quantity's unit; no number allowed."""
+    """The pint unit written in ``text`` (``"kg*m^2"``), parsed like a quantity's unit; no number allowed.
+
+    Parameters
+    ----------
+    text : str
+        A unit such as ``"N*m*s/rad"`` (``""`` for a pure number).
+    field : str
+        Name of the input, used in error messages.
+
+    Returns
+    -------
+    pint.Unit
+        The unit.
+
+    Examples
+    --------
+    >>> unit_of_text("kg*m^2") == ureg.kilogram * ureg.metre**2
+    True
+    """
     from .quantity_text import QuantitySyntaxError, parse
 
     try:
