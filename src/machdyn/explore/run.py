@@ -146,7 +146,7 @@ def store_in_file(problem: Any, source: str | os.PathLike | None) -> Path | None
     except (OSError, RuntimeError):  # a loop of symbolic links
         raise ProblemFileError([("sweep.store", f"'{name[:80]}' is a loop of symbolic links")]) from None
     if not resolved.is_relative_to(inside) or resolved == inside:
-        raise ProblemFileError([("sweep.store", f"must name a folder inside the problem file's folder {base} "
+        raise ProblemFileError([("sweep.store", f"must name a folder inside the problem file's folder {inside} "
                                                 f"(e.g. \"press.parquet\"); got '{name[:80]}'")])
     return folder
 
