@@ -27,6 +27,8 @@ from .store import PartitionStore
 #: ``progress(designs done, designs in all)``
 Progress = Callable[[int, int], None]
 
+#: Times a partition lost with a worker is sent again before the run gives up.
+RETRIES = 3
 #: Seconds allowed to reach a Dask scheduler (TCP connection and Dask's handshake) and for it to have a worker.
 CONNECT_TIMEOUT = 10.0
 
@@ -268,29 +270,48 @@ def run_tasks(task: Callable, plan: Any, items: Iterator[tuple[int, Any]], finis
         running = as_completed()
         futures: dict[Any, tuple[int, Any]] = {}
 
+        attempts: dict[int, int] = {}
+
+        def send(index: int, values: Any) -> None:
+            # Scattered, and released with the result: designs passed inline to submit stay referenced by the
+            # client until it closes, so its memory would grow with the number of partitions (measured).
+            for attempt in range(RETRIES + 1):
+                try:
+                    sent = client.scatter(values, hash=False)
+                    future = client.submit(task, shared, index, sent, pure=False)
+                    break
+                except _lost_cluster() as exc:  # the worker chosen went away: wait for another
+                    if attempt == RETRIES:
+                        raise OperationalError(f"the Dask cluster lost its workers while partition {index} was "
+                                               f"sent ({type(exc).__name__}); run again to resume") from None
+                    time.sleep(1.0)
+            futures[future] = (index, values, sent)
+            running.add(future)
+
         def submit() -> bool:
             item = next(source, None)
             if item is None:
                 return False
-            index, values = item
-            # Scattered, and released with the result: designs passed inline to submit stay referenced by the
-            # client until it closes, so its memory would grow with the number of partitions (measured).
-            sent = client.scatter(values, hash=False)
-            future = client.submit(task, shared, index, sent, pure=False)
-            futures[future] = (index, sent)
-            running.add(future)
+            send(*item)
             return True
 
         for _ in range(2 * width):
             if not submit():
                 break
         for future in running:
-            index, sent = futures.pop(future)
+            index, values, sent = futures.pop(future)
             try:
                 columns = future.result()
-            except _lost_cluster() as exc:
-                raise OperationalError(f"the Dask cluster was lost while computing partition {index} "
-                                       f"({type(exc).__name__}: {str(exc)[:160]}); run again to resume") from None
+            except _lost_work() as exc:
+                # A worker was lost with this partition (or its designs): the partition is computed again.
+                future.release()
+                sent.release()
+                attempts[index] = attempts.get(index, 0) + 1
+                if attempts[index] > RETRIES:
+                    raise OperationalError(f"the Dask cluster lost partition {index} {attempts[index]} times "
+                                           f"({type(exc).__name__}: {str(exc)[:160]}); run again to resume") from None
+                send(index, values)
+                continue
             future.release()
             sent.release()
             finished(index, columns)
@@ -300,6 +321,13 @@ def run_tasks(task: Callable, plan: Any, items: Iterator[tuple[int, Any]], finis
         if cluster is not None:
             cluster.close()
     return where
+
+
+def _lost_work() -> tuple[type[BaseException], ...]:
+    """What a partition's result raises when a worker went away with it (or with its designs)."""
+    from concurrent.futures import CancelledError
+
+    return (*_lost_cluster(), CancelledError)
 
 
 def _lost_cluster() -> tuple[type[BaseException], ...]:
