@@ -1,6 +1,7 @@
 """The ``machdyn`` command: run and check problem files, copy out the shipped examples.
 
-Exit codes: 0 success; 1 the analysis failed on a valid problem (or the outputs could not be written);
+Exit codes: 0 success; 1 the analysis failed on a valid problem, or an operational failure (a scheduler that does
+not answer, a full disk, a folder that may not be written, another run on the same folder, --max-time reached);
 2 bad input (the problem file, the command line); 3 the design fails one of its checks (the outputs are
 written and the failed checks listed); 4 an internal error (a short message; the traceback goes to a log file,
 or to the terminal with ``--debug``). Messages go to stderr, without a traceback. Heavy libraries (pandas,
@@ -259,15 +260,21 @@ def run(
                                       "(tcp://host:8786).")
     ] = None,
     open_report: Annotated[bool, typer.Option("--open", help="Open report.html in the web browser.")] = False,
+    max_time: Annotated[
+        float | None, typer.Option("--max-time", min=1.0, metavar="SECONDS", show_default=False,
+                                   help="Stop the run after SECONDS (exit 1; the partitions of an exploration "
+                                        "finished by then are kept, and a rerun resumes from them).")
+    ] = None,
     debug: DebugOpt = False,
 ) -> None:
     """Analyse a problem file, print a summary table and write the outputs."""
     if workers is not None and scheduler is not None:
         raise _fail("error: give --workers or --scheduler, not both", EXIT_BAD_INPUT)
+    _check_where(workers, scheduler)
     try:
         from .explore.execution import execution
 
-        with execution(workers=workers, scheduler=scheduler, store=out / "sweep.parquet"), _run_guard(out):
+        with execution(workers=workers, scheduler=scheduler, store=out / "sweep.parquet"), _run_guard(out, max_time):
             _run(file, out, format, quiet)
     except typer.Exit as done:
         if open_report and done.exit_code == EXIT_CHECKS_FAILED:  # the outputs are written: show them
@@ -290,14 +297,35 @@ def _interrupted(stop: KeyboardInterrupt, out: Path) -> typer.Exit:
     return _fail(f"interrupted: {said}; {kept}" if said else f"interrupted: {kept}", 130)
 
 
+def _check_where(workers: int | None, scheduler: str | None) -> None:
+    """Exit 2 for a scheduler address that is none, or more local workers than the machine allows."""
+    if scheduler is not None:
+        from .problem.sweep import scheduler_address_error
+
+        problem = scheduler_address_error(scheduler)
+        if problem is not None:
+            raise _fail(f"error: --scheduler {problem}", EXIT_BAD_INPUT)
+    if workers is not None:
+        from .explore.execution import workers_error
+
+        problem = workers_error(workers)
+        if problem is not None:
+            raise _fail(f"error: --workers {problem}", EXIT_BAD_INPUT)
+
+
 class _Terminated(KeyboardInterrupt):
     """SIGTERM, turned into an interruption so that a terminated run cleans up as after Ctrl-C."""
 
 
+class _TimedOut(KeyboardInterrupt):
+    """--max-time elapsed, turned into an interruption so that the run cleans up as after Ctrl-C."""
+
+
 @contextlib.contextmanager
-def _run_guard(out: Path):
-    """Hold the output folder's lock for the whole run (a second run on it exits 1 at once) and turn SIGTERM
-    into an interruption, so that staging folders are removed; an operational failure exits 1 in one line."""
+def _run_guard(out: Path, max_time: float | None = None):
+    """Hold the output folder's lock for the whole run (a second run on it exits 1 at once), turn SIGTERM and
+    the end of ``max_time`` [s] into an interruption, so that staging folders are removed; an operational
+    failure exits 1 in one line."""
     import signal
 
     from .errors import OperationalError
@@ -317,20 +345,35 @@ def _run_guard(out: Path):
     def terminated(signum, frame):
         raise _Terminated()
 
-    previous = None
+    def timed_out(signum, frame):
+        raise _TimedOut()
+
+    previous = alarm = None
     if threading.current_thread() is threading.main_thread():
         previous = signal.signal(signal.SIGTERM, terminated)
+        if max_time is not None:
+            alarm = signal.signal(signal.SIGALRM, timed_out)
+            signal.setitimer(signal.ITIMER_REAL, max_time)
     try:
         yield
     except OperationalError as exc:
         raise _fail(f"error: {exc}", EXIT_FAILED) from None
     except KeyboardInterrupt as stop:
+        if isinstance(stop, _TimedOut):
+            raise _fail(f"stopped: the run took longer than --max-time {max_time:g} s (the finished partitions of "
+                        "an exploration are kept; run again to resume)", EXIT_FAILED) from None
         if not isinstance(stop, _Terminated) and not isinstance(stop.__cause__, _Terminated):
+            if isinstance(stop.__cause__, _TimedOut):
+                raise _fail(f"stopped: the run took longer than --max-time {max_time:g} s (the finished partitions "
+                            "of an exploration are kept; run again to resume)", EXIT_FAILED) from None
             raise  # Ctrl-C: said by run's own handler
         said = getattr(stop, "message", None)
         raise _fail(f"stopped: the run was terminated; {said}" if said else
                     "stopped: the run was terminated; run it again to resume", 143) from None
     finally:
+        if alarm is not None:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, alarm)
         if previous is not None:
             signal.signal(signal.SIGTERM, previous)
         release_lock(out / LOCK)
@@ -410,7 +453,11 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
                 progress.step(f"design sweep {100 * done // max(total, 1)}%")
 
             deferred: list = []
-            with execution(progress=partitions, deferred=deferred):
+            def estimate(text: str) -> None:
+                if not quiet:
+                    typer.echo(f"note: {text}", err=True)
+
+            with execution(progress=partitions, deferred=deferred, estimate=estimate):
                 result = run_problem(loaded, step=progress.step)
         except OperationalError as exc:
             raise _fail(f"error: {exc}", EXIT_FAILED) from None
@@ -420,6 +467,10 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
             raise _fail(f"error: the analysis of {file} failed: {exc}", EXIT_FAILED) from None
         except (ArithmeticError, ValueError, FloatingPointError, MemoryError) as exc:
             raise _engine_error(exc, file) from None
+        except OSError as exc:  # a file or folder of the run that cannot be read or written: operational
+            where = f" '{exc.filename}'" if exc.filename else ""
+            raise _fail(f"error: the run of {file} failed on{where or ' a file'}: {exc.strerror or exc}",
+                        EXIT_FAILED) from None
         try:
             paths = result.write(out, step=progress.step, watch_stamp=watch_stamp, folders=deferred)
         except OperationalError as exc:

@@ -39,12 +39,17 @@ class ProblemFileError(InputError):
     """A problem file has one or more mistakes; ``problems`` lists each as (path, message)."""
 
     def __init__(self, problems: list[tuple[str, str]], source: str | None = None):
-        self.problems = list(problems)
+        # bounded: a key of half a megabyte in a file must not make a message of a megabyte
+        self.problems = [(_cut(str(path), 200), _cut(str(message), 1000)) for path, message in problems]
         self.source = source
         where = f" in {source}" if source else ""
         lines = [f"{len(self.problems)} problem(s){where}:"]
         lines += [f"  {path}: {message}" if path else f"  {message}" for path, message in self.problems]
         super().__init__("\n".join(lines))
+
+
+def _cut(text: str, limit: int) -> str:
+    return text if len(text) <= limit else f"{text[: limit - 40]}... ({len(text):,} characters)"
 
 
 class AnalysisError(MachdynError):

@@ -151,19 +151,23 @@ def quantity_of_text(text: str, *, field: str = "value") -> pint.Quantity:
     Parameters
     ----------
     text : str
-        A number and a unit, e.g. ``"45 mm"`` or ``"2.5e3 N*m"``.
+        A quantity such as ``"1.2 t/m^3"``.
     field : str
-        Name of the input, for the error message.
+        Name of the input, used in error messages.
 
     Returns
     -------
     pint.Quantity
-        The quantity (a pure number where ``text`` has no unit).
+        The magnitude in the units written (not converted).
 
     Examples
     --------
-    >>> float(quantity_of_text("45 mm").to("m").magnitude)
-    0.045
+    >>> quantity_of_text("1.2 t/m^3").to("kg/m^3").magnitude
+    1200.0
+    >>> quantity_of_text("10**6 N")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+        ...
+    machdyn.errors.InputError: The value is not a quantity with a unit; got '10**6 N' (a number may not be ...
     """
     from .quantity_text import QuantitySyntaxError, parse
 
@@ -180,9 +184,9 @@ def unit_of_text(text: str, *, field: str = "unit") -> pint.Unit:
     Parameters
     ----------
     text : str
-        A unit expression, e.g. ``"kg*m^2"``.
+        A unit such as ``"N*m*s/rad"`` (``""`` for a pure number).
     field : str
-        Name of the input, for the error message.
+        Name of the input, used in error messages.
 
     Returns
     -------
@@ -191,7 +195,7 @@ def unit_of_text(text: str, *, field: str = "unit") -> pint.Unit:
 
     Examples
     --------
-    >>> unit_of_text("kg*m^2") == ureg.Unit("kilogram * meter ** 2")
+    >>> unit_of_text("kg*m^2") == ureg.kilogram * ureg.metre**2
     True
     """
     from .quantity_text import QuantitySyntaxError, parse

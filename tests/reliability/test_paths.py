@@ -117,3 +117,11 @@ def test_a_long_header_is_not_echoed_in_full(tmp_path):
     with pytest.raises(InputError) as caught:
         read_record(path)
     assert len(str(caught.value)) < 400
+
+
+def test_a_huge_unknown_key_gives_a_short_message(tmp_path):
+    path = tmp_path / "p.toml"
+    path.write_text(f'{ "k" * 500_000 } = 1\n' + (ROOT / "examples" / "four_bar.toml").read_text())
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 2 and "unknown key" in result.output
+    assert len(result.output) < 3000

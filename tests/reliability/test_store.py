@@ -229,3 +229,23 @@ def test_sigterm_stops_a_run_and_leaves_no_staging_folder(tmp_path):
     assert "stopped: the run was terminated" in err
     assert "Traceback" not in err
     assert _leftovers(out) == []
+
+
+def test_a_worker_killed_during_a_run_has_its_partitions_retried(tmp_path):
+    from distributed import LocalCluster
+
+    text = sweep_text(samples=4096, partition=128).replace("positions = 36", "positions = 180")
+    expected = _reference(text, tmp_path / "reference.parquet")
+    killed = []
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                      dashboard_address="127.0.0.1:0", silence_logs=50) as cluster:
+        pids = [nanny.process.pid for nanny in cluster.workers.values()]
+
+        def kill_one(index: int) -> None:  # after the first partition comes back, one worker dies (SIGKILL)
+            if not killed:
+                os.kill(pids[0], signal.SIGKILL)
+                killed.append(index)
+
+        done = explore(text, store=tmp_path / "dask", scheduler=cluster.scheduler_address, on_partition=kill_one)
+    assert killed and done.computed == 32
+    pd.testing.assert_frame_equal(done.frame(), expected)

@@ -16,6 +16,7 @@ from .drives import ConstantSpeed
 from .equivalent import EquivalentMachine
 from .simulate import (
     RTOL,
+    EvaluationBudget,
     NotSettledError,
     SteadyState,
     _added_inertia,
@@ -23,8 +24,13 @@ from .simulate import (
     _Model,
     _out,
     _stall_message,
+    budgeted,
     steady_state,
 )
+
+#: Evaluations of the equation of motion allowed for a start-up from rest (the examples need at most about
+#: 25,000 for all their start-ups together): a start-up that creeps near a stall is stopped within seconds.
+MAX_START_UP_EVALUATIONS = 400_000
 
 
 @dataclass(frozen=True)
@@ -130,11 +136,18 @@ def start_up(machine: EquivalentMachine, drive, flywheel=0.0, *, phi0: float = 0
     t0, y0 = 0.0, ys[0][:, 0]
     settled_at = np.full(n, np.nan)
     chunk = 5.0 * period_t
+    rhs = budgeted(model.time_rhs, MAX_START_UP_EVALUATIONS)
     while t0 < limit:
         t1 = min(t0 + chunk, limit)
         t_eval = np.linspace(t0, t1, int(samples_per_cycle * (t1 - t0) / period_t) + 2)[1:]
-        sol = solve_ivp(model.time_rhs, (t0, t1), y0, method="DOP853", rtol=rtol, atol=1e-10 * float(np.max(wm)),
-                        t_eval=t_eval, events=rollback)
+        try:
+            sol = solve_ivp(rhs, (t0, t1), y0, method="DOP853", rtol=rtol, atol=1e-10 * float(np.max(wm)),
+                            t_eval=t_eval, events=rollback)
+        except EvaluationBudget:
+            raise NotSettledError(
+                f"The start-up was stopped after {MAX_START_UP_EVALUATIONS:,} steps of the integrator at {t0:.4g} s "
+                f"without reaching steady running: the machine creeps near a stall or accelerates without end "
+                f"({_stall_message(machine, drive, n, wm, steady.phi)}).") from None
         if sol.status == 1:
             raise InputError(
                 f"The machine rolls back after {sol.t[-1]:.3g} s of start-up: the drive's torque at low speed does not "

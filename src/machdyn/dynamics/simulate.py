@@ -33,6 +33,29 @@ class NotSettledError(MachdynError):
     """The simulation did not reach a periodic steady state (or steady running) within its limits."""
 
 
+#: Evaluations of the equation of motion allowed for one cycle of the steady-state shooting: the examples need
+#: at most about 5,000; a machine that nearly stalls (its speed creeping towards zero, where the integrator's
+#: steps shrink without end) or runs away is stopped here, within seconds, instead of integrating for minutes.
+MAX_EVALUATIONS_PER_CYCLE = 100_000
+
+
+class EvaluationBudget(Exception):
+    """Raised inside an integration that used up its evaluations (see :func:`budgeted`)."""
+
+
+def budgeted(rhs, limit: int):
+    """``rhs`` counting its calls; the ``limit``-th call raises :class:`EvaluationBudget`."""
+    calls = [0]
+
+    def counted(*args):
+        calls[0] += 1
+        if calls[0] > limit:
+            raise EvaluationBudget
+        return rhs(*args)
+
+    return counted
+
+
 def _designs(machine: EquivalentMachine, *values) -> int:
     sizes = {machine.designs} | {int(np.size(v)) for v in values if np.ndim(v) > 0}
     sizes.discard(1)
@@ -438,7 +461,15 @@ def _solve(solve_ivp, rhs, span, y0, rtol, model, n, machine, drive, grid, t_eva
     with np.errstate(over="ignore"), warnings.catch_warnings():
         # LSODA warns where it cannot continue past a stall; the stall is reported below
         warnings.simplefilter("ignore", UserWarning)
-        sol = solve_ivp(rhs, span, y0, method=method, rtol=rtol, atol=atol, t_eval=t_eval)
+        try:
+            sol = solve_ivp(budgeted(rhs, MAX_EVALUATIONS_PER_CYCLE), span, y0, method=method, rtol=rtol, atol=atol,
+                            t_eval=t_eval)
+        except EvaluationBudget:
+            raise InputError(
+                f"The machine nearly stalls: one cycle of its motion needed more than {MAX_EVALUATIONS_PER_CYCLE:,} "
+                "steps of the integrator (its speed creeps towards zero somewhere in the cycle); "
+                + _stall_message(machine, drive, n, np.nan, grid[:-1])
+                + ". Choose a larger motor, a higher gear ratio or a larger flywheel.") from None
     low = sol.y[:n] <= 1e-12 * np.max(np.abs(y0[:n]))
     if np.any(low) or not sol.success or not np.all(np.isfinite(sol.y)):
         cols = np.flatnonzero(low.any(axis=0))

@@ -27,6 +27,58 @@ from .store import PartitionStore
 #: ``progress(designs done, designs in all)``
 Progress = Callable[[int, int], None]
 
+#: Times a partition lost with a worker is sent again before the run gives up.
+RETRIES = 3
+#: Seconds allowed to reach a Dask scheduler (TCP connection and Dask's handshake) and for it to have a worker.
+CONNECT_TIMEOUT = 10.0
+
+
+def worker_limit() -> int:
+    """The most local worker processes a run may start: the machine's processors (``os.cpu_count()``; each
+    worker computes with one thread, so more only add memory), or ``MACHDYN_MAX_WORKERS`` where it is set."""
+    import os
+
+    given = os.environ.get("MACHDYN_MAX_WORKERS", "").strip()
+    if given.isdigit() and int(given) >= 1:
+        return int(given)
+    return max(1, os.cpu_count() or 1)
+
+
+def workers_error(workers: int) -> str | None:
+    """Why ``workers`` local processes are refused on this machine, or None."""
+    limit = worker_limit()
+    if workers > limit:
+        return (f"must be at most {limit} (the processors of this machine; set MACHDYN_MAX_WORKERS to allow more); "
+                f"got {workers}")
+    return None
+
+
+def probe_scheduler(address: str, timeout: float = CONNECT_TIMEOUT) -> None:
+    """Connect to ``address`` and complete Dask's handshake within ``timeout`` seconds, or raise
+    :class:`~machdyn.errors.OperationalError` saying why (nothing listens there, or what answers is not Dask)."""
+    import asyncio
+
+    from distributed.comm import connect
+
+    from ..errors import OperationalError
+
+    async def handshake() -> None:
+        comm = await connect(address, timeout=timeout)
+        await comm.close()
+
+    from concurrent.futures import ThreadPoolExecutor
+
+    try:
+        with ThreadPoolExecutor(1) as pool:  # its own event loop, also where the caller runs one (a notebook)
+            pool.submit(asyncio.run, asyncio.wait_for(handshake(), timeout)).result()
+    except TimeoutError:
+        raise OperationalError(f"no Dask scheduler answered at {address} within {timeout:g} s (nothing listens "
+                               f"there, or what listens is not a Dask scheduler)") from None
+    except OSError as exc:
+        raise OperationalError(f"cannot reach the Dask scheduler at {address}: {str(exc)[:200]}") from None
+    except Exception as exc:  # noqa: BLE001 - a peer that is not Dask can make the handshake fail in many ways
+        raise OperationalError(f"what answers at {address} is not a Dask scheduler ({type(exc).__name__})") from None
+
 
 @dataclass(frozen=True)
 class Execution:
@@ -38,6 +90,8 @@ class Execution:
     scheduler: str | None = None
     store: str | Path | None = None
     progress: Progress | None = None
+    #: Called with a line of text estimating the time (and memory) of a long run before it starts.
+    estimate: Callable[[str], None] | None = None
     #: When a list: an exploration of a changed problem is not swapped into its store when it completes; its
     #: (pending folder, store) is appended here, for the caller to swap in with its other outputs.
     deferred: list | None = None
@@ -58,11 +112,38 @@ def execution(**settings: Any) -> Iterator[Execution]:
     now = replace(current(), **{k: v for k, v in settings.items() if v is not None})
     if now.workers is not None and now.workers < 1:
         raise InputError(f"workers must be >= 1; got {now.workers}.")
+    if now.workers is not None and workers_error(now.workers):
+        raise InputError(f"workers {workers_error(now.workers)}.")
     token = _CURRENT.set(now)
     try:
         yield now
     finally:
         _CURRENT.reset(token)
+
+
+#: Runs estimated to take less than this [s] are not announced.
+ANNOUNCE_AFTER = 30.0
+
+
+def announce_estimate(seconds: float, what: str, memory: float | None = None) -> None:
+    """Tell the user (through the execution settings' ``estimate``) how long ``what`` will take, if long."""
+    report = current().estimate
+    if report is None or not seconds >= ANNOUNCE_AFTER:
+        return
+    text = f"{what}: about {_duration(seconds)}"
+    if memory is not None:
+        text += f" and {memory / 1e6:,.0f} MB per process"
+    report(text + " (stop it with Ctrl-C; run machdyn with --max-time to bound it)")
+
+
+def _duration(seconds: float) -> str:
+    if seconds < 120:
+        return f"{seconds:.0f} s"
+    if seconds < 7200:
+        return f"{seconds / 60:.0f} min"
+    if seconds < 172800:
+        return f"{seconds / 3600:.1f} h"
+    return f"{seconds / 86400:.1f} days"
 
 
 @contextlib.contextmanager
@@ -152,47 +233,85 @@ def run_tasks(task: Callable, plan: Any, items: Iterator[tuple[int, Any]], finis
         return "in process"
     from distributed import Client, LocalCluster, as_completed
 
+    from ..errors import OperationalError
+
     cluster = None
     if scheduler is not None:
-        client = Client(scheduler, timeout="30s")
+        probe_scheduler(scheduler)
+        try:
+            client = Client(scheduler, timeout=f"{CONNECT_TIMEOUT:g}s")
+            client.wait_for_workers(1, timeout=CONNECT_TIMEOUT)
+        except (OSError, TimeoutError) as exc:
+            raise OperationalError(f"the Dask scheduler at {scheduler} has no worker, or was lost, within "
+                                   f"{CONNECT_TIMEOUT:g} s ({type(exc).__name__})") from None
         where = f"Dask cluster at {scheduler}"
     else:
         assert workers is not None
+        problem = workers_error(workers)
+        if problem is not None:
+            raise InputError(f"workers {problem}.")
         import dask
 
         # Dask sets MALLOC_TRIM_THRESHOLD_ in its workers, which turns off glibc's adaptive mmap threshold: every
         # large NumPy temporary of the engine is then mapped and unmapped anew, about 4x slower (measured).
-        with dask.config.set({"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None}):
-            cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
-                                   dashboard_address="127.0.0.1:0", silence_logs=40)
-        client = Client(cluster)
+        try:
+            with dask.config.set({"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None}):
+                cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                       dashboard_address="127.0.0.1:0", silence_logs=40)
+            client = Client(cluster)
+        except (OSError, TimeoutError) as exc:
+            raise OperationalError(f"the local Dask cluster of {workers} worker(s) could not start: "
+                                   f"{str(exc)[:200]}") from None
         where = f"local Dask cluster of {workers} worker process(es)"
     try:
         width = max(1, len(client.scheduler_info().get("workers", {})) or (workers or 1))
         shared = client.scatter(plan, broadcast=True)
         source = iter(items)
         running = as_completed()
-        futures: dict[Any, tuple[int, Any]] = {}
+        futures: dict[Any, tuple[int, Any, Any]] = {}
+
+        attempts: dict[int, int] = {}
+
+        def send(index: int, values: Any) -> None:
+            # Scattered, and released with the result: designs passed inline to submit stay referenced by the
+            # client until it closes, so its memory would grow with the number of partitions (measured).
+            for attempt in range(RETRIES + 1):
+                try:
+                    sent = client.scatter(values, hash=False)
+                    future = client.submit(task, shared, index, sent, pure=False)
+                    break
+                except _lost_cluster() as exc:  # the worker chosen went away: wait for another
+                    if attempt == RETRIES:
+                        raise OperationalError(f"the Dask cluster lost its workers while partition {index} was "
+                                               f"sent ({type(exc).__name__}); run again to resume") from None
+                    time.sleep(1.0)
+            futures[future] = (index, values, sent)
+            running.add(future)
 
         def submit() -> bool:
             item = next(source, None)
             if item is None:
                 return False
-            index, values = item
-            # Scattered, and released with the result: designs passed inline to submit stay referenced by the
-            # client until it closes, so its memory would grow with the number of partitions (measured).
-            sent = client.scatter(values, hash=False)
-            future = client.submit(task, shared, index, sent, pure=False)
-            futures[future] = (index, sent)
-            running.add(future)
+            send(*item)
             return True
 
         for _ in range(2 * width):
             if not submit():
                 break
         for future in running:
-            index, sent = futures.pop(future)
-            columns = future.result()
+            index, values, sent = futures.pop(future)
+            try:
+                columns = future.result()
+            except _lost_work() as exc:
+                # A worker was lost with this partition (or its designs): the partition is computed again.
+                future.release()
+                sent.release()
+                attempts[index] = attempts.get(index, 0) + 1
+                if attempts[index] > RETRIES:
+                    raise OperationalError(f"the Dask cluster lost partition {index} {attempts[index]} times "
+                                           f"({type(exc).__name__}: {str(exc)[:160]}); run again to resume") from None
+                send(index, values)
+                continue
             future.release()
             sent.release()
             finished(index, columns)
@@ -202,3 +321,18 @@ def run_tasks(task: Callable, plan: Any, items: Iterator[tuple[int, Any]], finis
         if cluster is not None:
             cluster.close()
     return where
+
+
+def _lost_work() -> tuple[type[BaseException], ...]:
+    """What a partition's result raises when a worker went away with it (or with its designs)."""
+    from concurrent.futures import CancelledError
+
+    return (*_lost_cluster(), CancelledError)
+
+
+def _lost_cluster() -> tuple[type[BaseException], ...]:
+    """The exceptions by which Dask says a worker or the scheduler went away (not an error of the task)."""
+    from distributed.comm.core import CommClosedError
+    from distributed.scheduler import KilledWorker
+
+    return (KilledWorker, CommClosedError, OSError, TimeoutError)

@@ -167,9 +167,33 @@ def store_in_file(problem: Any, source: str | os.PathLike | None) -> Path | None
     except (OSError, RuntimeError):  # a loop of symbolic links
         raise ProblemFileError([("sweep.store", f"'{name[:80]}' is a loop of symbolic links")]) from None
     if not resolved.is_relative_to(inside) or resolved == inside:
-        raise ProblemFileError([("sweep.store", f"must name a folder inside the problem file's folder {base} "
+        raise ProblemFileError([("sweep.store", f"must name a folder inside the problem file's folder {inside} "
                                                 f"(e.g. \"press.parquet\"); got '{name[:80]}'")])
     return folder
+
+
+def _estimate(plan: ExplorePlan, workers: int | None) -> None:
+    """Announce the time and memory of a long exploration, from the time of a small batch of its designs."""
+    import time
+
+    from ..linkage.sweep import DEFAULT_CHUNK_POSITIONS
+    from .execution import ANNOUNCE_AFTER, announce_estimate, current
+
+    if current().estimate is None:
+        return
+    batch = next(partition_designs(plan.space, [0]))[1][:32]
+    began = time.perf_counter()
+    evaluate_designs(plan, batch)
+    per_design = (time.perf_counter() - began) / max(batch.shape[0], 1)
+    seconds = per_design * plan.space.size / max(workers or 1, 1)
+    if seconds < ANNOUNCE_AFTER:
+        return
+    positions = plan.angles.size
+    # a worker holds its partition's results and the engine's chunk of positions (about 60 doubles each)
+    memory = 8.0 * (60 * min(plan.space.partition * positions, DEFAULT_CHUNK_POSITIONS)
+                    + 32 * plan.space.partition)
+    announce_estimate(seconds, f"{plan.space.size:,} designs x {positions:,} crank positions on "
+                               f"{workers or 1} process(es)", memory)
 
 
 def _where(workers: int | None, scheduler: str | None, spec: Any) -> tuple[int | None, str | None]:
@@ -216,6 +240,7 @@ def explore(
     info = {"method": plan.space.method, "seed": plan.space.seed, "designs": plan.space.size,
             "partition": plan.space.partition, "partitions": plan.space.partitions,
             "columns": {k: {"unit": u, "label": label} for k, (u, label) in units.items()}}
+    _estimate(plan, workers)
     keeper = PartitionStore(folder, plan.fingerprint, info)
     report = progress if progress is not None else settings.progress
     try:

@@ -25,9 +25,12 @@ def check(problem: Any, table: Any, source: str | None = None) -> list[tuple[str
     that cannot be built, the objective."""
     if not table.is_exploration:
         return one_quantity.check(problem, table)
+    from .execution import workers_error
     from .run import plan_exploration, store_in_file
 
     problems: list[tuple[str, str]] = []
+    if table.workers is not None and workers_error(table.workers):
+        problems.append(("sweep.workers", str(workers_error(table.workers))))
     try:
         store_in_file(problem, source)
     except ProblemFileError as exc:

@@ -188,6 +188,10 @@ class PartitionStore:
                 os.close(fd)
             os.replace(tmp, target)
             fsync_folder(self.folder)
+        except OSError as exc:  # a full disk, a folder no longer writable: the partitions written stay
+            tmp.unlink(missing_ok=True)
+            raise OperationalError(f"cannot write partition {index} to the exploration store '{self.folder}': "
+                                   f"{exc.strerror or exc}; run again to resume") from None
         except BaseException:
             tmp.unlink(missing_ok=True)
             raise

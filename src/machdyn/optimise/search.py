@@ -121,8 +121,16 @@ def differential_evolution(evaluator: Evaluator, *, population: int, generations
     history: dict[str, list] = {"evaluations": [], "best": [], "feasible": []}
 
     def func(xt):  # scipy hands the population as (V, S)
+        first = not history["feasible"]
+        began = time.perf_counter()
         costs = evaluator.scalar_cost(np.asarray(xt).T)
         history["feasible"].append(float(np.mean(costs < INFEASIBLE)))
+        if first:  # the first generation's time, times the generations: the estimate of the whole search
+            from ..explore.execution import announce_estimate
+
+            per = time.perf_counter() - began
+            announce_estimate(per * (generations + 1), f"an optimisation of {generations:,} generations of "
+                              f"{np.asarray(xt).shape[1]:,} designs ({per:.2g} s per generation)")
         return costs
 
     def callback(intermediate_result):

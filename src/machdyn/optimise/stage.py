@@ -40,8 +40,13 @@ def _text(key: str) -> str:
 
 def check(problem: Any, table: OptimiseSpec, source: str | None = None) -> list[tuple[str, str]]:
     """The table's mistakes that need the problem: unknown quantities and results, bounds in wrong units."""
+    from ..limits import held_values_error
+    from ..problem.build import crank_angles
     from .study import setup
 
+    too_many = held_values_error(table.population, crank_angles(problem).size)
+    if too_many is not None:
+        return [("optimise.population", too_many)]
     try:
         setup(problem, table)
     except ProblemFileError as exc:

@@ -57,6 +57,14 @@ def variants(problem: Any) -> tuple[Any, list[Any]]:
 
 
 def check(problem: Any, _table: Any, source: str | None = None) -> list[tuple[str, str]]:
+    from ..limits import held_values_error
+    from ..problem.build import crank_angles
+
+    table = problem.sweep
+    count = len(table.values) if table.values is not None else (table.count or 0)
+    too_many = held_values_error(count, crank_angles(problem).size)
+    if too_many is not None:  # refused before the variants are built
+        return [("sweep.values" if table.values is not None else "sweep.count", too_many)]
     try:
         _, mechs = variants(problem)
     except ProblemFileError as exc:

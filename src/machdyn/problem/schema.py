@@ -237,8 +237,9 @@ class CustomSpec(Spec):
     name: Name | None = None
     ground: dict[Name, Point]
     crank: DriverSpec
-    bodies: list[BodySpec] = Field(min_length=1)
-    dyads: list[Annotated[DyadSpec, Field(discriminator="type")]] = []
+    # at most limits.MAX_DYADS = 64 dyads (a planar machine has a handful): more would take minutes to solve
+    bodies: list[BodySpec] = Field(min_length=1, max_length=130)
+    dyads: list[Annotated[DyadSpec, Field(discriminator="type")]] = Field([], max_length=64)
 
 
 MECHANISM_SPECS: dict[str, type[Spec]] = {**STANDARD_SPECS, "custom": CustomSpec}

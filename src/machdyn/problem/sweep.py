@@ -83,6 +83,18 @@ class QuantitySpec(BaseModel):
     count: int | None = Field(None, ge=2, le=1_000_000, strict=True)
 
 
+def scheduler_address_error(value: str) -> str | None:
+    """Why ``value`` is not the address of a Dask scheduler (``tcp://host:8786``, ``tls://[::1]:8786``), or None."""
+    shown = value if len(value) <= 80 else value[:77] + "..."
+    match = re.fullmatch(r"(tcp|tls)://(\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9](?:[A-Za-z0-9.-]{0,251}[A-Za-z0-9])?):(\d{1,5})",
+                         value)
+    if match is None:
+        return f"must be the address of a Dask scheduler, like 'tcp://host:8786'; got '{shown}'"
+    if not 1 <= int(match.group(3)) <= 65535:
+        return f"must have a port from 1 to 65535, like 'tcp://host:8786'; got '{shown}'"
+    return None
+
+
 class SweepSpec(BaseModel):
     """``[sweep]``: the quantity to vary and its values (a list, or start/stop/count evenly spaced), or several
     quantities explored together (``quantities``, ``method``, ``samples``, ``seed``), and where and how the
@@ -113,8 +125,9 @@ class SweepSpec(BaseModel):
     @field_validator("scheduler")
     @classmethod
     def _an_address(cls, value: str | None) -> str | None:
-        if value is not None and not re.fullmatch(r"[a-z]+://\S+", value):
-            raise ValueError(f"must be the address of a Dask scheduler, like 'tcp://host:8786'; got '{value}'")
+        problem = scheduler_address_error(value) if value is not None else None
+        if problem is not None:
+            raise ValueError(problem)
         return value
 
     @model_validator(mode="after")

@@ -198,7 +198,7 @@ def resolve_record(name: str, source=None) -> Path:
         candidate = base / relative
     else:
         base = Path(source).parent if source is not None else Path.cwd()
-        where = f"the problem file's folder {base}"
+        where = f"the problem file's folder {base.resolve()}"
         candidate = Path(name) if Path(name).is_absolute() else base / name
     try:
         resolved = candidate.resolve()
