@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError, check_finite, check_positive
+from ..vibration.frame import mount_sum
 
 __all__ = ["Mount6", "Frame6", "modes6", "Response6", "steady_response"]
 
@@ -96,12 +97,10 @@ class Frame6:
         return np.array([m.influence for m in self.mounts])
 
     def stiffness_matrix(self) -> np.ndarray:
-        b = self.influence_matrix()
-        return b.T @ (np.array([m.stiffness for m in self.mounts])[:, None] * b)
+        return mount_sum(self.mounts, "stiffness")
 
     def damping_matrix(self) -> np.ndarray:
-        b = self.influence_matrix()
-        return b.T @ (np.array([m.damping for m in self.mounts])[:, None] * b)
+        return mount_sum(self.mounts, "damping")
 
     @staticmethod
     def point_matrix(point) -> np.ndarray:

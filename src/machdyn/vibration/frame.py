@@ -228,6 +228,15 @@ def rope(name, position, length, supported_mass, axial_stiffness, *, angle=np.pi
     )
 
 
+def mount_sum(mounts, rate: str) -> np.ndarray:
+    """Σ r_i b_i b_iᵀ over ``mounts``: the frame's stiffness (``rate="stiffness"``) or damping (``"damping"``)
+    matrix from each mount's line rate r_i and influence vector b_i (its deflection per unit frame coordinate;
+    the assembly of springs in parallel, e.g. Harris' Shock and Vibration Handbook, ch. 3 "Vibration of a
+    resiliently supported rigid body"). Serves the planar frame (b of 3 entries) and the frame in space (6)."""
+    b = np.array([m.influence for m in mounts])
+    return b.T @ (np.array([getattr(m, rate) for m in mounts])[:, None] * b)
+
+
 @dataclass(frozen=True)
 class Frame:
     """A rigid planar frame on mounts (definition only; see :func:`machdyn.vibration.modes.modes` and
@@ -288,13 +297,11 @@ class Frame:
 
     def stiffness_matrix(self) -> np.ndarray:
         """K = sum k_i b_i b_i^T [N/m, N, N m]."""
-        b = self.influence_matrix()
-        return b.T @ (np.array([m.stiffness for m in self.mounts])[:, None] * b)
+        return mount_sum(self.mounts, "stiffness")
 
     def damping_matrix(self) -> np.ndarray:
         """C = sum c_i b_i b_i^T [N s/m, N s, N m s]."""
-        b = self.influence_matrix()
-        return b.T @ (np.array([m.damping for m in self.mounts])[:, None] * b)
+        return mount_sum(self.mounts, "damping")
 
     @staticmethod
     def point_matrix(point) -> np.ndarray:
