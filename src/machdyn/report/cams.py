@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 from matplotlib.ticker import MultipleLocator
 
+from .cam_view import cam_view
 from .html import _render, figures_html, format_value, rows_html
 from .plotkit import PALETTE, _finish
 
@@ -176,7 +177,8 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
     if rows:
         html += "<p>Jumps in the program (the fundamental law of cam design asks for none):</p>" + rows_html(
             [[row[0]] for row in rows], ("jump",))
-    return [("Cam", html + figures_html(figs))]
+    moving = cam_view(r)
+    return [("Cam", html + (str(moving) if moving is not None else "") + figures_html(figs))]
 
 
 def shaft_sections(outcome: Any) -> list[tuple[str, str]]:

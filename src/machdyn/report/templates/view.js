@@ -77,9 +77,12 @@
     });
     var jointDots = {}, dotOrder = [];
     s.bodies.forEach(function (b) {
-      b.points.forEach(function (p) {
+      b.points.forEach(function (p, k) {
         var key = b.name + "." + p;
-        jointDots[key] = el("circle", { r: r, "class": "mdview-point", "data-point": key }, g);
+        if (b.dots === false) return;  /* a body drawn by its outline alone (a cam's profile) */
+        /* a roller: its first point drawn as a circle of its own radius, in metres */
+        var radius = (b.roller && k === 0) ? b.roller : r;
+        jointDots[key] = el("circle", { r: radius, "class": "mdview-point", "data-point": key }, g);
         dotOrder.push(key);
       });
     });
@@ -125,6 +128,7 @@
       });
       dotOrder.forEach(function (key) {
         var p = pos(key, i), dot = jointDots[key];
+        if (!dot) return;
         if (p[0] === null) { dot.setAttribute("visibility", "hidden"); return; }
         dot.setAttribute("visibility", "visible");
         dot.setAttribute("cx", p[0]);
