@@ -62,8 +62,8 @@ def cam_scene(result: Any) -> dict[str, Any] | None:
         points["follower.right"] = [list(np.full(frames.size, half)), list(y)]
         points["stem.face"] = [list(np.zeros(frames.size)), list(y)]
         points["stem.top"] = [list(np.zeros(frames.size)), list(y + stem)]
-        bodies = [{"name": "follower", "shape": "link", "colour": "#d62728", "points": ["left", "right"],
-                   "angle": None}]
+        bodies: list[dict[str, Any]] = [{"name": "follower", "shape": "link", "colour": "#d62728",
+                                         "points": ["left", "right"], "angle": None}]
         path_x = 0.0
     else:
         x, y = fixed[0][frames], fixed[1][frames]
