@@ -66,6 +66,9 @@ def flywheel_for_drive(machine: Any, drive: Any, target: float, constant_torque:
     constant_torque : the flywheel sized for a constant-torque drive [kg·m²] > 0 (the search starts there).
     points : inertias per vectorised batch of steady states.
 
+    Where the motor's slip alone keeps δ under the target down to 3 % of ``constant_torque``, that smallest
+    flywheel is returned with the δ it gives.
+
     Raises
     ------
     InputError : no inertia within 0.03 to 16 times ``constant_torque`` reaches the target.
@@ -74,6 +77,7 @@ def flywheel_for_drive(machine: Any, drive: Any, target: float, constant_torque:
         raise InputError(f"Sizing a flywheel for a drive needs 0 < delta < 1 and a constant-torque flywheel > 0; "
                          f"got {target!r} and {constant_torque!r} kg*m^2.")
     found: tuple[np.ndarray, np.ndarray] | None = None
+    below: tuple[float, float] | None = None  # the smallest inertia that ran, where every δ was under the target
     for lo, hi in GRIDS:
         grid = constant_torque * np.geomspace(lo, hi, points)
         deltas = _deltas(machine, drive, grid)
@@ -85,6 +89,12 @@ def flywheel_for_drive(machine: Any, drive: Any, target: float, constant_torque:
         if deltas.min() <= target <= deltas.max():
             found = (grid, deltas)
             break
+        if deltas.max() < target and (below is None or grid[0] < below[0]):
+            below = (float(grid[0]), float(deltas[0]))
+    if found is None and below is not None and below[0] <= GRIDS[-1][0] * constant_torque * (1 + 1e-12):
+        # the motor's slip alone holds δ under the target down to the smallest flywheel tried (3 % of the
+        # constant-torque one): that flywheel is reported, with the δ it gives
+        return MotorFlywheel(inertia=below[0], delta=below[1], constant_torque=float(constant_torque))
     if found is None:
         raise InputError(f"No flywheel between {0.03 * constant_torque:.4g} and {16 * constant_torque:.4g} kg*m^2 "
                          f"gives the coefficient of speed fluctuation {target:g} with this drive.")

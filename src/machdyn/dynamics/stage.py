@@ -338,6 +338,7 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     else:
         flywheel = float(sizing.exact[0] if table.method == "exact" else sizing.classic[0])
     mean_torque = float(sizing.drive_torque[0])
+    size_failed = None
     try:
         drive = _drive(table.motor, machine, flywheel, speed, mean_torque)
         for_motor = None
@@ -346,9 +347,11 @@ def run_flywheel(ctx: StageContext) -> Outcome:
 
             try:
                 for_motor = flywheel_for_drive(machine, drive, table.delta, flywheel)
+                flywheel = for_motor.inertia
             except InputError as exc:
-                raise ProblemFileError([("flywheel.size_for", str(exc))]) from None
-            flywheel = for_motor.inertia
+                # a design outcome, not bad input: the file is valid, no flywheel meets delta with this motor;
+                # the constant-torque flywheel is kept and the design fails its check
+                size_failed = f"flywheel sized for the motor (size_for = \"motor\"): {str(exc).rstrip('.')}"
         steady = steady_state(machine, drive, flywheel,
                               mean_speed=speed if table.motor.kind == "constant_torque" else None)
     except ProblemFileError:
@@ -361,6 +364,8 @@ def run_flywheel(ctx: StageContext) -> Outcome:
                        failed_checks=(str(exc).rstrip("."),))
     warnings = list(steady.warnings)
     failed: list[str] = [*steady.warnings, *_overloaded(drive, steady, table.motor), *_off_speed(steady, speed)]
+    if size_failed is not None:
+        failed.append(size_failed)
     run = None
     if table.start_up and table.motor.kind != "constant_torque":
         try:
