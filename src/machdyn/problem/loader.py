@@ -169,6 +169,8 @@ def kind_of(data: dict[str, Any], source: str | None = None) -> str:
         )
     problems = []
     for key in data:
+        if key in CAPABILITIES:  # a known table of its own (e.g. [shaft_cam]), not a misspelt main table
+            continue
         hint = did_you_mean(key, list(KINDS))
         if hint:
             problems.append((key, f"unknown table '{key}'{hint}"))
