@@ -156,10 +156,10 @@ def test_max_time_stops_a_run_with_exit_1_and_keeps_the_finished_partitions(writ
 
 
 def test_a_long_exploration_prints_an_estimate_before_it_starts(write):
-    text = sweep_text(samples=65536, partition=256).replace("positions = 36", "positions = 360")
+    text = sweep_text(samples=1048576, partition=4096).replace("positions = 36", "positions = 360")
     path = write(text)
     # the estimate comes before any design is computed: --max-time ends the run soon after (exit 1), or a fast
     # machine finishes it (exit 0); either way the note was printed first
     code, _, err, _ = machdyn("run", str(path), "--out", str(path.parent / "out"), "--max-time", "5", timeout=300)
     assert code in (0, 1), err
-    assert "note: 65,536 designs x 360 crank positions on 1 process(es): about" in err and "MB per process" in err
+    assert "note: 1,048,576 designs x 360 crank positions on 1 process(es): about" in err and "MB per process" in err
