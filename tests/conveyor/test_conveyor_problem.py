@@ -141,7 +141,9 @@ def test_failing_check_is_reported_once_in_one_wording(base_problem):
     assert not result.passed
     assert outcome.failed_checks == ("Screw speed n <= k/sqrt(D): 150 rpm > limit 100.6 rpm",)
     assert not any("Screw speed" in w for w in outcome.warnings)
-    assert "FAIL" in run_conveyor(validate(base_problem)).to_html_section()
+    from machdyn.report.conveyor import conveyor_html_section
+
+    assert "FAIL" in conveyor_html_section(run_conveyor(validate(base_problem)).result)
 
 
 def test_html_section_is_self_contained(base_problem):

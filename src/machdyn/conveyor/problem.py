@@ -74,11 +74,6 @@ class ConveyorRun:
             out.append(dataclasses.replace(c, value=value, limit=limit, unit=unit, display=unit))
         return tuple(out)
 
-    def to_html_section(self) -> str:
-        from ..report.conveyor import conveyor_html_section
-
-        return conveyor_html_section(self.result)
-
 
 def run_conveyor(problem: ConveyorProblem) -> ConveyorRun:
     """Analyse the conveyor (see :func:`machdyn.conveyor.evaluate.evaluate`)."""
