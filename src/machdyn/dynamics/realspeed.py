@@ -12,6 +12,7 @@ inertia torque of the flywheel and rotor, T = M_drive - (J_f + J_rotor) epsilon 
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from functools import partial
 
 import numpy as np
 
@@ -56,7 +57,7 @@ def _speed_loads_as_engine_loads(mech, loads, omega_of_phi):
             def fx(phi, load=load, axis=0):
                 return _speed_force(mech, load, phi, omega_of_phi)[axis]
 
-            forces.append(PointForce(load.name, load.point, fx, lambda phi, f=fx: f(phi, axis=1)))
+            forces.append(PointForce(load.name, load.point, fx, partial(fx, axis=1)))
         elif isinstance(load, LinearDamper):
             for sign, point in ((1.0, load.point_1), (-1.0, load.point_2)):
                 if split_ref(point)[0] == GROUND:
@@ -72,7 +73,7 @@ def _speed_loads_as_engine_loads(mech, loads, omega_of_phi):
                     f = sign * load.coefficient * rate
                     return f * (ex if axis == 0 else ey)
 
-                forces.append(PointForce(f"{load.name}@{point}", point, comp, lambda phi, c=comp: c(phi, axis=1)))
+                forces.append(PointForce(f"{load.name}@{point}", point, comp, partial(comp, axis=1)))
         elif isinstance(load, RotaryDamper):
             def torque(phi, load=load, sign=1.0):
                 kin = kinematics(mech, phi, omega_of_phi(phi), 0.0)
@@ -84,7 +85,7 @@ def _speed_loads_as_engine_loads(mech, loads, omega_of_phi):
             torques.append(BodyTorque(load.name, load.body, torque))
             if load.relative_to != GROUND:
                 torques.append(BodyTorque(f"{load.name}@{load.relative_to}", load.relative_to,
-                                          lambda phi, t=torque: -t(phi)))
+                                          partial(torque, sign=-1.0)))
     return tuple(forces), tuple(torques)
 
 

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from typing import Any
 
 import numpy as np
 
@@ -84,12 +85,12 @@ class _Model:
         smooth = (machine.inertia, machine.potential, machine.damping)
         self.fast = all(isinstance(c, FourierCurve) for c in smooth) and not machine.forces
         # a moment that is not a Fourier series (a load switched on and off) is evaluated on its own
-        self.extra = None if isinstance(machine.moment, FourierCurve) else machine.moment
+        self.extra: Any = None if isinstance(machine.moment, FourierCurve) else machine.moment
         if self.fast:
             zero = FourierCurve.from_samples(np.zeros((1, 2)), machine.period)
             self._stack(machine.inertia, machine.potential, machine.moment if self.extra is None else zero,
                         machine.damping)
-        self.torque_slope = getattr(drive, "torque_slope", None)
+        self.torque_slope: Any = getattr(drive, "torque_slope", None)
         self.one = bool(self.fast and n == 1 and self.torque_slope is not None
                         and all(np.ndim(v) == 0 for v in drive._constants[:4]))
         if self.one:
@@ -116,8 +117,9 @@ class _Model:
     def curves(self, phi):
         """J (without the added inertia), J', position moment and reduced damping at phi (N,)."""
         m = self.m
-        if self.fast and self.extra is None and all(c._on_nodes(phi) for c in (m.inertia, m.potential, m.moment,
-                                                                                m.damping)):
+        curves = (m.inertia, m.potential, m.moment, m.damping)
+        if self.fast and self.extra is None and all(isinstance(c, FourierCurve) and c._on_nodes(phi)
+                                                    for c in curves):
             # the sample nodes themselves: one inverse FFT per curve
             return m.inertia(phi), m.inertia.derivative(phi), m.position_moment(phi), m.damping(phi)
         if self.fast:

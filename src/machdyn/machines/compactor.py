@@ -505,7 +505,7 @@ class Compactor:
         forces = tuple(mech.forces)
         if self.q_force != (0.0, 0.0):
             forces += (PointForce("Q", "coupler.P", self.q_force[0], self.q_force[1], self.q_active),)
-        return replace(mech, forces=forces, gravity=tuple(self.gravity))
+        return replace(mech, forces=forces, gravity=(float(self.gravity[0]), float(self.gravity[1])))
 
     def kinematics(self, phi):
         """Engine kinematics at crank angles phi [rad] with speed omega1."""

@@ -60,7 +60,7 @@ def double_tamper(r_main, l_main, r_aux, l_aux, phase=np.pi, *, offset_main=0.0,
     )
     coms = {"rod_1": beam_coms[0], "rod_2": beam_coms[1]}
     bodies = tuple(
-        replace(b, com=tuple(float(c) for c in coms[b.name])) if b.name in coms else b for b in mech.bodies
+        replace(b, com=(float(coms[b.name][0]), float(coms[b.name][1]))) if b.name in coms else b for b in mech.bodies
     )
     crank = mech.body(mech.crank.body)
     sleeves = tuple(
