@@ -34,6 +34,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
+from .clutch import Stop, stop_machine
 
 #: the flywheel counts as back at speed within this share of its running speed
 RECOVERED = 1e-3
@@ -222,31 +223,16 @@ def single_stroke(machine: Any, motor_torque: Any, *, drive_inertia: float, driv
             return (t, float(y[1]), float(y[1] if locked else y[2]))
         raise InputError(f"The engaged run does not reach the crank angle {np.degrees(angle):g}°.")
 
-    def stop_from(angle: float):
+    def stop_from(angle: float) -> Stop:
+        """The brake's stop from the engaged run's state at the crank angle ``angle``."""
         _t, w2, _w1 = engaged_at(angle)
-
-        def rhs(_t, y):
-            phi, w = y
-            return [w, (m(phi, w) - 0.5 * dj2(phi) * w * w - brake_torque) / j2(phi)]
-
-        def at_rest(_t, y):
-            return y[1]
-
-        at_rest.terminal = True  # type: ignore[attr-defined]
-        at_rest.direction = -1  # type: ignore[attr-defined]
-        horizon = 20.0 * j2(angle) * max(w2, 1e-9) / brake_torque + 1.0
-        sol = solve_ivp(rhs, (0.0, horizon), [angle, w2], events=at_rest, rtol=1e-9, atol=1e-10,
-                        max_step=horizon / 400)
-        if sol.status != 1:
-            raise InputError(f"The brake torque {brake_torque:g} N*m (at the crank) does not stop the machine: the "
-                             "loads drive it harder than the brake brakes.")
-        return sol
+        return stop_machine(machine, driven_inertia, max(w2, 1e-12), brake_torque, angle)
 
     if brake_angle is None:
         lo, hi = start_angle + np.pi, end_angle - 1e-6
 
         def miss(angle: float) -> float:
-            return float(stop_from(angle).y[0, -1]) - end_angle
+            return float(stop_from(angle).phi[-1]) - end_angle
 
         if miss(lo) > 0:
             raise InputError(f"The brake torque {brake_torque:g} N*m (at the crank) cannot stop the crank within "
@@ -259,7 +245,7 @@ def single_stroke(machine: Any, motor_torque: Any, *, drive_inertia: float, driv
     stop = stop_from(brake_angle)
     keep = t_in <= t_b
     t_stop = t_b + stop.t
-    stop_time = float(stop.t[-1])
+    stop_time = stop.time
 
     # ---- clutch out: the motor alone brings the driving side back to speed --------------------------------
     def drive_rhs(_t, y):
@@ -285,8 +271,8 @@ def single_stroke(machine: Any, motor_torque: Any, *, drive_inertia: float, driv
     tail = rec_t > stroke_end
 
     t = np.concatenate([t_in[keep], t_stop, rec_t[tail]])
-    phi = np.concatenate([y_in[0][keep], stop.y[0], np.full(int(tail.sum()), stop.y[0, -1])])
-    omega = np.concatenate([y_in[1][keep], stop.y[1], np.zeros(int(tail.sum()))])
+    phi = np.concatenate([y_in[0][keep], stop.phi, np.full(int(tail.sum()), stop.phi[-1])])
+    omega = np.concatenate([y_in[1][keep], stop.omega, np.zeros(int(tail.sum()))])
     omega_drive = np.concatenate([y_in[2][keep], w1_during_stop, rec_w[tail]])
     phase = np.concatenate([phase_in[keep], np.full(t_stop.size, "braking"), np.full(int(tail.sum()), "recovery")])
     engaged = int(keep.sum())
@@ -296,7 +282,7 @@ def single_stroke(machine: Any, motor_torque: Any, *, drive_inertia: float, driv
     t_e = t[:engaged]
     rel = np.abs(omega_drive[:engaged] - omega[:engaged])
     clutch_energy = float(np.trapezoid(np.where(slip_mask, slip_torque * rel, 0.0), t_e))
-    brake_energy = float(brake_torque * (stop.y[0, -1] - brake_angle))
+    brake_energy = float(brake_torque * (stop.phi[-1] - brake_angle))
     # work of the motor on the driving side and of the machine's loads on the crank, over the stroke
     motor_power = np.array([tm(w) * w for w in omega_drive])
     load_power = np.array([m(p, w) * w for p, w in zip(phi, omega, strict=True)])
@@ -305,9 +291,9 @@ def single_stroke(machine: Any, motor_torque: Any, *, drive_inertia: float, driv
     load_work = float(np.trapezoid(load_power[upto], t[upto]))
     return SingleStroke(
         t=t, phi=phi, omega=omega, omega_drive=omega_drive, clutch_torque=clutch, phase=phase, running_speed=speed,
-        start_angle=float(start_angle), brake_angle=float(brake_angle), rest_angle=float(stop.y[0, -1]),
+        start_angle=float(start_angle), brake_angle=float(brake_angle), rest_angle=float(stop.phi[-1]),
         slip_time=slip_time, clutch_energy=clutch_energy, brake_energy=brake_energy, stroke_time=stroke_end,
-        stop_time=stop_time, stop_angle=float(stop.y[0, -1] - brake_angle),
+        stop_time=stop_time, stop_angle=float(stop.phi[-1] - brake_angle),
         lowest_drive_speed=float(np.min(omega_drive)), recovery_time=max(0.0, recovery_end - stroke_end),
         motor_work=motor_work, load_work=load_work,
     )
