@@ -113,15 +113,10 @@ class DesignSpace:
     def problem_at(self, x) -> Any:
         """The validated problem of one design (a vector of V values, SI): written out and read back, so
         every field's rule is checked as for a file."""
-        from ..problem.dumper import dump_problem
-        from ..problem.loader import load_problem
+        from ..problem.paths import design_problem
 
-        candidate = self.problem
-        if "optimise" in type(candidate).model_fields:
-            candidate = candidate.model_copy(update={"optimise": None})  # the design itself, ready to run
-        for path, arr in self.values(np.asarray(x, dtype=float)[None, :]).items():
-            candidate = assign(candidate, path, float(arr[0]))
-        return load_problem(dump_problem(candidate))
+        values = self.values(np.asarray(x, dtype=float)[None, :])
+        return design_problem(self.problem, {path: float(arr[0]) for path, arr in values.items()})
 
     def population(self, population) -> Population:
         """The stacked engine model of a population (N x V, SI): one build for the standard mechanisms, a

@@ -12,6 +12,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from ..problem.paths import design_problem
+
 #: At most this many designs of a design space are analysed for playback (each adds ~100 kB to the report).
 MAX_VIEWS = 6
 
@@ -27,20 +29,6 @@ class DesignView:
     mechanism: Any
     analysis: Any
     about: tuple[float, float]
-
-
-def design_problem(problem: Any, values: Mapping[str, float]) -> Any:
-    """The validated problem of one design: ``problem`` with each quantity path of ``values`` set to its SI
-    value and without its design-space tables (``[sweep]``, ``[optimise]``), so that it runs on its own."""
-    from ..problem.dumper import dump_problem
-    from ..problem.loader import load_problem
-    from ..problem.paths import assign
-
-    fields = type(problem).model_fields
-    candidate = problem.model_copy(update={t: None for t in ("sweep", "optimise") if t in fields})
-    for path, value in values.items():
-        candidate = assign(candidate, path, float(value))
-    return load_problem(dump_problem(candidate))
 
 
 def analysed(problem: Any, label: str, design: int = -1) -> DesignView | None:

@@ -107,3 +107,17 @@ def value_at(model: Any, path: str) -> float:
         if index is not None:
             node = node[index]
     return float(node)
+
+
+def design_problem(problem: Any, values: typing.Mapping[str, float]) -> Any:
+    """The validated problem of one design: ``problem`` with each quantity path of ``values`` set to its SI
+    value and without its design-space tables (``[sweep]``, ``[optimise]``), written out and read back so that
+    every field's rule is checked as for a file; it runs on its own."""
+    from .dumper import dump_problem
+    from .loader import load_problem
+
+    fields = type(problem).model_fields
+    candidate = problem.model_copy(update={t: None for t in ("sweep", "optimise") if t in fields})
+    for path, value in values.items():
+        candidate = assign(candidate, path, float(value))
+    return load_problem(dump_problem(candidate))
