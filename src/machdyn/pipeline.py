@@ -13,11 +13,14 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, TypeVar
 
 from pydantic import BaseModel
 
 from .results.labels import Label
+
+#: The type of an earlier stage's result that a capability reads (see :meth:`StageContext.result_of`).
+R = TypeVar("R")
 
 #: A progress callback: called with the label of the step about to start.
 Step = Callable[[str], None]
@@ -74,6 +77,19 @@ class StageContext:
     outcomes: Mapping[str, Outcome]
     source: str | None = None
 
+    def result_of(self, table: str, expected: type[R]) -> R | None:
+        """The result of the earlier stage of ``table`` (a capability's table or the kind's name), typed: None
+        when the file has no such table or the stage produced no result object (a flywheel with no steady state,
+        an optimisation with no feasible design). The reading capability lists ``table`` in its ``after``; a
+        result of another type than the contract ``expected`` is a programming error (TypeError)."""
+        outcome = self.outcomes.get(table)
+        if outcome is None or outcome.results is None:
+            return None
+        if not isinstance(outcome.results, expected):
+            raise TypeError(f"the [{table}] stage returned {type(outcome.results).__name__}, "
+                            f"not the {expected.__name__} its readers expect")
+        return outcome.results
+
 
 @dataclass(frozen=True)
 class Capability:
@@ -90,7 +106,9 @@ class Capability:
     check : ``(problem, table, source) -> [(path, message), ...]``: the validations of the table that need more
         than its schema (run by ``check`` and by ``run`` alike); ``source`` is the problem file's path (None for
         TOML text), against whose folder relative file names resolve.
-    after : tables whose outcome this stage reads (they run first).
+    after : tables whose outcome this stage reads (they run first), through :meth:`StageContext.result_of`.
+    result_type : the type of the stage's ``Outcome.results`` (the typed contract its readers and its report rely
+        on); the runner checks it after every run. None only for a stage whose results object is None.
     """
 
     table: str
@@ -102,6 +120,7 @@ class Capability:
     report: str | None = None
     check: Callable[[Any, Any, str | None], list[tuple[str, str]]] | None = None
     after: tuple[str, ...] = ()
+    result_type: type | tuple[type, ...] | None = None
 
 
 @dataclass(frozen=True)

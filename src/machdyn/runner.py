@@ -223,7 +223,11 @@ def run_problem(problem: Any, *, text: str | None = None, step: Step = no_step) 
             continue
         step(cap.step)
         ctx = StageContext(loaded.spec, table, first.mechanism, first.analysis, dict(outcomes), loaded.source)
-        outcomes[cap.table] = cap.run(ctx)
+        outcomes[cap.table] = done = cap.run(ctx)
+        if cap.result_type is not None and done.results is not None and not isinstance(done.results,
+                                                                                       cap.result_type):
+            raise TypeError(f"the [{cap.table}] stage returned {type(done.results).__name__}, not its declared "
+                            f"result type {cap.result_type}")
         known |= cap.labels
     values: dict[str, Any] = {}
     units: dict[str, str] = {}

@@ -6,6 +6,7 @@ reachable from problem files, the check, the run, the summary, results.json and 
 
 from __future__ import annotations
 
+import re
 import sys
 import types
 
@@ -52,6 +53,7 @@ def _run(ctx: StageContext) -> Outcome:
 CAPABILITY = Capability(
     table="torque_limit", schema=LimitTable, run=_run, step="torque limit",
     labels={"torque_limit.utilisation": Label("Peak driving torque / allowed", "")},
+    result_type=float,
 )
 
 
@@ -114,6 +116,53 @@ def test_every_registered_entry_imports_and_names_its_table():
         cap = kinds.capability(table)
         assert cap.table == table and cap.kinds, table
         assert all(k in kinds.KINDS for k in cap.kinds)
+
+
+def test_every_capability_declares_the_type_of_its_result_and_names_the_tables_it_reads():
+    """The typed contracts between capabilities: every stage declares what its ``Outcome.results`` is, and a
+    stage that reads another's result (``ctx.result_of``) lists that table in ``after``."""
+    import inspect
+
+    for table in kinds.CAPABILITIES:
+        cap = kinds.capability(table)
+        assert cap.result_type is not None, table
+        read = set(re.findall(r'result_of\("(\w+)"', inspect.getsource(cap.run)))
+        read -= set(kinds.KINDS)  # the kind's own result is always there first
+        assert read <= set(cap.after) | {cap.table}, (table, read, cap.after)
+
+
+def test_result_of_gives_the_typed_result_none_when_absent_and_refuses_another_type():
+    from machdyn.balancing.frame import BalanceRun
+
+    run = BalanceRun("crank", None, None, None, "")
+    ctx = StageContext(None, None, None, None, {"balance": Outcome(results=run), "flywheel": Outcome()})
+    assert ctx.result_of("balance", BalanceRun) is run
+    assert ctx.result_of("flywheel", BalanceRun) is None  # a stage that produced no result object
+    assert ctx.result_of("frame", BalanceRun) is None  # no such table in the file
+    with pytest.raises(TypeError, match="BalanceRun"):
+        StageContext(None, None, None, None, {"balance": Outcome(results=1.0)}).result_of("balance", BalanceRun)
+
+
+def test_the_runner_refuses_a_result_of_another_type_than_declared(registered, monkeypatch, tmp_path):
+    from dataclasses import replace
+
+    wrong = types.ModuleType("example_wrong_type")
+    wrong.CAPABILITY = replace(CAPABILITY, result_type=str)
+    monkeypatch.setitem(sys.modules, "example_wrong_type", wrong)
+    monkeypatch.setitem(kinds.CAPABILITIES, "torque_limit", "example_wrong_type:CAPABILITY")
+    for cached in (kinds.capabilities_for, kinds.problem_model, kinds.capability):
+        cached.cache_clear()
+    with pytest.raises(TypeError, match="torque_limit"):
+        run_problem(FILE + '[torque_limit]\nlimit = "500 N*m"\n')
+
+
+def test_every_balancing_method_of_the_schema_has_one_entry():
+    from typing import get_args
+
+    from machdyn.balancing.methods import METHODS
+    from machdyn.balancing.stage import BalanceSpec
+
+    assert set(get_args(BalanceSpec.model_fields["method"].annotation)) == set(METHODS)
 
 
 def test_the_cli_knows_no_kind_by_name():

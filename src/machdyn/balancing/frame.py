@@ -146,8 +146,10 @@ def centre_of_mass(kin) -> tuple[np.ndarray, np.ndarray]:
 
 @dataclass(frozen=True)
 class BalanceRow:
-    """One line of a before/after table: quantity, SI unit, value before, value after."""
+    """One line of a before/after table: its ``key`` (the name of the result, ``balance.<key>_before`` /
+    ``_after``), the quantity's text, SI unit, value before, value after."""
 
+    key: str
     quantity: str
     unit: str
     before: float
@@ -167,11 +169,12 @@ class BalanceTable:
 
     rows: tuple[BalanceRow, ...]
 
-    def row(self, quantity: str) -> BalanceRow:
+    def row(self, key: str) -> BalanceRow:
+        """The row of ``key`` (one of :data:`COMPARED`'s keys: ``rms_force``, ``peak_force``...)."""
         for r in self.rows:
-            if r.quantity == quantity:
+            if r.key == key:
                 return r
-        raise InputError(f"No row '{quantity}' in the balance table; rows: {', '.join(r.quantity for r in self.rows)}.")
+        raise KeyError(f"no row '{key}' in the balance table; rows: {', '.join(r.key for r in self.rows)}")
 
     def as_records(self) -> list[dict]:
         return [
@@ -180,19 +183,26 @@ class BalanceTable:
         ]
 
 
+#: The rows of a before/after table: key (= the :class:`FrameLoads` property it reads, but ``com_travel`` for
+#: ``com_spread``), text, SI unit.
+COMPARED = (
+    ("rms_force", "RMS shaking force", "N"),
+    ("peak_force", "peak shaking force", "N"),
+    ("rms_moment", "RMS shaking moment", "N*m"),
+    ("peak_moment", "peak shaking moment", "N*m"),
+    ("rms_torque", "RMS driving torque", "N*m"),
+    ("torque_fluctuation", "driving torque fluctuation", "N*m"),
+    ("peak_joint_force", "peak joint force", "N"),
+    ("com_travel", "centre-of-mass travel", "m"),
+)
+
+
 def compare(before: FrameLoads, after: FrameLoads) -> BalanceTable:
-    """The standard before/after table of two :class:`FrameLoads`."""
-    pairs = (
-        ("RMS shaking force", "N", lambda f: f.rms_force),
-        ("peak shaking force", "N", lambda f: f.peak_force),
-        ("RMS shaking moment", "N*m", lambda f: f.rms_moment),
-        ("peak shaking moment", "N*m", lambda f: f.peak_moment),
-        ("RMS driving torque", "N*m", lambda f: f.rms_torque),
-        ("driving torque fluctuation", "N*m", lambda f: f.torque_fluctuation),
-        ("peak joint force", "N", lambda f: f.peak_joint_force),
-        ("centre-of-mass travel", "m", lambda f: f.com_spread),
-    )
-    return BalanceTable(tuple(BalanceRow(q, u, fn(before), fn(after)) for q, u, fn in pairs))
+    """The standard before/after table of two :class:`FrameLoads` (rows :data:`COMPARED`)."""
+    def value(loads: FrameLoads, key: str) -> float:
+        return loads.com_spread if key == "com_travel" else getattr(loads, key)
+
+    return BalanceTable(tuple(BalanceRow(k, q, u, value(before, k), value(after, k)) for k, q, u in COMPARED))
 
 
 @dataclass(frozen=True)
@@ -207,3 +217,23 @@ class BalanceResult:
     table: BalanceTable
     counterweights: tuple = ()
     notes: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class BalanceRun:
+    """The outcome of ``[balance]`` (the contract its readers, ``[frame]`` and the report, rely on): the method,
+    the balance ``result`` (:class:`BalanceResult`, or :class:`~machdyn.balancing.robust.RobustResult` over
+    operating states), the trade-off curve of the crank method (or None), the table's reference reduction and its
+    source, and the balanced fraction of the crank method."""
+
+    method: str
+    result: Any
+    tradeoff: Any
+    reference_reduction: float | None
+    reference_source: str
+    fraction: float | None = None
+
+    @property
+    def model(self) -> Mechanism | None:
+        """The single balanced mechanism (None for a balance over several operating states)."""
+        return getattr(self.result, "model", None)

@@ -79,7 +79,10 @@ def pivot_point(mech: Mechanism, body: str) -> str | None:
     return None
 
 
-def _reference(mech: Mechanism, slot: CounterweightSlot) -> tuple[np.ndarray, bool]:
+def reference_point(mech: Mechanism, slot: CounterweightSlot) -> tuple[np.ndarray, bool]:
+    """(the point [m, body frame] a slot's counterweight is placed about, whether that point is the body's pivot
+    on the frame): the slot's ``about`` point, else the pivot, else the body's origin; InputError for a point the
+    body lacks."""
     body = mech.body(slot.body)
     name = slot.about or pivot_point(mech, slot.body)
     if name is None:
@@ -122,7 +125,7 @@ def force_model(mech: Mechanism, slots: Sequence[Slot], crank_angle, speed: floa
             names.append(f"{pm.name}.mass")
             index.append((i, "m"))
             continue
-        ref, fixed = _reference(mech, slot)
+        ref, fixed = reference_point(mech, slot)
         R = kin.local_point(slot.body, tuple(ref))
         X = kin.local_point(slot.body, tuple(ref + (1.0, 0.0)))
         Y = kin.local_point(slot.body, tuple(ref + (0.0, 1.0)))
@@ -218,7 +221,7 @@ def _decode(mech: Mechanism, slots: Sequence[Slot], lin: LinearForceModel, x: np
         if isinstance(slot, MassSlot):
             values[i] = (v["m"], None)
             continue
-        ref, fixed = _reference(mech, slot)
+        ref, fixed = reference_point(mech, slot)
         first = np.array([v["mu"], v["mv"]])
         if fixed:
             if slot.radius is None:
@@ -288,7 +291,7 @@ def optimise_counterweights(mech: Mechanism, slots: Sequence[Slot], weights: Wei
             bounds.append(slot.mass_bounds)
             refs.append(None)
         else:
-            refs.append(_reference(mech, slot)[0])
+            refs.append(reference_point(mech, slot)[0])
             bounds += [slot.mass_bounds, slot.radius_bounds, (None, None)]  # the angle wraps: no bound
     start = _start(mech, slots, phi, speed, before, bounds)
 

@@ -24,8 +24,8 @@ from .general import (
     Slot,
     _decode,
     _point_masses,
-    _reference,
     force_model,
+    reference_point,
     solve_bounded,
     unknown_bounds,
 )
@@ -105,7 +105,7 @@ def robust_counterweights(states: Sequence[OperatingState], slots: Sequence[Slot
         check_positive(f"weight of state '{s.name}'", s.weight, allow_zero=True)
     for slot in slots:
         if isinstance(slot, CounterweightSlot):
-            _reference(states[0].mechanism, slot)
+            reference_point(states[0].mechanism, slot)
     phi = cycle(120) if crank_angle is None else np.asarray(crank_angle, dtype=float)
     before = tuple(frame_loads(s.mechanism, phi, s.speed) for s in states)
     models = [_turned(force_model(s.mechanism, slots, phi, s.speed, b), slots, s)
@@ -202,7 +202,7 @@ def _turn_values(values: dict, slots: Sequence[Slot], state: OperatingState) -> 
     for i, slot in enumerate(slots):
         if isinstance(slot, CounterweightSlot) and _on_crank(slot, state):
             mass, pos = values[i]
-            ref, _ = _reference(state.mechanism, slot)
+            ref, _ = reference_point(state.mechanism, slot)
             d = np.asarray(pos) - ref
             out[i] = (mass, ref + np.array([c * d[0] + s * d[1], -s * d[0] + c * d[1]]))
     return out

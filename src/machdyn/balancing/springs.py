@@ -112,7 +112,9 @@ class SpringDesign:
     rms_after: float
 
 
-def _geometry(kin, body, point, anchor):
+def spring_geometry(kin, body, point, anchor):
+    """(length [m], d length / d crank angle [m/rad]) over the cycle of a spring from ``point`` [m, body frame]
+    on ``body`` to ``anchor`` [m, frame]; InputError where its length comes to zero."""
     P = kin.local_point(body, tuple(point))
     dx, dy = P.x - anchor[0], P.y - anchor[1]
     length = np.hypot(dx, dy)
@@ -140,7 +142,7 @@ def spring_compensation(mech: Mechanism, body: str, point, anchor, crank_angle=N
     phi = cycle() if crank_angle is None else np.asarray(crank_angle, dtype=float)
     before = frame_loads(mech, phi, speed)
     kin = kinematics(replace(mech, gravity=(0.0, 0.0)), phi, speed, 0.0)
-    length, rate = _geometry(kin, body, np.asarray(point, dtype=float), np.asarray(anchor, dtype=float))
+    length, rate = spring_geometry(kin, body, np.asarray(point, dtype=float), np.asarray(anchor, dtype=float))
     k, l0, rms = best_stiffness(before.torque, length, rate, stiffness_bounds, free_length_bounds)
     balanced = _with_spring(mech, body, point, anchor, k, l0, name)
     after = frame_loads(balanced, phi, speed)
@@ -167,7 +169,7 @@ def optimise_spring(mech: Mechanism, body: str, point_bounds, anchor_bounds, cra
 
     def objective(z):
         try:
-            length, rate = _geometry(kin, body, z[:2], z[2:])
+            length, rate = spring_geometry(kin, body, z[:2], z[2:])
         except InputError:
             return float(np.std(base.torque)) * 10.0
         return best_stiffness(base.torque, length, rate, bounds.get("stiffness_bounds", (0.0, np.inf)),

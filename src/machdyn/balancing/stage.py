@@ -20,7 +20,6 @@ values, minimising the ``mode = "sum"`` or ``"worst"`` over them); ``"spring"`` 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Any, Literal
 
 import numpy as np
@@ -31,6 +30,8 @@ from ..pipeline import Capability, Outcome, StageContext
 from ..problem.fields import Angle, AngularVelocity, Mass, NonNegativeLength, Point, PositiveLength, Stiffness
 from ..problem.schema import Spec
 from ..results.labels import Label
+from .frame import BalanceRun, cycle
+from .methods import METHODS, balance, method_fits, operating_states
 
 __all__ = ["BalanceSpec", "BalanceRun", "run", "check", "CAPABILITY", "LABELS"]
 
@@ -125,8 +126,7 @@ class BalanceSpec(Spec):
 
     @model_validator(mode="after")
     def _method_needs(self):
-        needs = {"crank": ("fraction", "radius"), "berkof_lowen": ("crank_radius", "rocker_radius"),
-                 "spring": ("spring",)}.get(self.method, ())
+        needs = METHODS[self.method].needs
         missing = [n for n in needs if getattr(self, n) is None]
         if missing:
             raise ValueError(f"method '{self.method}' needs {', '.join(missing)}")
@@ -135,20 +135,6 @@ class BalanceSpec(Spec):
         if self.states and self.objective is not None:
             raise ValueError("give either [[balance.states]] (robust least squares) or [balance.objective], not both")
         return self
-
-
-@dataclass(frozen=True)
-class BalanceRun:
-    """The outcome of ``[balance]``: the method, the balance result (:class:`~machdyn.balancing.frame.
-    BalanceResult` or :class:`~machdyn.balancing.robust.RobustResult`), the trade-off curve of the crank method
-    (or None), the table's reference reduction and its source, and the balanced fraction of the crank method."""
-
-    method: str
-    result: Any
-    tradeoff: Any
-    reference_reduction: float | None
-    reference_source: str
-    fraction: float | None = None
 
 
 LABELS = {
@@ -170,57 +156,6 @@ LABELS = {
     "balance.spring_stiffness": Label("Balance: spring stiffness", "N/m"),
     "balance.spring_free_length": Label("Balance: spring free length", "m", "mm"),
 }
-
-
-def _slots(table: BalanceSpec):
-    from .general import CounterweightSlot, MassSlot
-
-    slots: list[Any] = [
-        CounterweightSlot(s.body, s.radius, s.about, (0.0, np.inf if s.mass_max is None else s.mass_max),
-                          (0.0, np.inf if s.radius_max is None else s.radius_max))
-        for s in table.counterweights
-    ]
-    slots += [MassSlot(m.name, (m.mass_min, np.inf if m.mass_max is None else m.mass_max)) for m in table.masses]
-    return slots
-
-
-def state_problems(problem: Any, table: BalanceSpec) -> list[tuple[Any, Any]]:
-    """(state spec, varied problem) for each ``[[balance.states]]``; every mistake at once with its path."""
-    from ..problem.fields import FieldError, to_si
-    from ..problem.paths import assign, quantity_unit
-
-    out, problems = [], []
-    for i, state in enumerate(table.states):
-        varied = problem
-        for path, value in state.set.items():
-            where = f"balance.states[{i}].set.{path}"
-            try:
-                meta = quantity_unit(problem, path)
-                varied = assign(varied, path, float(to_si(value, meta)))
-            except FieldError as exc:
-                problems.append((where, str(exc)))
-        out.append((state, varied))
-    if problems:
-        raise ProblemFileError(problems)
-    return out
-
-
-def _states(problem: Any, table: BalanceSpec):
-    from ..problem.build import build_mechanism
-    from .robust import OperatingState
-
-    states, problems = [], []
-    for i, (spec, varied) in enumerate(state_problems(problem, table)):
-        try:
-            mech = build_mechanism(varied)
-        except ProblemFileError as exc:
-            problems += [(f"balance.states[{i}]", f"{path}: {msg}") for path, msg in exc.problems]
-            continue
-        speed = problem.drive.speed if spec.speed is None else spec.speed
-        states.append(OperatingState(spec.name, mech, abs(speed), spec.weight, spec.crank_turn))
-    if problems:
-        raise ProblemFileError(problems)
-    return states
 
 
 def check(problem: Any, table: BalanceSpec, source: str | None = None) -> list[tuple[str, str]]:
@@ -246,9 +181,7 @@ def check(problem: Any, table: BalanceSpec, source: str | None = None) -> list[t
     if found:
         return found
     try:
-        _check_method(mech, table, abs(float(problem.drive.speed)))
-        if table.method == "counterweights" and table.objective is None and not table.states and not found:
-            _closed_form(mech, table, abs(float(problem.drive.speed)))
+        method_fits(mech, table, abs(float(problem.drive.speed)))
     except InputError as exc:
         found.append(("balance", str(exc)))
     names = {c.name for c in problem.counterweights if c.name}
@@ -257,101 +190,30 @@ def check(problem: Any, table: BalanceSpec, source: str | None = None) -> list[t
             found.append((f"balance.masses[{i}].name", f"no [[counterweights]] entry named '{m.name}'; named: "
                           f"{', '.join(sorted(names)) or 'none'}"))
     try:
-        states = _states(problem, table)
+        states = operating_states(problem, table)
     except ProblemFileError as exc:
         return found + list(exc.problems)
     from ..linkage import kinematics
-    from .frame import cycle
 
     for i, state in enumerate(states):
         try:
             kinematics(state.mechanism, cycle(table.positions), state.speed, 0.0, on_fail="raise")
-            _check_method(state.mechanism, table, state.speed)
+            METHODS[table.method].fits(state.mechanism, table, state.speed)
         except InputError as exc:
             found.append((f"balance.states[{i}]", str(exc)))
     return found
 
 
-def _closed_form(mech: Any, table: BalanceSpec, speed: float):
-    """The closed-form (least-squares) counterweights of the slots; a solution that cannot be built (a negative
-    or zero mass carrying a first moment on a floating body) is an input the method cannot serve: InputError."""
-    from ..errors import AnalysisError
-    from .frame import cycle
-    from .general import least_squares_counterweights
-
-    try:
-        return least_squares_counterweights(mech, _slots(table), cycle(table.positions), speed)
-    except AnalysisError as exc:
-        raise InputError(str(exc)) from None
-
-
-def _check_method(mech: Any, table: BalanceSpec, speed: float) -> None:
-    """Raise InputError if the table's method cannot run on ``mech``."""
-    from .berkof_lowen import four_bar_masses
-    from .counterweights import slider_crank_masses
-    from .general import CounterweightSlot, _reference, pivot_point
-
-    if table.method == "crank":
-        slider_crank_masses(mech)
-    elif table.method == "berkof_lowen":
-        four_bar_masses(mech)
-    elif table.method == "spring" and table.spring is not None:
-        from ..linkage import kinematics
-        from .frame import cycle
-        from .springs import _geometry
-
-        mech.body(table.spring.body)
-        kin = kinematics(mech, cycle(table.positions), speed, 0.0, on_fail="raise")
-        _geometry(kin, table.spring.body, np.asarray(table.spring.point), np.asarray(table.spring.anchor))
-    elif table.method == "counterweights":
-        for slot in _slots(table):
-            if not isinstance(slot, CounterweightSlot):
-                continue
-            _reference(mech, slot)
-            closed_form = table.objective is None
-            if closed_form and slot.radius is None and (slot.about or pivot_point(mech, slot.body)) == \
-                    pivot_point(mech, slot.body) and pivot_point(mech, slot.body) is not None:
-                raise InputError(f"The counterweight slot on pivoted body '{slot.body}' needs a radius for the "
-                                 "closed-form solution (the force fixes only mass x radius).")
-
-
 def run(ctx: StageContext) -> Outcome:
     """Balance the model by the table's method and report the frame loads before and after."""
-    from .berkof_lowen import berkof_lowen
-    from .counterweights import crank_counterweight, tradeoff_curve
-    from .frame import cycle
-    from .general import Weights, optimise_counterweights
-    from .robust import robust_counterweights
-    from .springs import spring_compensation
-
     table: Any = ctx.table  # a validated BalanceSpec: the method's fields are present (model validator)
     mech = ctx.mechanism
     if mech.design_count is not None:
         raise ProblemFileError([("balance", "balancing takes a single design; remove [sweep] or balance each design")])
     speed = abs(float(ctx.problem.drive.speed))
     phi = cycle(table.positions)
-    tradeoff = None
-    result: Any
     try:
-        if table.method == "crank":
-            result = crank_counterweight(mech, table.fraction, table.radius, phi, speed)
-            tradeoff = tradeoff_curve(mech, table.radius, np.linspace(0.0, 1.0, 21), phi, speed)
-        elif table.method == "berkof_lowen":
-            result = berkof_lowen(mech, table.crank_radius, table.rocker_radius, phi, speed)
-        elif table.method == "spring":
-            s = table.spring
-            result, _ = spring_compensation(
-                mech, s.body, s.point, s.anchor, phi, speed,
-                stiffness_bounds=(0.0, np.inf if s.stiffness_max is None else s.stiffness_max),
-                free_length_bounds=(s.free_length_min, np.inf if s.free_length_max is None else s.free_length_max))
-        elif table.states:
-            result = robust_counterweights(_states(ctx.problem, table), _slots(table), table.mode, phi)
-        elif table.objective is not None:
-            o = table.objective
-            result = optimise_counterweights(mech, _slots(table), Weights(o.force, o.moment, o.torque, o.joint,
-                                                                          o.measure), phi, speed)
-        else:
-            result = _closed_form(mech, table, speed)
+        result, tradeoff = balance(mech, ctx.problem, table, phi, speed)
     except InputError as exc:
         raise ProblemFileError([("balance", str(exc))]) from None
     done = BalanceRun(table.method, result, tradeoff, table.reference_reduction, table.reference_source,
@@ -392,20 +254,10 @@ def _outcome(done: BalanceRun) -> Outcome:
         return Outcome(results=done, scalars=scalars, labels=labels, series=series,
                        summary=summary, warnings=tuple(warnings))
     t = r.table
-    scalars = {
-        "balance.rms_force_before": t.row("RMS shaking force").before,
-        "balance.rms_force_after": t.row("RMS shaking force").after,
-        "balance.peak_force_before": t.row("peak shaking force").before,
-        "balance.peak_force_after": t.row("peak shaking force").after,
-        "balance.rms_moment_before": t.row("RMS shaking moment").before,
-        "balance.rms_moment_after": t.row("RMS shaking moment").after,
-        "balance.torque_fluctuation_before": t.row("driving torque fluctuation").before,
-        "balance.torque_fluctuation_after": t.row("driving torque fluctuation").after,
-        "balance.peak_joint_force_before": t.row("peak joint force").before,
-        "balance.peak_joint_force_after": t.row("peak joint force").after,
-        "balance.com_travel_after": t.row("centre-of-mass travel").after,
-        "balance.force_reduction": -t.row("RMS shaking force").change,
-    }
+    scalars = {f"balance.{row.key}_{when}": value for row in t.rows
+               for when, value in (("before", row.before), ("after", row.after))
+               if f"balance.{row.key}_{when}" in LABELS}
+    scalars["balance.force_reduction"] = -t.row("rms_force").change
     labels = {}
     for p in r.counterweights:
         if hasattr(p, "stiffness"):
@@ -449,4 +301,5 @@ CAPABILITY = Capability(
     labels=LABELS,
     report="machdyn.report.balancing:sections",
     check=check,
+    result_type=BalanceRun,
 )

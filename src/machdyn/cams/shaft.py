@@ -21,6 +21,8 @@ from ..errors import ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext, no_step
 from ..results.labels import Label
 from .schema import CamBody, CamProblem, CamSpec, ShaftCamTable
+from .stage import LABELS, CamResult, analyse, build
+from .stage import check as check_kind
 
 PREFIX = "shaft_cam."
 
@@ -36,9 +38,6 @@ def _as_cam_problem(problem: Any, table: ShaftCamTable) -> CamProblem:
 
 
 def _problems(problem: Any, table: ShaftCamTable) -> tuple[Any, Any, list[tuple[str, str]]]:
-    from .stage import build
-    from .stage import check as check_kind
-
     if not problem.drive.speed > 0:
         return None, None, [("drive.speed", f"must be > 0 for a cam on the crank shaft; got "
                                             f"{problem.drive.speed:g} rad/s")]
@@ -62,7 +61,6 @@ def check(problem: Any, table: ShaftCamTable, source: str | None) -> list[tuple[
 
 def run(ctx: StageContext) -> Outcome:
     from .dynamics import cam_forces
-    from .stage import LABELS, analyse
 
     table: ShaftCamTable = ctx.table
     cp, model, problems = _problems(ctx.problem, table)
@@ -99,14 +97,14 @@ def run(ctx: StageContext) -> Outcome:
                    warnings=tuple(warnings), failed_checks=tuple(failed))
 
 
-def with_shaft_cam(machine: Any, outcome: Outcome, phase: float, positions: int) -> Any:
+def with_shaft_cam(machine: Any, cam_result: CamResult, phase: float, positions: int) -> Any:
     """The linkage's equivalent machine with the shaft cam's reduced inertia, potential and damping added (module
     docstring); the linkage's external moment and speed-dependent forces kept."""
     from ..dynamics.equivalent import EquivalentMachine
     from ..dynamics.tables import PeriodicCurve
     from .dynamics import cam_machine
 
-    r = outcome.results
+    r = cam_result
     cam = cam_machine(r.model.program, r.model.train, r.spring, positions, phase=phase)
     phi = np.arange(int(positions)) * (2.0 * np.pi / int(positions))
     period = 2.0 * np.pi
@@ -123,7 +121,6 @@ def with_shaft_cam(machine: Any, outcome: Outcome, phase: float, positions: int)
 
 def _shaft_labels() -> dict[str, Label]:
     """The cam's own results under the ``shaft_cam.`` prefix, declared once for the catalogue."""
-    from .stage import LABELS
 
     return {_rename(k): Label(f"Shaft cam: {lab.text}", lab.unit, lab.display,
                               None if lab.zero_below is None else _rename(lab.zero_below))
@@ -141,4 +138,5 @@ CAPABILITY = Capability(
             "shaft_cam.linkage_peak_torque": Label("Shaft: peak driving torque of the linkage alone", "N*m")},
     report="machdyn.report.cams:shaft_sections",
     check=check,
+    result_type=CamResult,
 )

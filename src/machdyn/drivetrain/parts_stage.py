@@ -35,12 +35,13 @@ from typing import Any, Literal
 
 from pydantic import Field, model_validator
 
+from ..dynamics.stage import FlywheelRun
 from ..errors import InputError, ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext
 from ..problem.fields import Area, Force, PositiveLength, Pressure, PressureVelocity, SectionModulus, Stress, Time
 from ..problem.schema import Spec
 from ..results.labels import Label
-from .parts import BearingSpec, LinkSpec, PinSpec, size_parts
+from .parts import BearingSpec, LinkSpec, PartsResult, PinSpec, size_parts
 
 
 class BearingTable(Spec):
@@ -152,9 +153,8 @@ def run(ctx: StageContext) -> Outcome:
     problems = _names(ctx.table, ctx.mechanism)
     if problems:
         raise ProblemFileError(problems)
-    flywheel = ctx.outcomes.get("flywheel")
-    flywheel = flywheel if flywheel is not None and flywheel.results is not None else None  # no steady state
-    forces = flywheel.results.real.real if flywheel is not None else ctx.analysis.forces
+    flywheel = ctx.result_of("flywheel", FlywheelRun)  # None: no [flywheel], or no steady state
+    forces = flywheel.real.real if flywheel is not None else ctx.analysis.forces
     done = size_parts(forces, **_specs(ctx.table))
     scalars, labels = {}, {}
     worst = 0.0
@@ -193,4 +193,5 @@ CAPABILITY = Capability(
     report="machdyn.report.parts:sections",
     check=check,
     after=("flywheel",),
+    result_type=PartsResult,
 )

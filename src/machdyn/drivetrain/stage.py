@@ -40,6 +40,7 @@ from typing import Any, Literal
 import numpy as np
 from pydantic import Field, model_validator
 
+from ..dynamics.stage import FlywheelRun
 from ..errors import InputError, ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext
 from ..problem.fields import Angle, Inertia, Time, Torque
@@ -191,9 +192,8 @@ def run(ctx: StageContext) -> Outcome:
 
     table: DriveTrainSpec = ctx.table
     train = train_of(table)
-    flywheel = ctx.outcomes.get("flywheel")
-    flywheel = flywheel if flywheel is not None and flywheel.results is not None else None  # no steady state
-    forces = flywheel.results.real.real if flywheel is not None else ctx.analysis.forces
+    flywheel = ctx.result_of("flywheel", FlywheelRun)  # None: no [flywheel], or no steady state
+    forces = flywheel.real.real if flywheel is not None else ctx.analysis.forces
     torque = np.asarray(forces.driving_torque, dtype=float)
     if torque.ndim != 1:
         raise InputError("[drivetrain] analyses a single design; the file describes several.")
@@ -204,14 +204,14 @@ def run(ctx: StageContext) -> Outcome:
     shaft_torques = train.shaft_torques(torque)
     if flywheel is not None:
         # Upstream of the flywheel the shafts carry the motor's torque, not the linkage's peaks.
-        f = flywheel_shaft(train, float(flywheel.results.table.speed_ratio))
-        steady = flywheel.results.steady
+        f = flywheel_shaft(train, float(flywheel.table.speed_ratio))
+        steady = flywheel.steady
         phi = np.asarray(forces.kinematics.crank_angle, dtype=float)
         motor = np.interp(np.mod(phi, 2 * np.pi), np.mod(np.ravel(steady.phi), 2 * np.pi),
                           np.ravel(steady.drive_torque), period=2 * np.pi)
         shaft_torques[:f] = train.shaft_torques(motor)[:f]
-    machine = flywheel.results.machine if flywheel is not None else equivalent_machine(ctx.mechanism, 360)
-    fly_inertia = float(flywheel.results.flywheel) if flywheel is not None else 0.0
+    machine = flywheel.machine if flywheel is not None else equivalent_machine(ctx.mechanism, 360)
+    fly_inertia = float(flywheel.flywheel) if flywheel is not None else 0.0
     ratios = train.speed_ratios
     n = len(train.stages)
 
@@ -268,8 +268,8 @@ def idle_speed(motor: Any, nominal: float) -> float:
     return nominal
 
 
-def _single_stroke(table: DriveTrainSpec, train: DriveTrain, machine: Any, flywheel: Any, fly_inertia: float,
-                   crank_speed: float) -> Any:
+def _single_stroke(table: DriveTrainSpec, train: DriveTrain, machine: Any, flywheel: FlywheelRun | None,
+                   fly_inertia: float, crank_speed: float) -> Any:
     """The single stroke of ``[drivetrain.single_stroke]``, everything reduced to the crank shaft: the motor of
     ``[flywheel.motor]`` (or the clutch table's constant ``motor_torque``) on the driving side."""
     from .single_stroke import single_stroke
@@ -280,7 +280,7 @@ def _single_stroke(table: DriveTrainSpec, train: DriveTrain, machine: Any, flywh
     j = np.asarray(train.shaft_inertia)
     drive_side = float(np.sum(j[: shaft + 1] * ratios[: shaft + 1] ** 2) + fly_inertia)
     driven_side = float(np.sum(j[shaft + 1:] * ratios[shaft + 1:] ** 2))
-    drive = flywheel.results.drive if flywheel is not None else None
+    drive = flywheel.drive if flywheel is not None else None
     if drive is not None and hasattr(drive, "torque_at"):
         motor = drive.torque_at
     else:
@@ -408,4 +408,5 @@ CAPABILITY = Capability(
     report="machdyn.report.drivetrain:sections",
     check=check,
     after=("flywheel",),
+    result_type=DriveTrainRun,
 )

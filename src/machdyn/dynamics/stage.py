@@ -13,6 +13,7 @@ from typing import Any, Literal
 import numpy as np
 from pydantic import Field, model_validator
 
+from ..cams.stage import CamResult
 from ..errors import InputError
 from ..pipeline import Capability, Outcome, StageContext
 from ..problem.fields import (
@@ -316,20 +317,21 @@ def run_flywheel(ctx: StageContext) -> Outcome:
 
     table: FlywheelTable = ctx.table
     mech = ctx.mechanism
-    cam = ctx.outcomes.get("cam")
+    cam = ctx.result_of("cam", CamResult)
     if cam is not None:  # a cam machine: the camshaft is the crank, its reduced machine comes from the cam
-        speed = float(cam.results.speed)
-        machine = cam.results.machine(table.positions)
+        speed = float(cam.speed)
+        machine = cam.machine(table.positions)
     else:
         speed = float(ctx.problem.drive.speed)
         if not speed > 0:
             raise ProblemFileError([("drive.speed", f"must be > 0 for [flywheel] (the crank turns "
                                                     f"counter-clockwise); got {speed:g} rad/s")])
         machine = equivalent_machine(mech, table.positions, speed_loads=speed_loads(table))
-        if "shaft_cam" in ctx.outcomes:  # a cam on the crank shaft: its reduced quantities add to the linkage's
+        shaft_cam = ctx.result_of("shaft_cam", CamResult)
+        if shaft_cam is not None:  # a cam on the crank shaft: its reduced quantities add to the linkage's
             from ..cams.shaft import with_shaft_cam
 
-            machine = with_shaft_cam(machine, ctx.outcomes["shaft_cam"], ctx.problem.shaft_cam.phase,
+            machine = with_shaft_cam(machine, shaft_cam, ctx.problem.shaft_cam.phase,
                                      table.positions)
     target = table.delta if table.delta is not None else 0.02
     sizing = size_flywheel(machine, speed, target)
@@ -496,4 +498,5 @@ CAPABILITY = Capability(
     report="machdyn.report.dynamics:sections",
     check=check_flywheel,
     after=("shaft_cam",),
+    result_type=FlywheelRun,
 )

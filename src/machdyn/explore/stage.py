@@ -13,6 +13,7 @@ from ..pipelines import sweep as one_quantity
 from ..problem.sweep import SweepSpec
 from ..results.catalogue import find, label
 from ..results.labels import Label
+from .run import Exploration
 
 LABELS = dict(one_quantity.LABELS) | {
     "sweep.assembled_count": Label("Sweep: designs that assemble at every crank angle"),
@@ -126,4 +127,5 @@ CAPABILITY = Capability(
     labels=LABELS,
     report="machdyn.report.explore:sections",
     check=check,
+    result_type=(one_quantity.SweepRun, Exploration),
 )

@@ -10,6 +10,7 @@ import numpy as np
 from ..errors import ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext
 from ..results.labels import Label
+from .result import OptimiseResult
 from .schema import OptimiseSpec
 
 #: The status columns of the population evaluator: checks of the best design, not results to report.
@@ -158,6 +159,7 @@ CAPABILITY = Capability(
     labels=LABELS,
     report="machdyn.report.optimise:sections",
     check=check,
+    result_type=OptimiseResult,
 )
 
 

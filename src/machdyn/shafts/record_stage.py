@@ -156,4 +156,5 @@ CAPABILITY = Capability(
                                          "rpm")},
     report="machdyn.report.shafts:record_sections",
     check=check,
+    result_type=RecordBalance,
 )

@@ -10,6 +10,7 @@ import math
 
 import numpy as np
 
+from ..balancing.frame import BalanceRun
 from ..pipeline import Capability, Outcome, StageContext
 from ..results.labels import Label
 from .study import FrameStudy, SignalStudy, study_frame, study_signals
@@ -101,17 +102,13 @@ def frame_outcome(study: FrameStudy) -> Outcome:
                    warnings=warnings)
 
 
-def balanced_model(outcomes) -> object | None:
-    """The mechanism as a ``[balance]`` of the same file left it (its single balanced model), or None."""
-    balance = outcomes.get("balance")
-    result = getattr(getattr(balance, "results", None), "result", None)
-    return getattr(result, "model", None)
-
-
 def run_frame(ctx: StageContext) -> Outcome:
     """Stage of ``[frame]``: the frame on its mounts driven by the analysed mechanism's shaking loads; compared
-    with ``[frame.after]`` or, without it, with the mechanism as ``[balance]`` left it."""
-    return frame_outcome(study_frame(ctx.table, ctx.mechanism, ctx.analysis, balanced=balanced_model(ctx.outcomes)))
+    with ``[frame.after]`` or, without it, with the mechanism as ``[balance]`` left it (its single balanced
+    model)."""
+    balance = ctx.result_of("balance", BalanceRun)
+    balanced = balance.model if balance is not None else None
+    return frame_outcome(study_frame(ctx.table, ctx.mechanism, ctx.analysis, balanced=balanced))
 
 
 def signal_outcome(study: SignalStudy) -> Outcome:
@@ -173,11 +170,11 @@ def signal_outcome(study: SignalStudy) -> Outcome:
 
 def run_signals(ctx: StageContext) -> Outcome:
     """Stage of ``[signals]``: the records judged; next to the ``[frame]`` prediction when the file has one."""
-    frame = ctx.outcomes.get("frame")
+    frame = ctx.result_of("frame", FrameStudy)
     # the running speed's magnitude: a crank turning clockwise (negative speed) has the same orders
     speed = abs(float(np.ravel(ctx.analysis.kinematics.speed)[0])) if ctx.analysis is not None else None
     study = study_signals(ctx.table, source=ctx.source, crank_speed=speed,
-                          frame_study=frame.results if frame is not None else None)
+                          frame_study=frame)
     return signal_outcome(study)
 
 
@@ -248,9 +245,10 @@ def check_signals(problem, table, source: str | None = None) -> list[tuple[str, 
 FRAME = Capability(
     table="frame", schema=FrameTable, run=run_frame, step="frame vibration", check=check_frame,
     kinds=("mechanism", "rotary_screen"), report="machdyn.report.vibration:frame_sections", after=("balance",),
+    result_type=FrameStudy,
 )
 SIGNALS = Capability(
     table="signals", schema=SignalsTable, run=run_signals, step="measured signals",
     kinds=("mechanism", "rotary_screen"), report="machdyn.report.vibration:signal_sections", after=("frame",),
-    check=check_signals,
+    check=check_signals, result_type=SignalStudy,
 )
