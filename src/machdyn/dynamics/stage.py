@@ -32,6 +32,7 @@ from ..problem.fields import Volume as Displacement
 from ..problem.fields import VolumeFlow as Flow
 from ..problem.schema import Spec
 from ..results.labels import Label
+from .drive_choice import choose_drive, duty_of, overloaded
 
 
 class MotorTable(Spec):
@@ -186,53 +187,6 @@ def speed_loads(table: FlywheelTable) -> tuple:
     return tuple(out)
 
 
-def _drive(motor: MotorTable, machine, flywheel: float, speed: float, mean_torque: float):
-    """The drive of the table; for "select", the smallest standard motor whose breakdown torque carries the
-    steady state's peak torque with a margin of 1.3."""
-    from .drives import ConstantTorque, HydraulicMotor, InductionMotor
-    from .motion import start_up
-    from .motors import select_motor, standard_ratings
-    from .simulate import NotSettledError, steady_state
-
-    if motor.kind == "constant_torque":
-        return ConstantTorque(mean_torque)
-    if motor.kind == "hydraulic":
-        return HydraulicMotor(float(motor.displacement or 0), float(motor.flow or 0), float(motor.pressure_limit or 0),
-                              motor.volumetric_efficiency, motor.mechanical_efficiency, motor.ratio or 1.0,
-                              motor.rotor_inertia)
-    if motor.kind == "induction":
-        rated = float(motor.rated_speed or 0.0)
-        ratio = motor.ratio or rated / speed
-        return InductionMotor(float(motor.rated_power or 0.0), rated, motor.synchronous_speed, motor.breakdown_ratio,
-                              ratio, motor.efficiency, motor.rotor_inertia)
-    power = max(mean_torque * speed, standard_ratings()[0])
-    choice = select_motor(power, 0.0, speed, synchronous_speed=motor.synchronous_speed,
-                          rated_slip=motor.rated_slip, breakdown_ratio=motor.breakdown_ratio,
-                          gear_efficiency=motor.efficiency, rotor_inertia=motor.rotor_inertia)
-    ratings = [r for r in standard_ratings() if r >= choice.motor.rated_power]
-    for rating in ratings:
-        candidate = InductionMotor(rating, choice.motor.rated_speed, choice.motor.synchronous_speed,
-                                   motor.breakdown_ratio, choice.motor.ratio, motor.efficiency, motor.rotor_inertia)
-        try:
-            ss = steady_state(machine, candidate, flywheel)
-        except ValueError:
-            continue
-        if (float(np.max(ss.drive_torque)) * 1.3 <= float(candidate.breakdown_torque) and not ss.warnings
-                and not _overloaded(candidate, ss, motor)):
-            try:
-                run = start_up(machine, candidate, flywheel, steady=ss)
-            except ValueError:
-                continue  # cannot start the machine from rest
-            except NotSettledError:
-                pass
-            else:
-                if motor.starts_per_hour and _duty(candidate, ss, motor, run).too_many_starts():
-                    continue  # its rotor does not stand the starts per hour asked for
-            return candidate
-    return InductionMotor(ratings[-1], choice.motor.rated_speed, choice.motor.synchronous_speed,
-                          motor.breakdown_ratio, choice.motor.ratio, motor.efficiency, motor.rotor_inertia)
-
-
 def check_flywheel(problem: Any, table: FlywheelTable, source: str | None = None) -> list[tuple[str, str]]:
     """The validations of ``[flywheel]`` that need more than its schema, so that ``check`` and ``run`` agree: a
     crank turning forwards, and a motor whose data describe a real induction motor (its drive object builds)."""
@@ -255,35 +209,6 @@ def check_flywheel(problem: Any, table: FlywheelTable, source: str | None = None
             text = str(exc).rstrip(".")
             found.append(("flywheel.motor", text[:1].lower() + text[1:]))
     return found
-
-
-def _overloaded(drive, steady, motor: MotorTable | None = None) -> list[str]:
-    """The thermal check of the motor's duty: S3 and S6 (``motor.duty``) by :mod:`machdyn.dynamics.duty`; the
-    thermal check of an induction motor in continuous duty S1 (IEC 60034-1:2022, 4.2.1): the RMS over
-    time of the torque it gives, referred to the crank, must not exceed its rated torque at the crank
-    T_r i eta [N*m] (the equivalent-torque method: the winding losses, and so the temperature rise, grow with
-    the square of the current, nearly proportional to the torque near rated load; Vogel, Elektrische Antriebe,
-    or Pyrhönen, Jokinen & Hrabovcová, Design of Rotating Electrical Machines, 2nd ed. 2014, sec. 10.1)."""
-    if getattr(drive, "name", "") != "induction motor":
-        return []
-    if motor is not None and motor.duty != "S1":
-        return _duty(drive, steady, motor).overload()
-    rated = float(np.max(drive.rated_torque * drive.ratio * drive.efficiency))
-    rms = float(steady.rms_drive_torque)
-    if rms > rated * (1.0 + 1e-9):
-        return [f"the induction motor is overloaded for continuous duty S1 (IEC 60034-1): the RMS torque over the "
-                f"cycle {rms:.4g} N*m at the crank is {100.0 * rms / rated:.4g} % of its rated torque {rated:.4g} N*m "
-                f"at the crank ({float(np.max(drive.rated_power)) / 1000:g} kW); it will overheat. Choose a larger "
-                "motor."]
-    return []
-
-
-def _duty(drive, steady, motor: MotorTable, run=None):
-    from .duty import motor_duty
-
-    return motor_duty(drive, float(np.max(steady.rms_drive_torque)), motor.duty, motor.cyclic_duration_factor or 1.0,
-                      float(motor.no_load_torque), start_up=run, starts_required=motor.starts_per_hour,
-                      rest_cooling=motor.rest_cooling)
 
 
 #: The largest relative departure of the steady mean crank speed from the nominal ``[drive] speed`` accepted: the
@@ -342,7 +267,7 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     mean_torque = float(sizing.drive_torque[0])
     size_failed = None
     try:
-        drive = _drive(table.motor, machine, flywheel, speed, mean_torque)
+        drive = choose_drive(table.motor, machine, flywheel, speed, mean_torque)
         for_motor = None
         if table.delta is not None and table.size_for == "motor" and table.motor.kind != "constant_torque":
             from .motor_flywheel import flywheel_for_drive
@@ -365,7 +290,7 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         return Outcome(results=None, scalars={"flywheel.inertia": flywheel}, summary=("flywheel.inertia",),
                        failed_checks=(str(exc).rstrip("."),))
     warnings = list(steady.warnings)
-    failed: list[str] = [*steady.warnings, *_overloaded(drive, steady, table.motor), *_off_speed(steady, speed)]
+    failed: list[str] = [*steady.warnings, *overloaded(drive, steady, table.motor), *_off_speed(steady, speed)]
     if size_failed is not None:
         failed.append(size_failed)
     run = None
@@ -406,13 +331,14 @@ def run_flywheel(ctx: StageContext) -> Outcome:
                    "flywheel.motor_slip_saving": for_motor.saving}
     if run is not None:
         values["flywheel.time_to_steady"] = float(run.time_to_steady)
+    duty = None
     if hasattr(drive, "breakdown_torque") and drive.name == "induction motor":
         values |= {"flywheel.motor_rated_power": float(drive.rated_power),
                    "flywheel.motor_breakdown_torque": float(drive.breakdown_torque),
                    "flywheel.gear_ratio": float(drive.ratio),
                    "flywheel.motor_rms_load": float(steady.rms_drive_torque)
                    / float(np.max(drive.rated_torque * drive.ratio * drive.efficiency))}
-        duty = _duty(drive, steady, table.motor, run)
+        duty = duty_of(drive, steady, table.motor, run)
         values |= {"flywheel.motor_duty_load": duty.load_ratio,
                    "flywheel.motor_duty_rated_torque": duty.rated_for_duty}
         if run is not None and np.isfinite(duty.starts_allowed):
@@ -441,7 +367,7 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         if not part.within_limit:
             failed.append(f"flywheel rim speed {part.rim_speed:.4g} m/s exceeds the limit {part.rim_speed_limit:.4g} "
                           "m/s")
-    result = FlywheelRun(table, machine, sizing, drive, flywheel, steady, run, real, part)
+    result = FlywheelRun(table, machine, sizing, drive, flywheel, steady, run, real, part, duty)
     series = {"flywheel_cycle": _cycle_columns(result)}
     if run is not None:
         tr = run.trajectory
@@ -486,6 +412,7 @@ class FlywheelRun:
     start_up: Any
     real: Any
     part: Any
+    duty: Any = None  # the induction motor's duty check (machdyn.dynamics.duty.DutyCheck), None for other drives
 
 
 CAPABILITY = Capability(

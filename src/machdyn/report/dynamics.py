@@ -145,10 +145,9 @@ def flywheel_rows(run: Any) -> list[list[str]]:
 
 def _duty_rows(run: Any) -> list[list[str]]:
     """The motor's duty (IEC 60034-1 S1, S3 or S6) and its starts per hour (machdyn.dynamics.duty)."""
-    from ..dynamics.stage import _duty
-
-    motor = run.table.motor
-    duty = _duty(run.drive, run.steady, motor, run.start_up)
+    duty = run.duty
+    if duty is None:
+        return []
     name = duty.duty if duty.duty == "S1" else f"{duty.duty}, cyclic duration factor {format_value(duty.cdf * 100)} %"
     if duty.duty == "S6":
         name += f", no-load torque {format_value(duty.no_load_torque)} N·m"
