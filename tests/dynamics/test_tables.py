@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from machdyn.dynamics import energy_fluctuation, indicator_crank_effort, torque_table
+from machdyn.dynamics import diagram_energy_fluctuation, indicator_crank_effort, torque_table
 from machdyn.errors import InputError
 
 
@@ -20,7 +20,7 @@ def test_spline_table_finds_the_energy_extremes_between_samples():
     phi = np.radians(np.arange(0, 361, 10))
     table = torque_table(phi, 5000 + 600 * np.sin(2 * phi) - 500 * np.sin(phi))
     # exact: max - min of 500 cos - 300 cos 2 = 404.1667 - (-800)
-    assert energy_fluctuation(table)[0] == pytest.approx(1204.1667, rel=2e-4)
+    assert diagram_energy_fluctuation(table)[0] == pytest.approx(1204.1667, rel=2e-4)
 
 
 def test_four_stroke_cycle_spans_720_degrees():

@@ -8,7 +8,7 @@ import pytest
 from machdyn.errors import ProblemFileError
 from machdyn.linkage import stack_designs
 from machdyn.optimise import OptimiseSpec
-from machdyn.optimise.variables import assign, design_space
+from machdyn.optimise.variables import assign, search_space
 from machdyn.problem.build import build_mechanism
 
 from .conftest import FOUR_BAR, problem_with
@@ -56,19 +56,19 @@ def test_a_formula_may_not_run_code():
 
 def test_stacked_population_equals_each_design_built_alone_and_stacked(monkeypatch):
     """The fast path (arrays handed to the builder) builds the same model as building each variant."""
-    from machdyn.optimise.variables import DesignSpace
+    from machdyn.optimise.variables import SearchSpace
 
     def no_fallback(*_args):
         raise AssertionError("the population was built design by design, not in one build")
 
-    monkeypatch.setattr(DesignSpace, "_build_each", no_fallback)
+    monkeypatch.setattr(SearchSpace, "_build_each", no_fallback)
     problem, spec = _spec(
         '[[optimise.variables]]\nname = "r"\nparameter = "mechanism.crank.length"\nlower = "20 mm"\nupper = "50 mm"\n'
         '[[optimise.variables]]\nparameter = "mechanism.coupler_point[1]"\nlower = "-30 mm"\nupper = "30 mm"\n'
         '[[optimise.variables]]\nname = "h"\nunit = "m"\nlower = "0 mm"\nupper = "40 mm"\n',
         '[optimise.derived]\n"mechanism.ground.angle" = "atan2(h, 0.15)"\n"mechanism.ground.length" = '
         '"hypot(0.15, h)"\n')
-    space = design_space(problem, spec)
+    space = search_space(problem, spec)
     x = space.lower + np.random.default_rng(4).random((7, 3)) * (space.upper - space.lower)
     fast = space.population(x).mechanism
     slow = []
@@ -107,7 +107,7 @@ def test_designs_whose_derived_quantities_break_a_rule_are_marked_unbuildable():
     problem, spec = _spec(
         '[[optimise.variables]]\nname = "r"\nparameter = "mechanism.crank.length"\nlower = "20 mm"\nupper = "50 mm"\n',
         '[optimise.derived]\n"mechanism.rocker.length" = "r - 0.03"\n')
-    space = design_space(problem, spec)
+    space = search_space(problem, spec)
     pop = space.population(np.array([[0.02], [0.04], [0.05]]))
     assert pop.buildable.tolist() == [False, True, True]
     assert "mechanism.rocker.length" in pop.reasons[0]
@@ -116,7 +116,7 @@ def test_designs_whose_derived_quantities_break_a_rule_are_marked_unbuildable():
 def test_best_design_problem_is_validated_and_has_no_optimise_table():
     problem, spec = _spec('[[optimise.variables]]\nparameter = "mechanism.crank.length"\nlower = "20 mm"\n'
                           'upper = "50 mm"\n')
-    best = design_space(problem, spec).problem_at(np.array([0.0325]))
+    best = search_space(problem, spec).problem_at(np.array([0.0325]))
     assert best.mechanism.crank.length == 0.0325 and best.optimise is None
     assert FOUR_BAR.count("[mechanism") == 5
 
@@ -124,12 +124,12 @@ def test_best_design_problem_is_validated_and_has_no_optimise_table():
 def test_the_compactor_examples_population_is_built_in_one_go(monkeypatch, compactor):
     """Free variables, derived link lengths, a derived coupler-point coordinate and derived loads: one build."""
     from machdyn.optimise import setup
-    from machdyn.optimise.variables import DesignSpace
+    from machdyn.optimise.variables import SearchSpace
 
     def no_fallback(*_args):
         raise AssertionError("the population was built design by design, not in one build")
 
-    monkeypatch.setattr(DesignSpace, "_build_each", no_fallback)
+    monkeypatch.setattr(SearchSpace, "_build_each", no_fallback)
     ev = setup(compactor, compactor.optimise)
     x = ev.space.lower + np.random.default_rng(1).random((20, 4)) * (ev.space.upper - ev.space.lower)
     pop = ev.space.population(x)

@@ -14,7 +14,7 @@ import pytest
 from machdyn.dynamics import (
     ConstantTorque,
     EquivalentMachine,
-    energy_fluctuation,
+    diagram_energy_fluctuation,
     flywheel_inertia_classic,
     rim_flywheel,
     rim_speed_limit,
@@ -38,7 +38,7 @@ def test_khurmi_16_6_torque_cycle_of_three_revolutions():
     power = machine_torque.mean()[0] * omega
     assert power / 1000 == pytest.approx(49.087, abs=5e-4)  # printed to 1 W
     inertia = 500 * 0.6**2
-    delta_e = energy_fluctuation(machine_torque)[0]
+    delta_e = diagram_energy_fluctuation(machine_torque)[0]
     cs = delta_e / (inertia * omega**2)
     assert cs == pytest.approx(0.072, abs=5e-4)  # printed to three decimals (0.0716)
     # the same machine simulated: load = -machine torque, a constant drive torque equal to its mean
@@ -61,7 +61,7 @@ def test_khurmi_16_9_four_stroke_engine_triangular_diagram():
     engine = torque_table(angles, [0.0, 0.0, -t_comp, 0.0, t_exp, 0.0, 0.0], interpolation="linear")
     assert engine.period == pytest.approx(4 * np.pi)
     assert engine.cycle_integral()[0] == pytest.approx(work, rel=1e-12)
-    inertia = flywheel_inertia_classic(energy_fluctuation(engine)[0], n * RPM, cs)
+    inertia = flywheel_inertia_classic(diagram_energy_fluctuation(engine)[0], n * RPM, cs)
     assert inertia == pytest.approx(255.4, abs=0.05)  # printed to 0.1 kg*m^2
     # the sizing routine on the same diagram (constant inertia: exact = classic)
     machine = EquivalentMachine.from_tables(engine, 0.0)
@@ -77,7 +77,7 @@ def test_khurmi_16_12_engine_and_resisting_torque_both_varying():
     fluctuation of speed 6.1 %, largest acceleration 3.46 rad/s^2 at θ = 35°."""
     theta = np.radians(np.arange(0.0, 361.0, 10.0))  # the diagram tabulated every 10°, as read off a plot
     net = torque_table(theta, 600 * np.sin(2 * theta) - 500 * np.sin(theta))
-    delta_e = energy_fluctuation(net)[0]
+    delta_e = diagram_energy_fluctuation(net)[0]
     # spline through 10° samples: error ~1e-4 relative; printed to 1 N*m
     assert delta_e == pytest.approx(1204, abs=1.0)
     inertia, omega = 500 * 0.4**2, 150 * RPM
@@ -120,7 +120,8 @@ def test_khurmi_16_1_speeds_from_the_flywheel_and_the_energy_fluctuation():
     inertia = 6500.0 * 1.8**2
     phi = np.linspace(0.0, 2 * np.pi, 361)
     machine = EquivalentMachine.from_tables(torque_table(phi, 28e3 * np.sin(phi)), inertia)
-    assert float(energy_fluctuation(machine.moment)[0]) == pytest.approx(56e3, rel=1e-6)  # spline through 1° steps
+    # spline through 1° steps
+    assert float(diagram_energy_fluctuation(machine.moment)[0]) == pytest.approx(56e3, rel=1e-6)
     ss = steady_state(machine, ConstantTorque(0.0), 0.0, mean_speed=120 * RPM)
     n1, n2 = float(np.max(ss.omega)) / RPM, float(np.min(ss.omega)) / RPM
     assert abs(n1 - 121) < 0.5 and abs(n2 - 119) < 0.5  # the book's whole rpm

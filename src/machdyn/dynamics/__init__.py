@@ -26,12 +26,13 @@ from .flywheel import (
 )
 from .motion import StartUp, Trajectory, simulate, start_up
 from .simulate import NotSettledError, SteadyState, steady_state
-from .tables import PeriodicCurve, energy_fluctuation, indicator_crank_effort, torque_table
+from .tables import PeriodicCurve, diagram_energy_fluctuation, indicator_crank_effort, torque_table
 
 __all__ = [
     "ConstantSpeed", "ConstantTorque", "EquivalentMachine", "FlywheelPart", "FlywheelSizing", "HydraulicMotor",
     "InductionMotor", "LinearDamper", "NotSettledError", "PeriodicCurve", "RotaryDamper", "SpeedForce", "StartUp",
-    "SteadyState", "TorqueSpeedTable", "Trajectory", "disc_flywheel", "energy_fluctuation", "equivalent_machine",
+    "SteadyState", "TorqueSpeedTable", "Trajectory", "diagram_energy_fluctuation", "disc_flywheel",
+    "equivalent_machine",
     "flywheel_inertia_classic", "indicator_crank_effort", "kloss_breakdown_slip", "kloss_torque", "rim_flywheel",
     "rim_speed_limit", "simulate", "size_flywheel", "speed_limits", "start_up", "steady_state", "torque_table",
 ]

@@ -282,18 +282,20 @@ def torque_table(angles, torque, *, period: float | None = None, interpolation: 
     return build(a, t, float(period))
 
 
-def energy_fluctuation(curve: Curve, mean=None, samples_per_piece: int = 32) -> np.ndarray:
+def diagram_energy_fluctuation(curve: Curve, mean=None, samples_per_piece: int = 32) -> np.ndarray:
     """Maximum fluctuation of energy ΔE [J] of a turning-moment diagram about its mean (or ``mean`` [N*m]).
 
     ΔE = max(E) - min(E) with E(phi) = integral of (T - T_mean) dphi over the cycle (Khurmi & Gupta, *Theory of
-    Machines*, ch. 16). The extremes are found on the interpolant between the nodes.
+    Machines*, ch. 16). The extremes are found on the interpolant between the nodes. For samples of a torque over
+    evenly spaced crank angles (an analysis's driving torque) use :func:`machdyn.linkage.energy_fluctuation`; this
+    one reads a diagram given as a table (:func:`torque_table`) or a reduced machine's moment.
 
     Examples
     --------
     >>> import numpy as np
     >>> phi = np.linspace(0, 2 * np.pi, 73)
     >>> curve = torque_table(phi, 5000 + 1500 * np.sin(3 * phi))
-    >>> round(float(energy_fluctuation(curve)[0]), 1)   # exact: 1000 J; spline through 5° samples
+    >>> round(float(diagram_energy_fluctuation(curve)[0]), 1)   # exact: 1000 J; spline through 5° samples
     1000.0
     """
     grid = fine_grid(curve, samples_per_piece)

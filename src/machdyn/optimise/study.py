@@ -16,7 +16,7 @@ from .objectives import parse_objectives
 from .result import OptimiseResult
 from .schema import OptimiseSpec
 from .search import Evaluator, differential_evolution
-from .variables import current_values, design_space
+from .variables import current_values, search_space
 
 #: A verified design may break a constraint by this much (relative): the population and the single-design
 #: evaluations of one design agree to rounding, not bit for bit.
@@ -47,7 +47,7 @@ def setup(problem: Any, spec: OptimiseSpec) -> Evaluator:
     problems: list[tuple[str, str]] = []
     space = None
     try:
-        space = design_space(problem, spec)
+        space = search_space(problem, spec)
     except ProblemFileError as exc:
         problems += exc.problems
     mech = build_mechanism(problem)

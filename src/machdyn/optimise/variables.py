@@ -22,8 +22,8 @@ from ..problem.paths import assign, quantity_unit, value_at
 from .formula import FORMULA_CONSTANTS, FORMULA_FUNCTIONS, Formula, compile_formula
 from .schema import OptimiseSpec
 
-__all__ = ["FORMULA_CONSTANTS", "FORMULA_FUNCTIONS", "DesignSpace", "Formula", "Population", "Variable",
-           "compile_formula", "current_values", "design_space"]
+__all__ = ["FORMULA_CONSTANTS", "FORMULA_FUNCTIONS", "SearchSpace", "Formula", "Population", "Variable",
+           "compile_formula", "current_values", "search_space"]
 
 @dataclass(frozen=True)
 class Variable:
@@ -64,7 +64,7 @@ class Population:
 
 
 @dataclass(frozen=True)
-class DesignSpace:
+class SearchSpace:
     """The variables and derived quantities of an ``[optimise]`` table over a validated problem."""
 
     problem: Any
@@ -165,8 +165,8 @@ class DesignSpace:
         return stack_designs(mechs), bad, reasons
 
 
-def design_space(problem: Any, spec: OptimiseSpec) -> DesignSpace:
-    """The :class:`DesignSpace` of ``spec`` over ``problem``; every mistake reported at once with its path
+def search_space(problem: Any, spec: OptimiseSpec) -> SearchSpace:
+    """The :class:`SearchSpace` of ``spec`` over ``problem``; every mistake reported at once with its path
     (unknown quantities with a did-you-mean, bounds in the wrong unit, empty or reversed ranges)."""
     problems: list[tuple[str, str]] = []
     variables: list[Variable] = []
@@ -220,7 +220,7 @@ def design_space(problem: Any, spec: OptimiseSpec) -> DesignSpace:
             problems.append((where, str(exc)))
     if problems:
         raise ProblemFileError(problems)
-    return DesignSpace(problem, tuple(variables), tuple(formulas), rules)
+    return SearchSpace(problem, tuple(variables), tuple(formulas), rules)
 
 
 def _si_unit(unit: str) -> str:
@@ -234,7 +234,7 @@ def _si_unit(unit: str) -> str:
     return f"{q.units:~}".replace(" ", "")
 
 
-def current_values(space: DesignSpace) -> np.ndarray | None:
+def current_values(space: SearchSpace) -> np.ndarray | None:
     """The variables' values in the problem as given (free variables: mid-range), or None if one lies outside
     its bounds (the search then starts from its own sample only)."""
     out = []
