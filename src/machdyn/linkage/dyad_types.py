@@ -4,11 +4,12 @@ and what a drawing needs.
 A dyad (Assur group of class II) attaches two new bodies ``a`` and ``b`` to points already placed. Every
 dyad type is a frozen dataclass deriving from :class:`DyadType`; the engine (kinematics, kinetostatics,
 diagnostics, the fused engine, validation, drawings and tables) asks the declaration instead of testing
-types. The closed-form solvers themselves are in :mod:`machdyn.linkage.dyads` (NumPy) and
-:mod:`machdyn.linkage.fused_source` (the compiled engine's code).
+types. The closed forms themselves are written once, in :mod:`machdyn.linkage.dyad_forms`, and called by
+:mod:`machdyn.linkage.dyads` (NumPy) and :mod:`machdyn.linkage.fused_dyads` (the compiled engine's kernel).
 
-Adding a dyad type: write its motion and force solvers, declare a dataclass here implementing every
-method of :class:`DyadType`, and add it to :data:`DYAD_TYPES` (see docs/linkage.md).
+Adding a dyad type: write its motion and force forms in :mod:`.dyad_forms` (one text for both engines), declare
+a dataclass here implementing every method of :class:`DyadType`, and add it to :data:`DYAD_TYPES` (see
+docs/linkage.md).
 """
 
 from __future__ import annotations

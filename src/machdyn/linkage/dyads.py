@@ -17,14 +17,16 @@ positions). Each kinematic solver returns the two new body states, an ``assemble
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
+from . import dyad_forms as forms
+from .dyad_forms import ASSEMBLY_TOL
 from .state import BodyState, PointState, body_from_point, is_origin
 
-# Relative tolerance on the squared closure distance below which a position counts as just assembled
-# (a toggle position computed in floating point may come out as -1e-16 * L^2).
-ASSEMBLY_TOL = 1e-12
+__all__ = ["ASSEMBLY_TOL", "DyadMotion", "prp_forces", "prp_motion", "rpr_forces", "rpr_motion", "rrp_forces",
+           "rrp_motion", "rrr_forces", "rrr_motion"]
 
 
 @dataclass(slots=True)
@@ -35,12 +37,6 @@ class DyadMotion:
     det: np.ndarray
     transmission: object  # callable returning the transmission angle [rad]; computed only when asked for
     slides: dict  # body name -> (s, ds, dds)
-
-
-def _root(square, assembled):
-    """sqrt of a closure discriminant: rounding below zero at a toggle is clipped, NaN where not assembled."""
-    root = np.sqrt(np.maximum(square, 0.0))
-    return root if np.all(assembled) else np.where(assembled, root, np.nan)
 
 
 def _anchor(pin: PointState, pin_local, other: PointState, other_local):
@@ -54,13 +50,6 @@ def _line(local_from, local_to):
     dy = local_to[1] - local_from[1]
     length = np.hypot(dx, dy)
     return length, dx / length, dy / length
-
-
-def _orient(px, py, length, cd, sd):
-    """cos/sin of a body's angle given the global vector (px, py) of its body-frame segment (length, cd, sd)."""
-    c = (px * cd + py * sd) / length
-    s = (py * cd - px * sd) / length
-    return c, s
 
 
 def rrr_motion(P: PointState, Q: PointState, a_pin, a_inner, b_pin, b_inner, branch: int) -> DyadMotion:
@@ -102,46 +91,14 @@ def rrr_motion(P: PointState, Q: PointState, a_pin, a_inner, b_pin, b_inner, bra
     """
     La, cda, sda = _line(a_pin, a_inner)
     Lb, cdb, sdb = _line(b_pin, b_inner)
-    dx = Q.x - P.x
-    dy = Q.y - P.y
-    d2 = dx * dx + dy * dy
-    d = np.sqrt(d2)
-    along = (La * La - Lb * Lb + d2) / (2.0 * d)
-    h2 = La * La - along * along
-    # Coincident pins (d = 0) leave the dyad free to turn: indeterminate, reported as a singular position.
-    coincident = d == 0.0
-    assembled = (h2 >= -ASSEMBLY_TOL * La * La) | coincident
-    h = _root(h2, assembled)
-    ux = dx / d
-    uy = dy / d
-    bx = P.x + along * ux - branch * h * uy
-    by = P.y + along * uy + branch * h * ux
-    px, py = bx - P.x, by - P.y
-    qx, qy = bx - Q.x, by - Q.y
-    det = px * qy - py * qx
-    inv = 1.0 / det
-    wx, wy = Q.vx - P.vx, Q.vy - P.vy
-    om_a = (wx * qx + wy * qy) * inv
-    om_b = (wx * px + wy * py) * inv
-    w2a, w2b = om_a * om_a, om_b * om_b
-    wax = Q.ax - P.ax - w2b * qx + w2a * px
-    way = Q.ay - P.ay - w2b * qy + w2a * py
-    al_a = (wax * qx + way * qy) * inv
-    al_b = (wax * px + way * py) * inv
-    ca, sa = _orient(px, py, La, cda, sda)
-    cb, sb = _orient(qx, qy, Lb, cdb, sdb)
+    (assembled, _co, bx, by, Bvx, Bvy, Bax, Bay, px, py, qx, qy, om_a, al_a, om_b, al_b, ca, sa, cb, sb, _det,
+     det) = forms.rrr_motion(P.x, P.y, P.vx, P.vy, P.ax, P.ay, Q.x, Q.y, Q.vx, Q.vy, Q.ax, Q.ay,
+                             La, cda, sda, Lb, cdb, sdb, branch)
     if is_origin(a_pin) and is_origin(b_pin):
         # Both frames hang on their pins (the usual link frames): B's motion is not needed here.
         anchor_a, anchor_b = (P, a_pin), (Q, b_pin)
     else:
-        B = PointState(
-            bx,
-            by,
-            P.vx - om_a * py,
-            P.vy + om_a * px,
-            P.ax - al_a * py - w2a * px,
-            P.ay + al_a * px - w2a * py,
-        )
+        B = PointState(bx, by, Bvx, Bvy, Bax, Bay)
         anchor_a, anchor_b = _anchor(P, a_pin, B, a_inner), _anchor(Q, b_pin, B, b_inner)
     body_a = body_from_point(*anchor_a, np.arctan2(sa, ca), om_a, al_a, ca, sa)
     body_b = body_from_point(*anchor_b, np.arctan2(sb, cb), om_b, al_b, cb, sb)
@@ -149,9 +106,7 @@ def rrr_motion(P: PointState, Q: PointState, a_pin, a_inner, b_pin, b_inner, bra
     def transmission():  # angle between the two links at B, 0..pi
         return np.arccos(np.clip((px * qx + py * qy) / (La * Lb), -1.0, 1.0))
 
-    det = np.where(coincident, 0.0, det / (La * Lb)) if np.any(coincident) else det / (La * Lb)
     return DyadMotion(body_a, body_b, assembled, det, transmission, {})
-
 
 def _guide_frame(S: BodyState, g_local, angle):
     """Global point G, unit direction u of a guide fixed in body S, and the guide's global angle."""
@@ -208,40 +163,10 @@ def rrp_motion(P: PointState, S: BodyState, g_local, g_angle, a_pin, a_inner, b_
     """
     La, cda, sda = _line(a_pin, a_inner)
     G, ux, uy, g_ang = _guide_frame(S, g_local, g_angle)
-    rx, ry = P.x - G.x, P.y - G.y
-    t0 = rx * ux + ry * uy
-    e = ux * ry - uy * rx
-    disc = La * La - e * e
-    assembled = disc >= -ASSEMBLY_TOL * La * La
-    s = t0 + branch * _root(disc, assembled)
-    bx = G.x + s * ux
-    by = G.y + s * uy
-    px, py = bx - P.x, by - P.y
-    nx, ny = -uy, ux
-    det = px * ux + py * uy
-    cross_pu = px * uy - py * ux
-    gx, gy = bx - G.x, by - G.y
-    vbx = G.vx - S.omega * gy
-    vby = G.vy + S.omega * gx
-    wx, wy = vbx - P.vx, vby - P.vy
-    om_a = (wx * nx + wy * ny) / det
-    ds = om_a * cross_pu - (wx * ux + wy * uy)
-    w2s = S.omega * S.omega
-    abx = G.ax - S.alpha * gy - w2s * gx + 2.0 * ds * S.omega * nx
-    aby = G.ay + S.alpha * gx - w2s * gy + 2.0 * ds * S.omega * ny
-    wax = abx - P.ax + om_a * om_a * px
-    way = aby - P.ay + om_a * om_a * py
-    al_a = (wax * nx + way * ny) / det
-    dds = al_a * cross_pu - (wax * ux + way * uy)
-    B = PointState(
-        bx,
-        by,
-        P.vx - om_a * py,
-        P.vy + om_a * px,
-        P.ax - al_a * py - om_a * om_a * px,
-        P.ay + al_a * px - om_a * om_a * py,
-    )
-    ca, sa = _orient(px, py, La, cda, sda)
+    (assembled, s, bx, by, Bvx, Bvy, Bax, Bay, om_a, al_a, ca, sa, ds, dds, det, normalised) = forms.rrp_motion(
+        P.x, P.y, P.vx, P.vy, P.ax, P.ay, G.x, G.y, G.vx, G.vy, G.ax, G.ay, S.omega, S.alpha, ux, uy, La, cda, sda,
+        branch)
+    B = PointState(bx, by, Bvx, Bvy, Bax, Bay)
     anchor, anchor_local = _anchor(P, a_pin, B, a_inner)
     body_a = body_from_point(anchor, anchor_local, np.arctan2(sa, ca), om_a, al_a, ca, sa)
     body_b = body_from_point(B, b_inner, g_ang, S.omega, S.alpha, ux, uy)
@@ -249,8 +174,7 @@ def rrp_motion(P: PointState, S: BodyState, g_local, g_angle, a_pin, a_inner, b_
     def transmission():
         return np.arcsin(np.clip(np.abs(det) / La, 0.0, 1.0))
 
-    return DyadMotion(body_a, body_b, assembled, det / La, transmission, {"b": (s, ds, dds)})
-
+    return DyadMotion(body_a, body_b, assembled, normalised, transmission, {"b": (s, ds, dds)})
 
 def rpr_motion(P: PointState, Q: PointState, a_pin, b_pin, slide_local, slide_angle, branch) -> DyadMotion:
     """RPR dyad: block a pinned at P slides along a line of rocker b, which is pinned at Q.
@@ -292,41 +216,16 @@ def rpr_motion(P: PointState, Q: PointState, a_pin, b_pin, slide_local, slide_an
     """
     cx = slide_local[0] - b_pin[0]
     cy = slide_local[1] - b_pin[1]
-    cb, sb_ = np.cos(slide_angle), np.sin(slide_angle)
-    e = cb * cy - sb_ * cx
-    dx, dy = P.x - Q.x, P.y - Q.y
-    D = np.hypot(dx, dy)
-    ratio = e / D
-    # The block's pin on the rocker's pivot (D = 0) leaves the rocker free to turn: a singular position.
-    coincident = D == 0.0
-    assembled = (np.abs(ratio) <= 1.0 + ASSEMBLY_TOL) | coincident
-    shift = np.arcsin(np.clip(np.where(assembled, ratio, np.nan), -1.0, 1.0))
-    psi = np.arctan2(dy, dx) - (shift if branch == 1 else np.pi - shift)
-    ux, uy = np.cos(psi), np.sin(psi)
-    theta_b = psi - slide_angle
-    c_b, s_b = np.cos(theta_b), np.sin(theta_b)
-    rcx = c_b * cx - s_b * cy
-    rcy = s_b * cx + c_b * cy
-    t = ux * (dx - rcx) + uy * (dy - rcy)
-    nx, ny = -uy, ux
-    det = dx * ux + dy * uy
-    cross_du = dx * uy - dy * ux
-    wx, wy = P.vx - Q.vx, P.vy - Q.vy
-    om = (wx * nx + wy * ny) / det
-    dt = (wx * ux + wy * uy) - om * cross_du
-    wax = P.ax - Q.ax + om * om * dx - 2.0 * om * dt * nx
-    way = P.ay - Q.ay + om * om * dy - 2.0 * om * dt * ny
-    al = (wax * nx + way * ny) / det
-    ddt = (wax * ux + way * uy) - al * cross_du
+    e = np.cos(slide_angle) * cy - np.sin(slide_angle) * cx
+    (assembled, _co, psi, ux, uy, theta_b, c_b, s_b, t, om, al, dt, ddt, det, D, normalised) = forms.rpr_motion(
+        P.x, P.y, P.vx, P.vy, P.ax, P.ay, Q.x, Q.y, Q.vx, Q.vy, Q.ax, Q.ay, cx, cy, e, slide_angle, branch)
     rocker = body_from_point(Q, b_pin, theta_b, om, al, c_b, s_b)
     block = body_from_point(P, a_pin, psi, om, al, ux, uy)
 
     def transmission():
         return np.arcsin(np.clip(np.abs(det) / D, 0.0, 1.0))
 
-    det = np.where(coincident, 0.0, det / D) if np.any(coincident) else det / D
-    return DyadMotion(block, rocker, assembled, det, transmission, {"a": (t, dt, ddt)})
-
+    return DyadMotion(block, rocker, assembled, normalised, transmission, {"a": (t, dt, ddt)})
 
 def prp_motion(Si: BodyState, g1_local, g1_angle, Sj: BodyState, g2_local, g2_angle, a_inner, b_inner) -> DyadMotion:
     """PRP dyad: slider a on a guide of body Si, slider b on a guide of body Sj, pinned together at B.
@@ -365,29 +264,10 @@ def prp_motion(Si: BodyState, g1_local, g1_angle, Sj: BodyState, g2_local, g2_an
     """
     G1, u1x, u1y, ang1 = _guide_frame(Si, g1_local, g1_angle)
     G2, u2x, u2y, ang2 = _guide_frame(Sj, g2_local, g2_angle)
-    cr = u1x * u2y - u1y * u2x
-    assembled = np.abs(cr) > 1e-12
-    cr = np.where(assembled, cr, np.nan)
-    Dx, Dy = G2.x - G1.x, G2.y - G1.y
-    s1 = (Dx * u2y - Dy * u2x) / cr
-    s2 = (Dx * u1y - Dy * u1x) / cr
-    bx, by = G1.x + s1 * u1x, G1.y + s1 * u1y
-    g1x, g1y = bx - G1.x, by - G1.y
-    g2x, g2y = bx - G2.x, by - G2.y
-    vix, viy = G1.vx - Si.omega * g1y, G1.vy + Si.omega * g1x
-    vjx, vjy = G2.vx - Sj.omega * g2y, G2.vy + Sj.omega * g2x
-    wx, wy = vjx - vix, vjy - viy
-    ds1 = (wx * u2y - wy * u2x) / cr
-    ds2 = (wx * u1y - wy * u1x) / cr
-    wi2, wj2 = Si.omega * Si.omega, Sj.omega * Sj.omega
-    aix = G1.ax - Si.alpha * g1y - wi2 * g1x - 2.0 * ds1 * Si.omega * u1y
-    aiy = G1.ay + Si.alpha * g1x - wi2 * g1y + 2.0 * ds1 * Si.omega * u1x
-    ajx = G2.ax - Sj.alpha * g2y - wj2 * g2x - 2.0 * ds2 * Sj.omega * u2y
-    ajy = G2.ay + Sj.alpha * g2x - wj2 * g2y + 2.0 * ds2 * Sj.omega * u2x
-    wax, way = ajx - aix, ajy - aiy
-    dds1 = (wax * u2y - way * u2x) / cr
-    dds2 = (wax * u1y - way * u1x) / cr
-    B = PointState(bx, by, vix + ds1 * u1x, viy + ds1 * u1y, aix + dds1 * u1x, aiy + dds1 * u1y)
+    (assembled, cr, s1, s2, bx, by, Bvx, Bvy, Bax, Bay, ds1, ds2, dds1, dds2) = forms.prp_motion(
+        G1.x, G1.y, G1.vx, G1.vy, G1.ax, G1.ay, Si.omega, Si.alpha, u1x, u1y,
+        G2.x, G2.y, G2.vx, G2.vy, G2.ax, G2.ay, Sj.omega, Sj.alpha, u2x, u2y)
+    B = PointState(bx, by, Bvx, Bvy, Bax, Bay)
     body_a = body_from_point(B, a_inner, ang1, Si.omega, Si.alpha, u1x, u1y)
     body_b = body_from_point(B, b_inner, ang2, Sj.omega, Sj.alpha, u2x, u2y)
 
@@ -396,15 +276,15 @@ def prp_motion(Si: BodyState, g1_local, g1_angle, Sj: BodyState, g2_local, g2_an
 
     return DyadMotion(body_a, body_b, assembled, cr, transmission, {"a": (s1, ds1, dds1), "b": (s2, ds2, dds2)})
 
-
 # ------------------------------------------------------------------------------------------ kinetostatics
 # Loads on a body are (Fx, Fy, M) with M about the global origin. The moment about a point X is
 # M - cross(X, F). Each solver returns the reactions ON the dyad's bodies.
 
 
-def _moment_about(load, x, y):
+def _load(load) -> tuple[Any, Any, Any]:
+    """(Fx, Fy, M) of a load resultant, as the forms take it."""
     fx, fy, m = load
-    return m - (x * fy - y * fx)
+    return fx, fy, m
 
 
 def rrr_forces(load_a, load_b, P, Q, B):
@@ -435,18 +315,8 @@ def rrr_forces(load_a, load_b, P, Q, B):
     >>> [tuple(round(float(f), 6) + 0.0 for f in force) for force in reactions]
     [(26.666667, 30.0), (-26.666667, 0.0), (26.666667, 20.0)]
     """
-    Sx = -(load_a[0] + load_b[0])
-    Sy = -(load_a[1] + load_b[1])
-    px, py = P.x - B.x, P.y - B.y
-    qx, qy = Q.x - B.x, Q.y - B.y
-    c1 = -_moment_about(load_a, B.x, B.y)
-    c2 = (qx * Sy - qy * Sx) + _moment_about(load_b, B.x, B.y)
-    det = px * qy - py * qx
-    fpx = (c1 * qx - px * c2) / det
-    fpy = (qy * c1 - py * c2) / det
-    fqx, fqy = Sx - fpx, Sy - fpy
+    fpx, fpy, fqx, fqy = forms.rrr_forces(*_load(load_a), *_load(load_b), P.x, P.y, Q.x, Q.y, B.x, B.y)
     return (fpx, fpy), (fqx, fqy), (fpx + load_a[0], fpy + load_a[1])
-
 
 def rrp_forces(load_a, load_b, P, B, ux, uy):
     """RRP reactions: F_P on link a at its pin, F_ab on the slider from a at B, and the guide's normal force N
@@ -479,15 +349,8 @@ def rrp_forces(load_a, load_b, P, B, ux, uy):
     >>> [round(float(f), 6) + 0.0 for f in f_p], round(float(normal), 6), round(float(couple), 6)
     ([0.0, 10.0], 20.0, -6.0)
     """
-    Sx = -(load_a[0] + load_b[0])
-    Sy = -(load_a[1] + load_b[1])
-    px, py = P.x - B.x, P.y - B.y
-    nx, ny = -uy, ux
-    N = ((px * Sy - py * Sx) + _moment_about(load_a, B.x, B.y)) / (px * ny - py * nx)
-    fpx, fpy = Sx - N * nx, Sy - N * ny
-    couple = -_moment_about(load_b, B.x, B.y)
+    fpx, fpy, N, _nx, _ny, couple = forms.rrp_forces(*_load(load_a), *_load(load_b), P.x, P.y, B.x, B.y, ux, uy)
     return (fpx, fpy), (fpx + load_a[0], fpy + load_a[1]), N, couple
-
 
 def rpr_forces(load_a, load_b, P, Q, ux, uy):
     """RPR reactions: F_P on the block at its pin, F_Q on the rocker at its pin, and the slide's normal force N
@@ -520,15 +383,9 @@ def rpr_forces(load_a, load_b, P, Q, ux, uy):
     >>> [round(float(f), 6) + 0.0 for f in f_p + f_q], round(float(normal), 6) + 0.0
     ([0.0, 10.0, 0.0, 20.0], 0.0)
     """
-    nx, ny = -uy, ux
-    ma_p = _moment_about(load_a, P.x, P.y)
-    mb_q = _moment_about(load_b, Q.x, Q.y)
-    dx, dy = P.x - Q.x, P.y - Q.y
-    N = (mb_q + ma_p) / (dx * ny - dy * nx)
-    fp = (-N * nx - load_a[0], -N * ny - load_a[1])
-    fq = (N * nx - load_b[0], N * ny - load_b[1])
-    return fp, fq, N, -ma_p
-
+    fpx, fpy, fqx, fqy, N, _nx, _ny, couple = forms.rpr_forces(*_load(load_a), *_load(load_b), P.x, P.y, Q.x, Q.y,
+                                                               ux, uy)
+    return (fpx, fpy), (fqx, fqy), N, couple
 
 def prp_forces(load_a, load_b, B, u1, u2):
     """PRP reactions: guide normal forces N_a (on a along n1), N_b (on b along n2) at B, their couples, and F_ab on
@@ -559,14 +416,6 @@ def prp_forces(load_a, load_b, B, u1, u2):
     >>> [round(float(v), 6) + 0.0 for v in (n_a, c_a, n_b, c_b)]
     [30.0, -3.0, 0.0, -6.0]
     """
-    Sx = -(load_a[0] + load_b[0])
-    Sy = -(load_a[1] + load_b[1])
-    n1x, n1y = -u1[1], u1[0]
-    n2x, n2y = -u2[1], u2[0]
-    cr = n1x * n2y - n1y * n2x
-    Na = (Sx * n2y - Sy * n2x) / cr
-    Nb = (n1x * Sy - n1y * Sx) / cr
-    ca = -_moment_about(load_a, B.x, B.y)
-    cb = -_moment_about(load_b, B.x, B.y)
-    f_ab = (Na * n1x + load_a[0], Na * n1y + load_a[1])
-    return Na, ca, Nb, cb, f_ab
+    Na, ca, Nb, cb, n1x, n1y, _n2x, _n2y = forms.prp_forces(*_load(load_a), *_load(load_b), B.x, B.y,
+                                                            u1[0], u1[1], u2[0], u2[1])
+    return Na, ca, Nb, cb, (Na * n1x + load_a[0], Na * n1y + load_a[1])

@@ -26,6 +26,7 @@ import numpy as np
 
 from ..errors import InputError, check_finite
 from .averages import angle_weights
+from .dyad_forms import scalar_forms
 from .engines import use_fused
 from .fused_source import KERNEL_BODY_FIELDS, SUMMARY_FIELDS, Generated, Unsupported, generate
 from .kinematics import DyadReport, Kinematics, SlideMotion, kinematics_result
@@ -34,6 +35,14 @@ from .refs import GROUND, column, full
 from .state import BodyState
 
 _KERNELS: dict[str, Any] = {}
+_FORMS: dict[str, Any] = {}
+
+
+def _forms() -> dict[str, Any]:
+    """The dyad forms compiled for scalars, under the names the kernels call them by (``F_rrr_motion`` ...)."""
+    if not _FORMS:
+        _FORMS.update({f"F_{name}": form for name, form in vars(scalar_forms()).items()})
+    return _FORMS
 _NO_ROWS = np.zeros((1, 1))  # the per-position load table of a mechanism without such loads (never read)
 
 
@@ -75,9 +84,10 @@ def _load_kernel(generated: Generated, mode: str):
         module = importlib.util.module_from_spec(spec)
         sys.modules[name] = module
         spec.loader.exec_module(module)
+        vars(module).update(_forms())
         kernel = numba.njit(cache=True, error_model="numpy", nogil=True)(module.kernel)
     else:  # no writable cache: compile from the text, for this session only
-        namespace: dict[str, Any] = {}
+        namespace: dict[str, Any] = dict(_forms())
         exec(compile(source, f"<machdyn fused kernel {key}>", "exec"), namespace)
         kernel = numba.njit(error_model="numpy", nogil=True)(namespace["kernel"])
     _KERNELS[key] = generated.kernels[mode] = kernel

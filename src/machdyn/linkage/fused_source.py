@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from .dyad_forms import forms_version
 from .loads import window
 from .model import joints
 from .refs import GROUND, split_ref
@@ -64,10 +65,10 @@ class Generated:
         return self.texts[mode]
 
     def key(self, mode: str) -> str:
-        """The kernel's name: a hash of its text."""
+        """The kernel's name: a hash of its text and of the dyad forms it calls."""
         import hashlib
 
-        return hashlib.sha1(self.source(mode).encode()).hexdigest()[:16]
+        return hashlib.sha1((forms_version() + self.source(mode)).encode()).hexdigest()[:16]
 
 
 @dataclass
@@ -136,6 +137,12 @@ class Generator:
 
     def emit(self, section: list, text: str) -> None:
         section.extend(line.strip() for line in text.strip().splitlines())
+
+    def call(self, prefix: str, form: str, outputs: tuple[str, ...], args: list[str],
+             section: list | None = None) -> None:
+        """``prefix + output`` for each output = the dyad form ``form`` (:mod:`.dyad_forms`) of ``args``."""
+        names = ", ".join(prefix + o for o in outputs)
+        self.emit(self.motion if section is None else section, f"{names} = F_{form}({', '.join(args)})")
 
     def state(self, body: str) -> dict[str, str]:
         return _GROUND_STATE if body == GROUND else self.bodies[body]
