@@ -1,0 +1,143 @@
+"""The fused population pass: every per-design number of a population of designs (status checks, transmission
+angles, strokes, time ratios, inertial shaking, the compactor plate's figures and, when asked, the
+kinetostatic summaries) in one compiled pass over designs x crank positions.
+
+The kernel is generated from the mechanism's code (:mod:`.fused_source`): per design, one loop over the
+positions fills a small scratch table (rows below), which :func:`.fused_reduce.motion_summary` and the force
+summaries' reduction turn into that design's numbers. No designs x positions array is made. The NumPy path of
+:func:`machdyn.results.population.evaluate_population` stays the reference; the tests check both agree.
+
+Scratch rows of a design: 0 closure, 1 regular (closes, no dyad dead), 2.. the dyads' normalised determinants,
+then their transmission angles [rad], then per output its value and rate, then (``inertial``) the inertia force
+-M a_G [N] (x, y) and the inertial shaking moment [N*m], then (``plate``) the plate's angle [rad], then
+(``forces``) the rows of the force summaries (:func:`.fused_source.summary_rows`).
+"""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .averages import angle_weights
+from .fused import _load_kernel, _prepared, crank_trig, drive_table
+from .fused_source import SUMMARY_FIELDS, Generated, _indent, _loops, summary_reduction, summary_rows
+from .kinematics import is_full_turn
+from .loads import window
+
+#: The text of the reductions, hashed into each kernel's text: a changed reduction is a new kernel (numba's
+#: cache does not follow a kernel's callees).
+_REDUCE_VERSION = hashlib.sha1((Path(__file__).parent / "fused_reduce.py").read_bytes()).hexdigest()[:12]
+
+
+@dataclass(frozen=True)
+class PopulationRun:
+    """Per-design results of a fused population pass (arrays of N designs)."""
+
+    motion: np.ndarray  # (N, columns of fused_reduce.motion_summary)
+    forces: np.ndarray | None  # (N, SUMMARY_FIELDS + joints) when forces were asked for
+    generated: Generated
+    dyads: int
+    outputs: list[str]
+
+
+def population_text(g: Generated, forces: bool, inertial: bool, plate: str | None) -> str:
+    """The population kernel's text (see the module docstring)."""
+    sec = g.sections
+    nd = len(sec["transmission"])
+    outputs = sec["outputs"]
+    no = len(outputs) // 2
+    rows = 2 + 2 * nd + 2 * no
+    stores = [f"B[{2 + d}, j] = {det}" for d, det in enumerate(sec["dead"])]
+    stores += [f"B[{2 + nd + d}, j] = {mu}" for d, mu in enumerate(sec["transmission"])]
+    for o in range(no):
+        value = outputs[2 * o].split(":", 1)[1]
+        stores += [f"B[{2 + 2 * nd + 2 * o}, j] = {value}", f"B[{3 + 2 * nd + 2 * o}, j] = {outputs[2 * o + 1]}"]
+    work = ["om = Wi[j]", "ep = Ei[j]"] + sec["motion"]
+    ri = rp = -1
+    if inertial:
+        ri = rows
+        work += sec["inertial"]
+        stores += [f"B[{ri}, j] = (-im_m) * (im_ax / im_m) if im_m > 0.0 else 0.0",
+                   f"B[{ri + 1}, j] = (-im_m) * (im_ay / im_m) if im_m > 0.0 else 0.0",
+                   f"B[{ri + 2}, j] = im_mz"]
+        rows += 3
+    if plate is not None:
+        rp = rows
+        angle = dict(a.split(":", 1) for a in sec["angles"])[plate]
+        stores.append(f"B[{rp}, j] = {angle}")
+        rows += 1
+    scratch, force_stores = summary_rows(g, rows)
+    if forces:
+        work += sec["forces"]
+        stores = force_stores + stores
+        reduction = summary_reduction(g)
+    else:
+        stores = force_stores[:2] + stores
+        scratch, reduction = scratch[:2], ""
+    return f"""import math
+
+from machdyn.linkage.fused_reduce import motion_summary  # reductions version {_REDUCE_VERSION}
+
+
+def kernel(P, C0, S0, W, E, DW, LP, about, weighted, full, PH, KINDS, OUT, B, OUTM):
+    n = OUTM.shape[0]
+    m = C0.shape[0]
+    zx = about[0]
+    zy = about[1]
+    for i in range(n):
+        ip = i if P.shape[0] > 1 else 0
+        Wi = W[i if W.shape[0] > 1 else 0]
+        Ei = E[i if E.shape[0] > 1 else 0]
+{_indent(sec["prologue"], 2)}
+{_indent(scratch, 2)}
+{"".join(_loops(work, stores))}
+        motion_summary(B, {nd}, KINDS, {ri}, {rp}, full, PH, OUTM[i])
+{reduction}
+"""
+
+
+def scratch_rows(g: Generated, forces: bool, inertial: bool, plate: str | None) -> int:
+    nd = len(g.sections["transmission"])
+    rows = 2 + 2 * nd + len(g.sections["outputs"]) + (3 if inertial else 0) + (1 if plate is not None else 0)
+    return rows + (4 + len(g.joints) if forces else 0)
+
+
+def motion_columns(g: Generated, inertial: bool, plate: str | None) -> int:
+    return 5 + 3 * len(g.sections["transmission"]) + len(g.sections["outputs"]) + (2 if inertial else 0) + (
+        2 if plate is not None else 0)
+
+
+def run_population(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 0.0), forces: bool = False,
+                   inertial: bool = False, plate: str | None = None, active=None) -> PopulationRun:
+    """One fused population pass over ``designs`` designs x crank angles ``phi`` [rad] at crank ``speed``
+    [rad/s] and ``acceleration`` [rad/s^2] (floats, one per design or per angle). ``forces``: the force
+    summaries too (shaking moments about ``about`` [m]); ``inertial``: the inertial shaking force and moment;
+    ``plate``: the body whose angle is the compactor plate's, pressing over the crank window ``active``."""
+    phi = np.ascontiguousarray(phi, dtype=float)
+    generated, P = _prepared(mech, phi)
+    mode = f"population-{int(forces)}{int(inertial)}-{plate or ''}"
+    if mode not in generated.texts:
+        generated.texts[mode] = population_text(generated, forces, inertial, plate)
+    kernel = _load_kernel(generated, mode)
+    W = drive_table(speed, phi, mech.design_count)
+    E = drive_table(acceleration, phi, mech.design_count)
+    LP = np.stack(generated.rows) if generated.rows else np.zeros((1, 1))
+    DW = np.ascontiguousarray(np.broadcast_to(angle_weights(phi), phi.shape), dtype=float)
+    weighted = bool(np.all(W != 0.0))
+    C0, S0 = crank_trig(phi)
+    PH = np.empty((3, phi.size))
+    PH[0] = phi
+    PH[1] = np.mod(np.roll(phi, -1) - phi, 2 * np.pi)
+    PH[2] = np.broadcast_to(np.asarray(window(phi, active), dtype=float), phi.shape) if plate else 0.0
+    kinds = np.array([1 if o.startswith("angle:") else 0 for o in generated.sections["outputs"][::2]],
+                     dtype=np.int64)
+    OUTM = np.empty((designs, motion_columns(generated, inertial, plate)))
+    OUT = np.empty((designs if forces else 0, len(SUMMARY_FIELDS) + len(generated.joints)))
+    B = np.empty((scratch_rows(generated, forces, inertial, plate), phi.size))
+    kernel(P, C0, S0, W, E, DW, LP, np.asarray(about, dtype=float), weighted, is_full_turn(phi), PH, kinds,
+           OUT, B, OUTM)
+    return PopulationRun(OUTM, OUT if forces else None, generated, len(generated.sections["transmission"]),
+                         [o.split(":", 1)[1] for o in generated.sections["outputs"][::2]])
