@@ -40,6 +40,7 @@ WINDOW = (math.radians(220.0), math.radians(260.0))
 GAMMA_MAX = math.radians(20.0)
 MU_MIN = math.radians(45.0)
 TARGET_RATIO = 50.0
+POSITIONS = 360  # crank positions per design, for every optimiser (the example searches at 180)
 
 
 def machdyn_problem(forces: bool):
@@ -52,7 +53,7 @@ def machdyn_problem(forces: bool):
     derived = {"mechanism.ground.length": f"hypot(l, {H})", "mechanism.ground.angle": f"atan2({H}, l)",
                "mechanism.coupler_point[0]": f"l - {A_FROM_B}"}
     constraints = [c for c in spec.constraints if forces or c.result != "driving_torque.max_abs"]
-    return problem, spec.model_copy(update={"variables": variables, "derived": derived,
+    return problem, spec.model_copy(update={"variables": variables, "derived": derived, "positions": POSITIONS,
                                             "constraints": constraints, "tolerance": 1e-300})
 
 

@@ -82,8 +82,7 @@ def rrr_code(gen: Generator, d) -> None:
     gen.place(d.a, *anchor_a, f"{k}oa", f"{k}aa", f"{k}ca", f"{k}sa", ("atan2",))
     gen.place(d.b, *anchor_b, f"{k}ob", f"{k}ab", f"{k}cb", f"{k}sb", ("atan2",))
     # The transmission angle at B, 0..pi (dyads.rrr_motion: arccos of the links' normalised dot product).
-    mu = f"math.acos(min(max(({k}px * {k}qx + {k}py * {k}qy) / ({La} * {Lb}), -1.0), 1.0))"
-    gen.dyad_check(f"{k}ok", f"{k}dn", f"{d.a}-{d.b}", mu)
+    gen.dyad_check(f"{k}ok", f"{k}dn", f"{d.a}-{d.b}", ("acos", f"({k}px * {k}qx + {k}py * {k}qy) / ({La} * {Lb})"))
 
     def forces(gen: Generator) -> None:
         la, lb = gen.load(d.a), gen.load(d.b)
@@ -182,7 +181,7 @@ def rrp_code(gen: Generator, d) -> None:
     anchor, anchor_local = _anchor(P, a_pin, B, a_inner)
     gen.place(d.a, anchor, anchor_local, f"{k}oa", f"{k}aa", f"{k}ca", f"{k}sa", ("atan2",))
     gen.place(d.b, B, b_inner, S["w"], S["al"], ux, uy, g_angle)
-    gen.dyad_check(f"{k}ok", f"{k}dn", f"{d.a}-{d.b}", f"math.asin(min(max(abs({k}det) / {La}, 0.0), 1.0))")
+    gen.dyad_check(f"{k}ok", f"{k}dn", f"{d.a}-{d.b}", ("asin", f"abs({k}det) / {La}"))
     gen.series_out(f"slide.{d.b}", {"s": f"{k}s", "v": f"{k}ds", "a": f"{k}dds"})
 
     def forces(gen: Generator) -> None:
@@ -268,8 +267,8 @@ def rpr_code(gen: Generator, d) -> None:
     gen.place(d.b, Q, b_pin, f"{k}om", f"{k}al", f"{k}cb", f"{k}sb", ("value", f"{k}tb"))
     gen.place(d.a, P, a_pin, f"{k}om", f"{k}al", f"{k}ux", f"{k}uy", ("value", f"{k}psi"))
     # dyads.rpr_motion's transmission reads its normalised determinant (the name is rebound before it is
-    # called), so it is arcsin(|det / D| / D): the same here, so that both engines agree.
-    gen.dyad_check(f"{k}ok", f"{k}dn", f"{d.a}-{d.b}", f"math.asin(min(max(abs({k}dn) / {k}D, 0.0), 1.0))")
+    # called), so it is arcsin of |det / D| / D: the same here, so that both engines agree.
+    gen.dyad_check(f"{k}ok", f"{k}dn", f"{d.a}-{d.b}", ("asin", f"abs({k}dn) / {k}D"))
     gen.series_out(f"slide.{d.a}", {"s": f"{k}t", "v": f"{k}dt", "a": f"{k}ddt"})
 
     def forces(gen: Generator) -> None:
@@ -348,7 +347,7 @@ def prp_code(gen: Generator, d) -> None:
     B = {"x": f"{k}bx", "y": f"{k}by", "vx": f"{k}Bvx", "vy": f"{k}Bvy", "ax": f"{k}Bax", "ay": f"{k}Bay"}
     gen.place(d.a, B, a_inner, Si["w"], Si["al"], u1x, u1y, ang1)
     gen.place(d.b, B, b_inner, Sj["w"], Sj["al"], u2x, u2y, ang2)
-    gen.dyad_check(f"{k}ok", f"{k}cr", f"{d.a}-{d.b}", f"math.asin(min(max(abs({k}cr), 0.0), 1.0))")
+    gen.dyad_check(f"{k}ok", f"{k}cr", f"{d.a}-{d.b}", ("asin", f"abs({k}cr)"))
     gen.series_out(f"slide.{d.a}", {"s": f"{k}s1", "v": f"{k}ds1", "a": f"{k}dds1"})
     gen.series_out(f"slide.{d.b}", {"s": f"{k}s2", "v": f"{k}ds2", "a": f"{k}dds2"})
 

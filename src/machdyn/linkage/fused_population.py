@@ -8,14 +8,15 @@ summaries' reduction turn into that design's numbers. No designs x positions arr
 :func:`machdyn.results.population.evaluate_population` stays the reference; the tests check both agree.
 
 Scratch rows of a design: 0 closure, 1 regular (closes, no dyad dead), 2.. the dyads' normalised determinants,
-then their transmission angles [rad], then per output its value and rate, then (``inertial``) the inertia force
--M a_G [N] (x, y) and the inertial shaking moment [N*m], then (``plate``) the plate's angle [rad], then
+then the arguments of their transmission angles, then per output its value and rate, then (``inertial``) the inertia force
+-M a_G [N] (x, y) and the inertial shaking moment [N*m], then (``plate``) the plate's cos and sin, then
 (``forces``) the rows of the force summaries (:func:`.fused_source.summary_rows`).
 """
 
 from __future__ import annotations
 
 import hashlib
+import os
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -32,6 +33,27 @@ from .loads import window
 _REDUCE_VERSION = hashlib.sha1((Path(__file__).parent / "fused_reduce.py").read_bytes()).hexdigest()[:12]
 
 
+#: Positions (designs x crank angles) below which one thread runs the whole pass (a thread's start costs more).
+MIN_POSITIONS_PER_THREAD = 20_000
+_POOL: list = []
+
+
+def _threads() -> int:
+    """Threads of a population pass: ``$MACHDYN_THREADS``, else the processors this process may use."""
+    value = os.environ.get("MACHDYN_THREADS")
+    if value:
+        return max(1, int(value))
+    return max(1, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1))
+
+
+def _pool():
+    from concurrent.futures import ThreadPoolExecutor
+
+    if not _POOL:
+        _POOL.append(ThreadPoolExecutor(max_workers=_threads(), thread_name_prefix="machdyn-fused"))
+    return _POOL[0]
+
+
 @dataclass(frozen=True)
 class PopulationRun:
     """Per-design results of a fused population pass (arrays of N designs)."""
@@ -43,7 +65,7 @@ class PopulationRun:
     outputs: list[str]
 
 
-def population_text(g: Generated, forces: bool, inertial: bool, plate: str | None) -> str:
+def population_text(g: Generated, forces: bool, inertial: bool, plate: str | None, strokes: bool) -> str:
     """The population kernel's text (see the module docstring)."""
     sec = g.sections
     nd = len(sec["transmission"])
@@ -51,10 +73,11 @@ def population_text(g: Generated, forces: bool, inertial: bool, plate: str | Non
     no = len(outputs) // 2
     rows = 2 + 2 * nd + 2 * no
     stores = [f"B[{2 + d}, j] = {det}" for d, det in enumerate(sec["dead"])]
-    stores += [f"B[{2 + nd + d}, j] = {mu}" for d, mu in enumerate(sec["transmission"])]
+    stores += [f"B[{2 + nd + d}, j] = {arg}" for d, (_f, arg) in enumerate(sec["transmission"])]
     for o in range(no):
-        value = outputs[2 * o].split(":", 1)[1]
-        stores += [f"B[{2 + 2 * nd + 2 * o}, j] = {value}", f"B[{3 + 2 * nd + 2 * o}, j] = {outputs[2 * o + 1]}"]
+        if strokes:
+            stores.append(f"B[{2 + 2 * nd + 2 * o}, j] = {outputs[2 * o].split(':', 1)[1]}")
+        stores.append(f"B[{3 + 2 * nd + 2 * o}, j] = {outputs[2 * o + 1]}")
     work = ["om = Wi[j]", "ep = Ei[j]"] + sec["motion"]
     ri = rp = -1
     if inertial:
@@ -66,9 +89,9 @@ def population_text(g: Generated, forces: bool, inertial: bool, plate: str | Non
         rows += 3
     if plate is not None:
         rp = rows
-        angle = dict(a.split(":", 1) for a in sec["angles"])[plate]
-        stores.append(f"B[{rp}, j] = {angle}")
-        rows += 1
+        c, s = {a.split(":")[0]: a.split(":")[1:] for a in sec["angles"]}[plate]
+        stores += [f"B[{rp}, j] = {c}", f"B[{rp + 1}, j] = {s}"]
+        rows += 2
     scratch, force_stores = summary_rows(g, rows)
     if forces:
         work += sec["forces"]
@@ -82,7 +105,7 @@ def population_text(g: Generated, forces: bool, inertial: bool, plate: str | Non
 from machdyn.linkage.fused_reduce import motion_summary  # reductions version {_REDUCE_VERSION}
 
 
-def kernel(P, C0, S0, W, E, DW, LP, about, weighted, full, PH, KINDS, OUT, B, OUTM):
+def kernel(P, C0, S0, W, E, DW, LP, about, weighted, full, PH, TK, KINDS, OUT, B, OUTM):
     n = OUTM.shape[0]
     m = C0.shape[0]
     zx = about[0]
@@ -94,14 +117,14 @@ def kernel(P, C0, S0, W, E, DW, LP, about, weighted, full, PH, KINDS, OUT, B, OU
 {_indent(sec["prologue"], 2)}
 {_indent(scratch, 2)}
 {"".join(_loops(work, stores))}
-        motion_summary(B, {nd}, KINDS, {ri}, {rp}, full, PH, OUTM[i])
+        motion_summary(B, {nd}, TK, KINDS, {ri}, {rp}, full, PH, OUTM[i])
 {reduction}
 """
 
 
 def scratch_rows(g: Generated, forces: bool, inertial: bool, plate: str | None) -> int:
     nd = len(g.sections["transmission"])
-    rows = 2 + 2 * nd + len(g.sections["outputs"]) + (3 if inertial else 0) + (1 if plate is not None else 0)
+    rows = 2 + 2 * nd + len(g.sections["outputs"]) + (3 if inertial else 0) + (2 if plate is not None else 0)
     return rows + (4 + len(g.joints) if forces else 0)
 
 
@@ -111,16 +134,18 @@ def motion_columns(g: Generated, inertial: bool, plate: str | None) -> int:
 
 
 def run_population(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 0.0), forces: bool = False,
-                   inertial: bool = False, plate: str | None = None, active=None) -> PopulationRun:
+                   inertial: bool = False, plate: str | None = None, active=None, strokes: bool = True,
+                   ) -> PopulationRun:
     """One fused population pass over ``designs`` designs x crank angles ``phi`` [rad] at crank ``speed``
     [rad/s] and ``acceleration`` [rad/s^2] (floats, one per design or per angle). ``forces``: the force
     summaries too (shaking moments about ``about`` [m]); ``inertial``: the inertial shaking force and moment;
-    ``plate``: the body whose angle is the compactor plate's, pressing over the crank window ``active``."""
+    ``plate``: the body whose angle is the compactor plate's, pressing over the crank window ``active``;
+    ``strokes``: the outputs' strokes (NaN without)."""
     phi = np.ascontiguousarray(phi, dtype=float)
     generated, P = _prepared(mech, phi)
-    mode = f"population-{int(forces)}{int(inertial)}-{plate or ''}"
+    mode = f"population-{int(forces)}{int(inertial)}{int(strokes)}-{plate or ''}"
     if mode not in generated.texts:
-        generated.texts[mode] = population_text(generated, forces, inertial, plate)
+        generated.texts[mode] = population_text(generated, forces, inertial, plate, strokes)
     kernel = _load_kernel(generated, mode)
     W = drive_table(speed, phi, mech.design_count)
     E = drive_table(acceleration, phi, mech.design_count)
@@ -132,12 +157,26 @@ def run_population(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 
     PH[0] = phi
     PH[1] = np.mod(np.roll(phi, -1) - phi, 2 * np.pi)
     PH[2] = np.broadcast_to(np.asarray(window(phi, active), dtype=float), phi.shape) if plate else 0.0
-    kinds = np.array([1 if o.startswith("angle:") else 0 for o in generated.sections["outputs"][::2]],
-                     dtype=np.int64)
+    kinds = np.array([(1 if o.startswith("angle:") else 0) if strokes else -1
+                      for o in generated.sections["outputs"][::2]], dtype=np.int64)
+    TK = np.array([1 if f == "acos" else 0 for f, _arg in generated.sections["transmission"]], dtype=np.int64)
     OUTM = np.empty((designs, motion_columns(generated, inertial, plate)))
     OUT = np.empty((designs if forces else 0, len(SUMMARY_FIELDS) + len(generated.joints)))
-    B = np.empty((scratch_rows(generated, forces, inertial, plate), phi.size))
-    kernel(P, C0, S0, W, E, DW, LP, np.asarray(about, dtype=float), weighted, is_full_turn(phi), PH, kinds,
-           OUT, B, OUTM)
+    rows = scratch_rows(generated, forces, inertial, plate)
+    full, about = is_full_turn(phi), np.asarray(about, dtype=float)
+
+    def part(start: int, stop: int) -> None:
+        def cut(table):
+            return table[start:stop] if table.shape[0] > 1 else table
+
+        kernel(cut(P), C0, S0, cut(W), cut(E), DW, LP, about, weighted, full, PH, TK, kinds,
+               OUT[start:stop] if forces else OUT, np.empty((rows, phi.size)), OUTM[start:stop])
+
+    threads = min(_threads(), max(1, designs * phi.size // MIN_POSITIONS_PER_THREAD))
+    if threads <= 1:
+        part(0, designs)
+    else:  # the kernel releases the GIL: the designs are shared out between threads
+        bounds = np.linspace(0, designs, threads + 1).astype(int)
+        list(_pool().map(part, bounds[:-1], bounds[1:]))
     return PopulationRun(OUTM, OUT if forces else None, generated, len(generated.sections["transmission"]),
                          [o.split(":", 1)[1] for o in generated.sections["outputs"][::2]])

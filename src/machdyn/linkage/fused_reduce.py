@@ -29,7 +29,10 @@ STATUS = ("assembled", "assembled_fraction", "dead_point", "near_dead_point", "b
 
 @numba.njit(cache=True, error_model="numpy", nogil=True)
 def _pymod(a, b):
-    """a mod b with the sign of b (numpy.mod of floats)."""
+    """a mod b with the sign of b (numpy.mod of floats, b > 0); a itself when 0 <= a < b, as fmod gives it,
+    without the division."""
+    if 0.0 <= a < b:
+        return a
     return a % b
 
 
@@ -45,13 +48,11 @@ def _stroke(values, ok, angle, m):
         p = values[j] if ok[j] > 0.5 else 0.0
         if angle and j > 0:
             dd = p - prev
-            ddmod = _pymod(dd + math.pi, TWO_PI) - math.pi
-            if ddmod == -math.pi and dd > 0.0:
-                ddmod = math.pi
-            correct = ddmod - dd
-            if abs(dd) < math.pi:
-                correct = 0.0
-            total += correct
+            if abs(dd) >= math.pi:  # numpy.unwrap's correction (zero for a smaller step)
+                ddmod = _pymod(dd + math.pi, TWO_PI) - math.pi
+                if ddmod == -math.pi and dd > 0.0:
+                    ddmod = math.pi
+                total += ddmod - dd
             prev = p
             p = p + total
         if ok[j] > 0.5:
@@ -92,15 +93,72 @@ def _time_ratio(rates, ok, full, phi, step, m):
 
 
 @numba.njit(cache=True, error_model="numpy", nogil=True)
-def motion_summary(B, nd, kinds, inertial, plate, full, PH, out):
+def _transmission(x, ok, acos, m, out, col):
+    """Min, max and worst (nearest 0 or pi) transmission angle [rad] of a dyad over its regular positions
+    where the angle is finite (inf, -inf, inf when none), from the argument ``x`` of arccos(clip(x, -1, 1))
+    (``acos``) or arcsin(clip(x, 0, 1)). Both functions are monotonic, so the extremes of the angle are
+    those of the argument: two inverse functions per design instead of one per position."""
+    lo = math.inf
+    hi = -math.inf
+    for j in range(m):
+        v = x[j]
+        if ok[j] > 0.5 and v == v:
+            v = min(max(v, -1.0 if acos else 0.0), 1.0)
+            if v < lo:
+                lo = v
+            if v > hi:
+                hi = v
+    if lo == math.inf:
+        out[col] = math.inf
+        out[col + 1] = -math.inf
+        out[col + 2] = math.inf
+    elif acos:  # decreasing: the smallest angle at the largest argument
+        small = math.acos(hi)
+        large = math.acos(lo)
+        out[col] = small
+        out[col + 1] = large
+        out[col + 2] = min(small, math.pi - large)
+    else:  # increasing, 0..pi/2: the worst angle is the smallest
+        small = math.asin(lo)
+        out[col] = small
+        out[col + 1] = math.asin(hi)
+        out[col + 2] = min(small, math.pi - math.asin(hi))
+
+
+@numba.njit(cache=True, error_model="numpy", nogil=True)
+def _plate(c, s, ok, PH, m, out, col):
+    """The compactor plate's largest angle to the horizontal gamma = |wrap(theta)| (at the position of its
+    smallest cos: |theta| decreases with cos theta) and the smallest k1 = 1/|cos(theta - phi)| over the
+    pressing window PH[2] (seed 003 eq 1, eq 10), theta = atan2(s, c) as the NumPy engine's body angle."""
+    low = math.inf
+    at = -1
+    k1 = math.inf
+    window = False
+    for j in range(m):
+        if ok[j] > 0.5 and c[j] < low:
+            low = c[j]
+            at = j
+        if PH[2, j] > 0.0:
+            window = True
+            if ok[j] > 0.5:
+                v = 1.0 / abs(math.cos(math.atan2(s[j], c[j]) - PH[0, j]))
+                if v < k1:
+                    k1 = v
+    out[col] = abs(_pymod(math.atan2(s[at], c[at]) + math.pi, TWO_PI) - math.pi) if at >= 0 else -math.inf
+    out[col + 1] = k1 if window else math.nan
+
+
+@numba.njit(cache=True, error_model="numpy", nogil=True)
+def motion_summary(B, nd, TK, kinds, inertial, plate, full, PH, out):
     """One design's status and motion figures from its rows ``B`` (see :mod:`.fused_population` for the
-    layout): ``nd`` dyads, ``kinds`` one flag per output (1 a rocker's angle, 0 a slider's travel), the first
-    row of the inertia loads ``inertial`` and of the plate's angle ``plate`` (-1 when not computed), ``full``
-    whether the crank angles ``PH[0]`` (steps ``PH[1]``, pressing window ``PH[2]``) cover one turn. Writes
-    ``out``: the :data:`STATUS` columns, per dyad min, max and worst (nearest 0 or pi) transmission angle [rad]
-    over the regular positions (inf, -inf, inf when none), per output stroke [m or rad] and time ratio [-],
-    then the peak inertial shaking force [N] and moment [N*m], then the plate's largest angle to the
-    horizontal [rad] and the smallest k1 over the pressing window [-] (NaN without a window)."""
+    layout): ``nd`` dyads whose transmission angle is an arccos (``TK`` 1) or an arcsin (0) of its row,
+    ``kinds`` one flag per output (1 a rocker's angle, 0 a slider's travel, -1 no stroke wanted), the first
+    row of the inertia loads ``inertial`` and of the plate's cos and sin ``plate`` (-1 when not computed),
+    ``full`` whether the crank angles ``PH[0]`` (steps ``PH[1]``, pressing window ``PH[2]``) cover one turn.
+    Writes ``out``: the :data:`STATUS` columns, per dyad min, max and worst (nearest 0 or pi) transmission
+    angle [rad] over the regular positions (inf, -inf, inf when none), per output stroke [m or rad] and time
+    ratio [-], then the peak inertial shaking force [N] and moment [N*m], then the plate's largest angle to
+    the horizontal [rad] and the smallest k1 over the pressing window [-] (NaN without a window)."""
     m = B.shape[1]
     asm = B[0]
     ok = B[1]
@@ -116,13 +174,9 @@ def motion_summary(B, nd, kinds, inertial, plate, full, PH, out):
     col = 5
     for d in range(nd):
         det = B[2 + d]
-        mu = B[2 + nd + d]
-        lo = math.inf
-        hi = -math.inf
-        worst = math.inf
         for j in range(m):
-            k = j + 1 if j + 1 < m else 0
             if asm[j] > 0.5:
+                k = j + 1 if j + 1 < m else 0
                 mag = abs(det[j])
                 if not mag >= DEAD_TOL:
                     dead = True
@@ -130,18 +184,7 @@ def motion_summary(B, nd, kinds, inertial, plate, full, PH, out):
                     near = True
                 if asm[k] > 0.5 and (full or j < m - 1) and det[j] * det[k] < 0.0:
                     branch = True
-            if ok[j] > 0.5 and math.isfinite(mu[j]):
-                v = mu[j]
-                if v < lo:
-                    lo = v
-                if v > hi:
-                    hi = v
-                w = min(v, math.pi - v)
-                if w < worst:
-                    worst = w
-        out[col] = lo
-        out[col + 1] = hi
-        out[col + 2] = worst
+        _transmission(B[2 + nd + d], ok, TK[d] == 1, m, out, col)
         col += 3
     out[0] = 1.0 if all_asm else 0.0
     out[1] = count / m
@@ -150,7 +193,7 @@ def motion_summary(B, nd, kinds, inertial, plate, full, PH, out):
     out[4] = 1.0 if branch else 0.0
     row = 2 + 2 * nd
     for o in range(kinds.shape[0]):
-        out[col] = _stroke(B[row], ok, kinds[o] == 1, m)
+        out[col] = _stroke(B[row], ok, kinds[o] == 1, m) if kinds[o] >= 0 else math.nan
         out[col + 1] = _time_ratio(B[row + 1], ok, full, PH[0], PH[1], m)
         col += 2
         row += 2
@@ -169,20 +212,4 @@ def motion_summary(B, nd, kinds, inertial, plate, full, PH, out):
         out[col + 1] = mmax
         col += 2
     if plate >= 0:
-        gmax = -math.inf
-        k1 = math.inf
-        window = False
-        for j in range(m):
-            theta = B[plate, j]
-            if ok[j] > 0.5:
-                g = abs(_pymod(theta + math.pi, TWO_PI) - math.pi)
-                if g > gmax:
-                    gmax = g
-            if PH[2, j] > 0.0:
-                window = True
-                if ok[j] > 0.5:
-                    v = 1.0 / abs(math.cos(theta - PH[0, j]))
-                    if v < k1:
-                        k1 = v
-        out[col] = gmax
-        out[col + 1] = k1 if window else math.nan
+        _plate(B[plate], B[plate + 1], ok, PH, m, out, col)

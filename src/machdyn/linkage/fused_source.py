@@ -235,8 +235,9 @@ class Generator:
         """)
         return k, f"{k}c", f"{k}s"
 
-    def dyad_check(self, assembled: str, det: str, name: str, transmission: str) -> None:
-        """A dyad's closure flag, normalised determinant and transmission angle [rad] expressions."""
+    def dyad_check(self, assembled: str, det: str, name: str, transmission: tuple[str, str]) -> None:
+        """A dyad's closure flag and normalised determinant expressions, and its transmission angle [rad] as
+        (function, argument): ("acos", x) for arccos(clip(x, -1, 1)), ("asin", x) for arcsin(clip(x, 0, 1))."""
         self.assembled.append(assembled)
         self.dead_checks.append(det)
         self.transmissions.append(transmission)
@@ -396,7 +397,7 @@ def generate(mech, phi: np.ndarray) -> Generated:
 
 def _population_sections(gen: Generator) -> dict[str, list[str]]:
     """What the population kernels (:mod:`.fused_population`) compute at each position beyond the motion:
-    every dyad's transmission angle; each output's value and rate (a slider's travel and speed, a rocker's
+    every dyad's transmission angle (its function and argument); each body's cos and sin; each output's value and rate (a slider's travel and speed, a rocker's
     angle atan2(sin, cos), as the NumPy engine's body angle, and angular velocity); and the inertia loads
     (machdyn.linkage.mass_centre): the sums over the masses of m, m a_x, m a_y (in the order of
     machdyn.linkage.loads.mass_elements) and the inertial shaking moment sum (r - z) x (-m a) - I alpha about
@@ -413,7 +414,7 @@ def _population_sections(gen: Generator) -> dict[str, list[str]]:
         out["outputs"] += [f"{kind}:{value}", rate]
     for body in gen.mech.moving_bodies:
         state = gen.bodies[body]
-        out["angles"].append(f"{body}:math.atan2({state['s']}, {state['c']})")
+        out["angles"] += [f"{body}:{state['c']}:{state['s']}"]
     mech, section = gen.mech, out["inertial"]
     masses = [(b.name, b.com, b.mass, b.inertia) for b in map(mech.body, mech.moving_bodies)]
     masses += [(pm.body, pm.position, pm.mass, pm.inertia) for pm in mech.point_masses]

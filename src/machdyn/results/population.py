@@ -226,7 +226,8 @@ def _fused(mech, phi, speed, acceleration, n, wanted, about, machine, limit, out
         if coupler is not None else None
     try:
         run = run_population(mech, phi, _column(speed, n, phi), _column(acceleration, n, phi), designs=n,
-                             about=tuple(about), forces=forces, inertial=inertial, plate=coupler, active=active)
+                             about=tuple(about), forces=forces, inertial=inertial, plate=coupler, active=active,
+                             strokes=any(k.startswith("stroke.") for k in wanted))
     except InputError:
         if engine == "fused":
             raise
