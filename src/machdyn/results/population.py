@@ -155,9 +155,13 @@ def evaluate_population(mech: Mechanism, phi, speed, acceleration, wanted: Itera
     value per design, ``about`` [m] the point of the shaking moments, ``min_transmission_angle`` [rad] the
     threshold of ``poor_transmission``. Results of designs that are not regular are NaN.
 
-    ``engine``: "numpy" (the reference: kinematics in chunks of designs, then whole-array reductions), "fused"
-    (the status, motion and force groups in one compiled pass, :mod:`machdyn.linkage.fused_population`) or
-    "auto" (fused when numba is present and the mechanism compiles). Both agree to rounding."""
+    ``engine``: "numpy" (the reference: kinematics in chunks of designs, then whole-array reductions, the
+    forces by :func:`machdyn.linkage.sweep`), "fused" (the status, motion and force groups in one compiled
+    pass, :mod:`machdyn.linkage.fused_population`: what the optimiser uses) or "auto" (the status and motion
+    groups in that pass, the forces by :func:`machdyn.linkage.sweep`, whose own choice of engine keeps a
+    sweep's force summaries as they were recorded, to the last bit: a loss-free cycle's mean power is zero
+    up to rounding noise that differs between the two engines). "fused" and "auto" fall back to the NumPy
+    path when numba is absent or the mechanism does not compile. All agree to rounding."""
     order = list(dict.fromkeys(wanted))
     wanted = set(order)
     groups = _groups(wanted)
@@ -169,11 +173,11 @@ def evaluate_population(mech: Mechanism, phi, speed, acceleration, wanted: Itera
         warnings.simplefilter("ignore", RuntimeWarning)
         forces = "forces" in groups
         status = _fused(mech, phi, speed, acceleration, n, wanted, about, machine, min_transmission_angle, out,
-                        forces, engine)
+                        forces and engine == "fused", engine)
         if status is None:  # the reference: NumPy kinematics in chunks, then the sweep for the forces
             status = _motion(mech, phi, speed, acceleration, n, wanted, about, machine, min_transmission_angle,
                              out)
-        else:
+        elif engine == "fused":
             forces = False  # computed in the same pass
         if forces:
             from ..linkage import sweep
@@ -209,7 +213,8 @@ def evaluate_population(mech: Mechanism, phi, speed, acceleration, wanted: Itera
 def _fused(mech, phi, speed, acceleration, n, wanted, about, machine, limit, out, forces, engine):
     """The status columns, and the motion and (``forces``) force groups' results into ``out``, by one fused
     pass (:func:`machdyn.linkage.fused_population.run_population`); None when the fused engine is not used
-    (``engine`` "numpy", no numba, crank angles not 1-D, or a mechanism it does not compile)."""
+    (``engine`` "numpy", no numba, crank angles not 1-D, or a mechanism it does not compile: then the NumPy
+    path computes them)."""
     from ..linkage.engines import available, check_engine
 
     check_engine(engine)
@@ -228,9 +233,7 @@ def _fused(mech, phi, speed, acceleration, n, wanted, about, machine, limit, out
         run = run_population(mech, phi, _column(speed, n, phi), _column(acceleration, n, phi), designs=n,
                              about=tuple(about), forces=forces, inertial=inertial, plate=coupler, active=active,
                              strokes=any(k.startswith("stroke.") for k in wanted))
-    except InputError:
-        if engine == "fused":
-            raise
+    except InputError:  # a mechanism the fused engine does not compile
         return None
     M = run.motion
     nd = run.dyads
