@@ -82,7 +82,8 @@ def rrr_code(gen: Generator, d) -> None:
     gen.place(d.a, *anchor_a, f"{k}oa", f"{k}aa", f"{k}ca", f"{k}sa", ("atan2",))
     gen.place(d.b, *anchor_b, f"{k}ob", f"{k}ab", f"{k}cb", f"{k}sb", ("atan2",))
     # The transmission angle at B, 0..pi (dyads.rrr_motion: arccos of the links' normalised dot product).
-    gen.dyad_check(f"{k}ok", f"{k}dn", f"{d.a}-{d.b}", ("acos", f"({k}px * {k}qx + {k}py * {k}qy) / ({La} * {Lb})"))
+    cos_mu = f"({k}px * {k}qx + {k}py * {k}qy) / ({La} * {Lb})"  # the transmission angle's cosine
+    gen.dyad_check(f"{k}ok", f"{k}dn", f"{d.a}-{d.b}", ("acos", cos_mu))
 
     def forces(gen: Generator) -> None:
         la, lb = gen.load(d.a), gen.load(d.b)

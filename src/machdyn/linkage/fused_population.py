@@ -8,9 +8,9 @@ summaries' reduction turn into that design's numbers. No designs x positions arr
 :func:`machdyn.results.population.evaluate_population` stays the reference; the tests check both agree.
 
 Scratch rows of a design: 0 closure, 1 regular (closes, no dyad dead), 2.. the dyads' normalised determinants,
-then the arguments of their transmission angles, then per output its value and rate, then (``inertial``) the inertia force
--M a_G [N] (x, y) and the inertial shaking moment [N*m], then (``plate``) the plate's cos and sin, then
-(``forces``) the rows of the force summaries (:func:`.fused_source.summary_rows`).
+then the arguments of their transmission angles, then per output its value and rate, then (``inertial``) the
+inertia force -M a_G [N] (x, y) and the inertial shaking moment [N*m], then (``plate``) the plate's cos and
+sin, then (``forces``) the rows of the force summaries (:func:`.fused_source.summary_rows`).
 """
 
 from __future__ import annotations
@@ -22,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..errors import InputError
 from .averages import angle_weights
 from .fused import _load_kernel, _prepared, crank_trig, drive_table
 from .fused_source import SUMMARY_FIELDS, Generated, _indent, _loops, summary_reduction, summary_rows
@@ -60,12 +61,14 @@ class PopulationRun:
 
     motion: np.ndarray  # (N, columns of fused_reduce.motion_summary)
     forces: np.ndarray | None  # (N, SUMMARY_FIELDS + joints) when forces were asked for
+    energy: np.ndarray | None  # (2, N, M): J(phi) and M(phi) when asked for
     generated: Generated
     dyads: int
     outputs: list[str]
 
 
-def population_text(g: Generated, forces: bool, inertial: bool, plate: str | None, strokes: bool) -> str:
+def population_text(g: Generated, forces: bool, inertial: bool, plate: str | None, strokes: bool,
+                    energy: bool = False) -> str:
     """The population kernel's text (see the module docstring)."""
     sec = g.sections
     nd = len(sec["transmission"])
@@ -73,7 +76,7 @@ def population_text(g: Generated, forces: bool, inertial: bool, plate: str | Non
     no = len(outputs) // 2
     rows = 2 + 2 * nd + 2 * no
     stores = [f"B[{2 + d}, j] = {det}" for d, det in enumerate(sec["dead"])]
-    stores += [f"B[{2 + nd + d}, j] = {arg}" for d, (_f, arg) in enumerate(sec["transmission"])]
+    stores += [f"B[{2 + nd + d}, j] = {pair[1]}" for d, pair in enumerate(sec["transmission"])]  # (f, arg)
     for o in range(no):
         if strokes:
             stores.append(f"B[{2 + 2 * nd + 2 * o}, j] = {outputs[2 * o].split(':', 1)[1]}")
@@ -89,9 +92,13 @@ def population_text(g: Generated, forces: bool, inertial: bool, plate: str | Non
         rows += 3
     if plate is not None:
         rp = rows
-        c, s = {a.split(":")[0]: a.split(":")[1:] for a in sec["angles"]}[plate]
-        stores += [f"B[{rp}, j] = {c}", f"B[{rp + 1}, j] = {s}"]
+        cos_sin = next(a.split(":")[1:] for a in sec["angles"] if a.split(":")[0] == plate)
+        stores += [f"B[{rp}, j] = {cos_sin[0]}", f"B[{rp + 1}, j] = {cos_sin[1]}"]
         rows += 2
+    if energy:  # J = 2 T / omega^2 (seed 003 eq 18), M = (dT/dt) / omega - torque (power balance)
+        if not inertial:
+            work += sec["inertial"]
+        stores += ["EN_0[j] = 2.0 * im_ke / (om * om)", "EN_1[j] = im_kr / om - torque"]
     scratch, force_stores = summary_rows(g, rows)
     if forces:
         work += sec["forces"]
@@ -105,7 +112,7 @@ def population_text(g: Generated, forces: bool, inertial: bool, plate: str | Non
 from machdyn.linkage.fused_reduce import motion_summary  # reductions version {_REDUCE_VERSION}
 
 
-def kernel(P, C0, S0, W, E, DW, LP, about, weighted, full, PH, TK, KINDS, OUT, B, OUTM):
+def kernel(P, C0, S0, W, E, DW, LP, about, weighted, full, PH, TK, KINDS, OUT, B, OUTM, EN):
     n = OUTM.shape[0]
     m = C0.shape[0]
     zx = about[0]
@@ -115,7 +122,7 @@ def kernel(P, C0, S0, W, E, DW, LP, about, weighted, full, PH, TK, KINDS, OUT, B
         Wi = W[i if W.shape[0] > 1 else 0]
         Ei = E[i if E.shape[0] > 1 else 0]
 {_indent(sec["prologue"], 2)}
-{_indent(scratch, 2)}
+{_indent(scratch + (["EN_0 = EN[0, i]", "EN_1 = EN[1, i]"] if energy else []), 2)}
 {"".join(_loops(work, stores))}
         motion_summary(B, {nd}, TK, KINDS, {ri}, {rp}, full, PH, OUTM[i])
 {reduction}
@@ -135,17 +142,22 @@ def motion_columns(g: Generated, inertial: bool, plate: str | None) -> int:
 
 def run_population(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 0.0), forces: bool = False,
                    inertial: bool = False, plate: str | None = None, active=None, strokes: bool = True,
-                   ) -> PopulationRun:
+                   energy: bool = False) -> PopulationRun:
     """One fused population pass over ``designs`` designs x crank angles ``phi`` [rad] at crank ``speed``
     [rad/s] and ``acceleration`` [rad/s^2] (floats, one per design or per angle). ``forces``: the force
     summaries too (shaking moments about ``about`` [m]); ``inertial``: the inertial shaking force and moment;
     ``plate``: the body whose angle is the compactor plate's, pressing over the crank window ``active``;
-    ``strokes``: the outputs' strokes (NaN without)."""
+    ``strokes``: the outputs' strokes (NaN without); ``energy`` (with ``forces``): the curves J(phi) [kg*m^2]
+    and M(phi) [N*m] of every design, the reduced moment of inertia 2 T / omega^2 and the reduced moment of
+    every load but inertia and the drive, (dT/dt) / omega - driving torque (the power balance), as
+    ``PopulationRun.energy`` (2, N, M), for :mod:`machdyn.dynamics.population_flywheel`."""
+    if energy and not forces:
+        raise InputError("The energy curves of a population need its forces (forces=True).")
     phi = np.ascontiguousarray(phi, dtype=float)
     generated, P = _prepared(mech, phi)
-    mode = f"population-{int(forces)}{int(inertial)}{int(strokes)}-{plate or ''}"
+    mode = f"population-{int(forces)}{int(inertial)}{int(strokes)}{int(energy)}-{plate or ''}"
     if mode not in generated.texts:
-        generated.texts[mode] = population_text(generated, forces, inertial, plate, strokes)
+        generated.texts[mode] = population_text(generated, forces, inertial, plate, strokes, energy)
     kernel = _load_kernel(generated, mode)
     W = drive_table(speed, phi, mech.design_count)
     E = drive_table(acceleration, phi, mech.design_count)
@@ -159,10 +171,11 @@ def run_population(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 
     PH[2] = np.broadcast_to(np.asarray(window(phi, active), dtype=float), phi.shape) if plate else 0.0
     kinds = np.array([(1 if o.startswith("angle:") else 0) if strokes else -1
                       for o in generated.sections["outputs"][::2]], dtype=np.int64)
-    TK = np.array([1 if f == "acos" else 0 for f, _arg in generated.sections["transmission"]], dtype=np.int64)
+    TK = np.array([1 if pair[0] == "acos" else 0 for pair in generated.sections["transmission"]], dtype=np.int64)
     OUTM = np.empty((designs, motion_columns(generated, inertial, plate)))
     OUT = np.empty((designs if forces else 0, len(SUMMARY_FIELDS) + len(generated.joints)))
     rows = scratch_rows(generated, forces, inertial, plate)
+    EN = np.empty((2, designs, phi.size)) if energy else np.empty((2, 0, 1))
     full, about = is_full_turn(phi), np.asarray(about, dtype=float)
 
     def part(start: int, stop: int) -> None:
@@ -170,7 +183,8 @@ def run_population(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 
             return table[start:stop] if table.shape[0] > 1 else table
 
         kernel(cut(P), C0, S0, cut(W), cut(E), DW, LP, about, weighted, full, PH, TK, kinds,
-               OUT[start:stop] if forces else OUT, np.empty((rows, phi.size)), OUTM[start:stop])
+               OUT[start:stop] if forces else OUT, np.empty((rows, phi.size)), OUTM[start:stop],
+               EN[:, start:stop] if energy else EN)
 
     threads = min(_threads(), max(1, designs * phi.size // MIN_POSITIONS_PER_THREAD))
     if threads <= 1:
@@ -178,5 +192,6 @@ def run_population(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 
     else:  # the kernel releases the GIL: the designs are shared out between threads
         bounds = np.linspace(0, designs, threads + 1).astype(int)
         list(_pool().map(part, bounds[:-1], bounds[1:]))
-    return PopulationRun(OUTM, OUT if forces else None, generated, len(generated.sections["transmission"]),
+    return PopulationRun(OUTM, OUT if forces else None, EN if energy else None, generated,
+                         len(generated.sections["transmission"]),
                          [o.split(":", 1)[1] for o in generated.sections["outputs"][::2]])

@@ -395,13 +395,15 @@ def generate(mech, phi: np.ndarray) -> Generated:
                      gen.angles)
 
 
-def _population_sections(gen: Generator) -> dict[str, list[str]]:
+def _population_sections(gen: Generator) -> dict[str, list]:
     """What the population kernels (:mod:`.fused_population`) compute at each position beyond the motion:
-    every dyad's transmission angle (its function and argument); each body's cos and sin; each output's value and rate (a slider's travel and speed, a rocker's
-    angle atan2(sin, cos), as the NumPy engine's body angle, and angular velocity); and the inertia loads
+    every dyad's transmission angle (its function and argument); each body's cos and sin; each output's value
+    and rate (a slider's travel and speed, a rocker's angle atan2(sin, cos), as the NumPy engine's body angle,
+    and angular velocity); and the inertia loads
     (machdyn.linkage.mass_centre): the sums over the masses of m, m a_x, m a_y (in the order of
-    machdyn.linkage.loads.mass_elements) and the inertial shaking moment sum (r - z) x (-m a) - I alpha about
-    z = (zx, zy)."""
+    machdyn.linkage.loads.mass_elements), the inertial shaking moment sum (r - z) x (-m a) - I alpha about
+    z = (zx, zy), the kinetic energy T = sum m v^2/2 + I w^2/2 and its rate dT/dt = sum m v.a + I w alpha
+    (machdyn.linkage.energy)."""
     from .diagnostics import output_bodies
 
     out = {"transmission": list(gen.transmissions), "outputs": [], "inertial": [], "angles": []}
@@ -418,7 +420,7 @@ def _population_sections(gen: Generator) -> dict[str, list[str]]:
     mech, section = gen.mech, out["inertial"]
     masses = [(b.name, b.com, b.mass, b.inertia) for b in map(mech.body, mech.moving_bodies)]
     masses += [(pm.body, pm.position, pm.mass, pm.inertia) for pm in mech.point_masses]
-    gen.emit(section, "im_m = 0.0\nim_ax = 0.0\nim_ay = 0.0\nim_mz = 0.0")
+    gen.emit(section, "im_m = 0.0\nim_ax = 0.0\nim_ay = 0.0\nim_mz = 0.0\nim_ke = 0.0\nim_kr = 0.0")
     for body, com, mass, inertia in masses:
         G = gen.point(body, gen.local_xy(com, value=True), section)
         m, i = gen.param(mass), gen.param(inertia)
@@ -426,7 +428,12 @@ def _population_sections(gen: Generator) -> dict[str, list[str]]:
             im_m = im_m + {m}
             im_ax = im_ax + {m} * {G['ax']}
             im_ay = im_ay + {m} * {G['ay']}
-            im_mz = im_mz + ({G['x']} - zx) * (-{m} * {G['ay']}) - ({G['y']} - zy) * (-{m} * {G['ax']}) - {i} * {gen.state(body)['al']}
+            im_mz = im_mz + ({G['x']} - zx) * (-{m} * {G['ay']}) - ({G['y']} - zy) * (-{m} * {G['ax']}) \
+                - {i} * {gen.state(body)['al']}
+            im_ke = im_ke + 0.5 * {m} * ({G['vx']} * {G['vx']} + {G['vy']} * {G['vy']}) \
+                + 0.5 * {i} * {gen.state(body)['w']} * {gen.state(body)['w']}
+            im_kr = im_kr + {m} * ({G['vx']} * {G['ax']} + {G['vy']} * {G['ay']}) \
+                + {i} * {gen.state(body)['w']} * {gen.state(body)['al']}
         """)
     return out
 
