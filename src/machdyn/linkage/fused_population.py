@@ -37,6 +37,7 @@ _REDUCE_VERSION = hashlib.sha1((Path(__file__).parent / "fused_reduce.py").read_
 #: Positions (designs x crank angles) below which one thread runs the whole pass (a thread's start costs more).
 MIN_POSITIONS_PER_THREAD = 20_000
 _POOL: list = []
+_BY_SIGNATURE: dict = {}
 
 
 def _threads() -> int:
@@ -156,9 +157,13 @@ def run_population(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 
     phi = np.ascontiguousarray(phi, dtype=float)
     generated, P = _prepared(mech, phi)
     mode = f"population-{int(forces)}{int(inertial)}{int(strokes)}{int(energy)}-{plate or ''}"
-    if mode not in generated.texts:
+    # The code's sections name the kernel without writing and hashing its text: an optimiser's every
+    # generation (a new model of the same topology) finds its kernel here.
+    signature = (mode, *(tuple(lines) for lines in generated.sections.values()))
+    kernel = _BY_SIGNATURE.get(signature)
+    if kernel is None:
         generated.texts[mode] = population_text(generated, forces, inertial, plate, strokes, energy)
-    kernel = _load_kernel(generated, mode)
+        kernel = _BY_SIGNATURE[signature] = _load_kernel(generated, mode)
     W = drive_table(speed, phi, mech.design_count)
     E = drive_table(acceleration, phi, mech.design_count)
     LP = np.stack(generated.rows) if generated.rows else np.zeros((1, 1))
