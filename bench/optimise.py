@@ -15,6 +15,10 @@ Rows, each run ``--repeats`` times (min / median / max of designs per second):
   (:func:`machdyn.dynamics.population_flywheel.exact_flywheel_inertia` on the reduced inertia and moment
   curves of the fused population pass), kept below 1.5 kg*m^2 as one more constraint (scipy differential
   evolution, vectorised, the optimiser's settings).
+- scipy's differential evolution alone, vectorised, on a trivial cost (the sum of the variables, no design
+  evaluated): the rate the
+  search's own bookkeeping allows (it draws the mutation's members for each design in Python), the ceiling of
+  every vectorised row.
 - machdyn, one design at a time: the same evaluator called design by design (what vectorisation buys).
 - pylinkage: ``pylinkage.optimization.differential_evolution_optimization`` with the same population size,
   evaluating one design at a time: its compiled dyad solver steps the linkage through the 360 positions
@@ -105,6 +109,23 @@ def run_machdyn_flywheel(population: int, generations: int) -> dict[str, Any]:
                                  updating="deferred")
     seconds = time.perf_counter() - start
     return {"designs": ev.evaluations, "seconds": seconds, "best_gain": -float(res.fun)}
+
+
+def run_search_alone(population: int, generations: int) -> dict[str, Any]:
+    from scipy.optimize import differential_evolution
+
+    _problem, spec = machdyn_problem(False)
+    bounds = [(float(v.lower.split()[0]) / 1000, float(v.upper.split()[0]) / 1000) for v in spec.variables]
+    counter = {"n": 0}
+
+    def cost(xt):
+        counter["n"] += np.shape(xt)[1]
+        return np.asarray(xt).sum(axis=0)  # not constant: a constant population converges at once
+
+    start = time.perf_counter()
+    differential_evolution(cost, bounds, maxiter=generations, popsize=math.ceil(population / 3), tol=0.0, atol=0.0,
+                           seed=1, polish=False, init="latinhypercube", vectorized=True, updating="deferred")
+    return {"designs": counter["n"], "seconds": time.perf_counter() - start, "best_gain": math.nan}
 
 
 def run_machdyn_one_at_a_time(population: int, generations: int) -> dict[str, Any]:
@@ -211,6 +232,7 @@ def main() -> None:
         "machdyn_vectorised_kinematics": rates([run_machdyn(p, g, False) for _ in range(args.repeats)]),
         "machdyn_vectorised_with_forces": rates([run_machdyn(p, g, True) for _ in range(args.repeats)]),
         "machdyn_vectorised_with_flywheel": rates([run_machdyn_flywheel(p, g) for _ in range(args.repeats)]),
+        "scipy_de_alone_trivial_cost": rates([run_search_alone(p, g) for _ in range(args.repeats)]),
         "machdyn_one_at_a_time": rates([run_machdyn_one_at_a_time(p, pg) for _ in range(args.repeats)]),
         "pylinkage_de_one_at_a_time": rates([run_pylinkage(p, pg) for _ in range(args.repeats)]),
     }

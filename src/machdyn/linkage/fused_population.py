@@ -196,7 +196,10 @@ def run_population(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 
         part(0, designs)
     else:  # the kernel releases the GIL: the designs are shared out between threads
         bounds = np.linspace(0, designs, threads + 1).astype(int)
-        list(_pool().map(part, bounds[:-1], bounds[1:]))
+        others = [_pool().submit(part, int(a), int(b)) for a, b in zip(bounds[1:-1], bounds[2:], strict=True)]
+        part(0, int(bounds[1]))  # the first share in this thread
+        for future in others:
+            future.result()
     return PopulationRun(OUTM, OUT if forces else None, EN if energy else None, generated,
                          len(generated.sections["transmission"]),
                          [o.split(":", 1)[1] for o in generated.sections["outputs"][::2]])
