@@ -49,7 +49,7 @@ def _cache_dir() -> Path | None:
     return path if os.access(path, os.W_OK) else None
 
 
-def _load_kernel(generated: Generated, mode: str):
+def load_kernel(generated: Generated, mode: str):
     """The compiled kernel of ``generated`` in ``mode``: from memory, from the on-disk cache, or compiled
     now."""
     if mode in generated.kernels:
@@ -93,7 +93,7 @@ def _table(values: list) -> np.ndarray:
     return out
 
 
-def _prepared(mech, phi: np.ndarray):
+def prepared(mech, phi: np.ndarray):
     """The generated code and parameter table of ``mech``; kept with the model when they do not depend on the
     crank angles (no load given as a function of the crank angle or with a window)."""
     cached = mech._derived.get("fused")
@@ -168,9 +168,9 @@ def run(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 0.0), serie
     """One fused pass over ``designs`` designs x the crank angles ``phi``: the series of the motion (and of
     the forces, with ``forces``) when ``series``, else the per-design summaries of the forces."""
     phi = np.ascontiguousarray(phi, dtype=float)
-    generated, P = _prepared(mech, phi)
+    generated, P = prepared(mech, phi)
     mode = ("full" if forces else "motion") if series else "summary"
-    kernel = _load_kernel(generated, mode)
+    kernel = load_kernel(generated, mode)
     W = drive_table(speed, phi, mech.design_count)
     E = drive_table(acceleration, phi, mech.design_count)
     LP = np.stack(generated.rows) if generated.rows else _NO_ROWS

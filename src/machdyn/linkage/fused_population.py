@@ -24,8 +24,8 @@ import numpy as np
 
 from ..errors import InputError
 from .averages import angle_weights
-from .fused import _load_kernel, _prepared, crank_trig, drive_table
-from .fused_source import SUMMARY_FIELDS, Generated, _indent, _loops, summary_reduction, summary_rows
+from .fused import crank_trig, drive_table, load_kernel, prepared
+from .fused_source import SUMMARY_FIELDS, Generated, indent, position_loops, summary_reduction, summary_rows
 from .kinematics import is_full_turn
 from .loads import window
 
@@ -122,9 +122,9 @@ def kernel(P, C0, S0, W, E, DW, LP, about, weighted, full, PH, TK, KINDS, OUT, B
         ip = i if P.shape[0] > 1 else 0
         Wi = W[i if W.shape[0] > 1 else 0]
         Ei = E[i if E.shape[0] > 1 else 0]
-{_indent(sec["prologue"], 2)}
-{_indent(scratch + (["EN_0 = EN[0, i]", "EN_1 = EN[1, i]"] if energy else []), 2)}
-{"".join(_loops(work, stores))}
+{indent(sec["prologue"], 2)}
+{indent(scratch + (["EN_0 = EN[0, i]", "EN_1 = EN[1, i]"] if energy else []), 2)}
+{"".join(position_loops(work, stores))}
         motion_summary(B, {nd}, TK, KINDS, {ri}, {rp}, full, PH, OUTM[i])
 {reduction}
 """
@@ -155,7 +155,7 @@ def run_population(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 
     if energy and not forces:
         raise InputError("The energy curves of a population need its forces (forces=True).")
     phi = np.ascontiguousarray(phi, dtype=float)
-    generated, P = _prepared(mech, phi)
+    generated, P = prepared(mech, phi)
     mode = f"population-{int(forces)}{int(inertial)}{int(strokes)}{int(energy)}-{plate or ''}"
     # The code's sections name the kernel without writing and hashing its text: an optimiser's every
     # generation (a new model of the same topology) finds its kernel here.
@@ -163,7 +163,7 @@ def run_population(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 
     kernel = _BY_SIGNATURE.get(signature)
     if kernel is None:
         generated.texts[mode] = population_text(generated, forces, inertial, plate, strokes, energy)
-        kernel = _BY_SIGNATURE[signature] = _load_kernel(generated, mode)
+        kernel = _BY_SIGNATURE[signature] = load_kernel(generated, mode)
     W = drive_table(speed, phi, mech.design_count)
     E = drive_table(acceleration, phi, mech.design_count)
     LP = np.stack(generated.rows) if generated.rows else np.zeros((1, 1))

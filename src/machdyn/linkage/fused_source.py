@@ -438,7 +438,7 @@ def _population_sections(gen: Generator) -> dict[str, list]:
     return out
 
 
-def _indent(lines: list[str], level: int) -> str:
+def indent(lines: list[str], level: int) -> str:
     pad = "    " * level
     return "\n".join(pad + line for line in lines) if lines else pad + "pass"
 
@@ -451,14 +451,14 @@ ROWS_PER_LOOP = 10
 MAX_LOOPS = 3
 
 
-def _loops(work: list[str], stores: list[str]) -> list[str]:
+def position_loops(work: list[str], stores: list[str]) -> list[str]:
     """Loops over the positions, each computing ``work`` and writing at most ROWS_PER_LOOP rows (the
     compiler drops from each loop what its rows do not need), or one loop when that would take more than
     MAX_LOOPS copies."""
     per_loop = ROWS_PER_LOOP if len(stores) <= ROWS_PER_LOOP * MAX_LOOPS else max(len(stores), 1)
     out = []
     for start in range(0, max(len(stores), 1), per_loop):
-        out.append(f"        for j in range(m):\n{_indent(work + stores[start:start + per_loop], 3)}\n")
+        out.append(f"        for j in range(m):\n{indent(work + stores[start:start + per_loop], 3)}\n")
     return out
 
 
@@ -479,16 +479,16 @@ def kernel(P, C0, S0, W, E, DW, LP, about, weighted, S, OUT, B):
         ip = i if P.shape[0] > 1 else 0
         Wi = W[i if W.shape[0] > 1 else 0]
         Ei = E[i if E.shape[0] > 1 else 0]
-{_indent(sec["prologue"], 2)}
+{indent(sec["prologue"], 2)}
 """
     position = ["om = Wi[j]", "ep = Ei[j]"] + sec["motion"]
     if mode != "summary":
         rows = sec["motion_series"] + (sec["force_series"] if mode == "full" else [])
         hoist = [f"S_{k} = S[{k}, i]" for k in range(len(rows))]
         work = position + (sec["forces"] if mode == "full" else [])
-        return head + _indent(hoist, 2) + "\n" + "".join(_loops(work, rows)) + "\n"
+        return head + indent(hoist, 2) + "\n" + "".join(position_loops(work, rows)) + "\n"
     scratch, stores = summary_rows(g, 2)
-    return head + _indent(scratch, 2) + "\n" + "".join(_loops(position + sec["forces"], stores)) + \
+    return head + indent(scratch, 2) + "\n" + "".join(position_loops(position + sec["forces"], stores)) + \
         summary_reduction(g)
 
 
@@ -525,7 +525,7 @@ def summary_reduction(g: Generated) -> str:
         s_wsum = 0.0
         s_fmax = 0.0
         s_mmax = 0.0
-{_indent(init, 2)}
+{indent(init, 2)}
         for j in range(m):
             s_asm = s_asm and B_ok[j] > 0.5
             s_reg = s_reg and B_reg[j] > 0.5
@@ -545,7 +545,7 @@ def summary_reduction(g: Generated) -> str:
             sm = abs(B_fm[j] - (zx * B_fy[j] - zy * B_fx[j]))
             if sm > s_mmax:
                 s_mmax = sm
-{_indent(reduce, 3)}
+{indent(reduce, 3)}
         ok = s_asm and s_reg
         bad = 0.0 if ok else math.nan
         OUT[i, 0] = 1.0 if s_asm else 0.0
@@ -555,5 +555,5 @@ def summary_reduction(g: Generated) -> str:
         OUT[i, 4] = s_pw / s_wsum + bad if s_wsum > 0.0 else math.nan
         OUT[i, 5] = math.sqrt(s_fmax) + bad
         OUT[i, 6] = s_mmax + bad
-{_indent(joint_out, 2)}
+{indent(joint_out, 2)}
 """
