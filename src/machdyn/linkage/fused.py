@@ -104,10 +104,10 @@ def prepared(mech, phi: np.ndarray):
     except Unsupported as exc:
         raise InputError(f"The fused engine cannot compile mechanism '{mech.name}': {exc}; use "
                          "engine='numpy'.") from None
-    prepared = (generated, _table(generated.params))
+    pair = (generated, _table(generated.params))
     if not generated.rows:
-        mech._derived["fused"] = prepared
-    return prepared
+        mech._derived["fused"] = pair
+    return pair
 
 
 #: Crank angles per block of :func:`crank_trig`.
