@@ -60,13 +60,19 @@ def exact_flywheel_inertia(crank_angle, reduced_moment, reduced_inertia, mean_sp
         raise InputError(f"The mean speed must be > 0 rad/s; got {float(np.min(speed)):g} rad/s.")
     moment, inertia = np.broadcast_arrays(moment, inertia)
     step = 2 * np.pi / phi.size
-    # cumulative trapezoid of M - mean(M) from phi[0] (periodic: the mean of the samples is the cycle mean)
+    # W_j = cumulative trapezoid of e = M - mean(M) from phi[0] = h (e_0 + ... + e_j - (e_0 + e_j) / 2) (periodic:
+    # the mean of the samples is the cycle mean, so that the drive's mean torque closes the cycle)
     excess = moment - moment.mean(axis=1, keepdims=True)
-    work = np.concatenate([np.zeros((excess.shape[0], 1)),
-                           np.cumsum(0.5 * (excess[:, 1:] + excess[:, :-1]) * step, axis=1)], axis=1)
+    work = np.cumsum(excess, axis=1)
+    work -= 0.5 * (excess[:, :1] + excess)
+    work *= step
     wmax, wmin = speed_limits(speed, delta)
-    upper = (0.5 * wmax**2 * inertia - work).min(axis=1)
-    lower = (0.5 * wmin**2 * inertia - work).max(axis=1)
+    tangent = inertia * (0.5 * wmax**2)
+    tangent -= work
+    upper = tangent.min(axis=1)
+    np.multiply(inertia, 0.5 * wmin**2, out=tangent)
+    tangent -= work
+    lower = tangent.max(axis=1)
     raw = (lower - upper) / (delta * np.ravel(np.asarray(speed)) ** 2)
-    return np.where(np.isfinite(moment).all(axis=1) & np.isfinite(inertia).all(axis=1), np.maximum(raw, 0.0),
-                    np.nan)
+    # a non-finite sample makes its design's extremes NaN (or infinite): reported as NaN
+    return np.where(np.isfinite(raw), np.maximum(raw, 0.0), np.nan)
