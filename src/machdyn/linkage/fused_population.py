@@ -123,7 +123,7 @@ def kernel(P, C0, S0, W, E, DW, LP, about, weighted, full, PH, TK, KINDS, OUT, B
         Wi = W[i if W.shape[0] > 1 else 0]
         Ei = E[i if E.shape[0] > 1 else 0]
 {indent(sec["prologue"], 2)}
-{indent(scratch + (["EN_0 = EN[0, i]", "EN_1 = EN[1, i]"] if energy else []), 2)}
+{indent(scratch + (["EN_0 = EN[i, 0]", "EN_1 = EN[i, 1]"] if energy else []), 2)}
 {"".join(position_loops(work, stores))}
         motion_summary(B, {nd}, TK, KINDS, {ri}, {rp}, full, PH, OUTM[i])
 {reduction}
@@ -180,7 +180,8 @@ def run_population(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 
     OUTM = np.empty((designs, motion_columns(generated, inertial, plate)))
     OUT = np.empty((designs if forces else 0, len(SUMMARY_FIELDS) + len(generated.joints)))
     rows = scratch_rows(generated, forces, inertial, plate)
-    EN = np.empty((2, designs, phi.size)) if energy else np.empty((2, 0, 1))
+    # designs first, so that each thread's share is one contiguous block (the compiler vectorises its loops)
+    EN = np.empty((designs, 2, phi.size)) if energy else np.empty((0, 2, 1))
     full, about = is_full_turn(phi), np.asarray(about, dtype=float)
 
     def part(start: int, stop: int) -> None:
@@ -189,7 +190,7 @@ def run_population(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 
 
         kernel(cut(P), C0, S0, cut(W), cut(E), DW, LP, about, weighted, full, PH, TK, kinds,
                OUT[start:stop] if forces else OUT, np.empty((rows, phi.size)), OUTM[start:stop],
-               EN[:, start:stop] if energy else EN)
+               EN[start:stop] if energy else EN)
 
     threads = min(_threads(), max(1, designs * phi.size // MIN_POSITIONS_PER_THREAD))
     if threads <= 1:
@@ -200,6 +201,6 @@ def run_population(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 
         part(0, int(bounds[1]))  # the first share in this thread
         for future in others:
             future.result()
-    return PopulationRun(OUTM, OUT if forces else None, EN if energy else None, generated,
+    return PopulationRun(OUTM, OUT if forces else None, EN.transpose(1, 0, 2) if energy else None, generated,
                          len(generated.sections["transmission"]),
                          [o.split(":", 1)[1] for o in generated.sections["outputs"][::2]])
