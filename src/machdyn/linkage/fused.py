@@ -58,7 +58,7 @@ def _cache_dir() -> Path | None:
     return path if os.access(path, os.W_OK) else None
 
 
-def _load_kernel(generated: Generated, mode: str):
+def load_kernel(generated: Generated, mode: str):
     """The compiled kernel of ``generated`` in ``mode``: from memory, from the on-disk cache, or compiled
     now."""
     if mode in generated.kernels:
@@ -103,7 +103,7 @@ def _table(values: list) -> np.ndarray:
     return out
 
 
-def _prepared(mech, phi: np.ndarray):
+def prepared(mech, phi: np.ndarray):
     """The generated code and parameter table of ``mech``; kept with the model when they do not depend on the
     crank angles (no load given as a function of the crank angle or with a window)."""
     cached = mech._derived.get("fused")
@@ -114,10 +114,10 @@ def _prepared(mech, phi: np.ndarray):
     except Unsupported as exc:
         raise InputError(f"The fused engine cannot compile mechanism '{mech.name}': {exc}; use "
                          "engine='numpy'.") from None
-    prepared = (generated, _table(generated.params))
+    pair = (generated, _table(generated.params))
     if not generated.rows:
-        mech._derived["fused"] = prepared
-    return prepared
+        mech._derived["fused"] = pair
+    return pair
 
 
 #: Crank angles per block of :func:`crank_trig`.
@@ -178,9 +178,9 @@ def run(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 0.0), serie
     """One fused pass over ``designs`` designs x the crank angles ``phi``: the series of the motion (and of
     the forces, with ``forces``) when ``series``, else the per-design summaries of the forces."""
     phi = np.ascontiguousarray(phi, dtype=float)
-    generated, P = _prepared(mech, phi)
+    generated, P = prepared(mech, phi)
     mode = ("full" if forces else "motion") if series else "summary"
-    kernel = _load_kernel(generated, mode)
+    kernel = load_kernel(generated, mode)
     W = drive_table(speed, phi, mech.design_count)
     E = drive_table(acceleration, phi, mech.design_count)
     LP = np.stack(generated.rows) if generated.rows else _NO_ROWS

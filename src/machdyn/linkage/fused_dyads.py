@@ -41,7 +41,9 @@ def rrr_code(gen: Generator, d) -> None:
         anchor_a, anchor_b = _anchor(P, a_pin, B, a_inner), _anchor(Q, b_pin, B, b_inner)
     gen.place(d.a, *anchor_a, f"{k}oa", f"{k}aa", f"{k}ca", f"{k}sa", ("atan2",))
     gen.place(d.b, *anchor_b, f"{k}ob", f"{k}ab", f"{k}cb", f"{k}sb", ("atan2",))
-    gen.dyad_check(f"{k}ok", f"{k}dn", f"{d.a}-{d.b}")
+    # The transmission angle at B, 0..pi (dyads.rrr_motion: arccos of the links' normalised dot product).
+    cos_mu = f"({k}px * {k}qx + {k}py * {k}qy) / ({La} * {Lb})"  # the transmission angle's cosine
+    gen.dyad_check(f"{k}ok", f"{k}dn", f"{d.a}-{d.b}", ("acos", cos_mu))
 
     def forces(gen: Generator) -> None:
         la, lb = gen.load(d.a), gen.load(d.b)
@@ -91,7 +93,7 @@ def rrp_code(gen: Generator, d) -> None:
     anchor, anchor_local = _anchor(P, a_pin, B, a_inner)
     gen.place(d.a, anchor, anchor_local, f"{k}oa", f"{k}aa", f"{k}ca", f"{k}sa", ("atan2",))
     gen.place(d.b, B, b_inner, S["w"], S["al"], ux, uy, g_angle)
-    gen.dyad_check(f"{k}ok", f"{k}dn", f"{d.a}-{d.b}")
+    gen.dyad_check(f"{k}ok", f"{k}dn", f"{d.a}-{d.b}", ("asin", f"abs({k}det) / {La}"))
     gen.series_out(f"slide.{d.b}", {"s": f"{k}s", "v": f"{k}ds", "a": f"{k}dds"})
 
     def forces(gen: Generator) -> None:
@@ -136,7 +138,9 @@ def rpr_code(gen: Generator, d) -> None:
              [*_motion(P), *_motion(Q), f"{k}cx", f"{k}cy", f"{k}e", sang, br])
     gen.place(d.b, Q, b_pin, f"{k}om", f"{k}al", f"{k}cb", f"{k}sb", ("value", f"{k}tb"))
     gen.place(d.a, P, a_pin, f"{k}om", f"{k}al", f"{k}ux", f"{k}uy", ("value", f"{k}psi"))
-    gen.dyad_check(f"{k}ok", f"{k}dn", f"{d.a}-{d.b}")
+    # dyads.rpr_motion's transmission reads its normalised determinant (the name is rebound before it is
+    # called), so it is arcsin of |det / D| / D: the same here, so that both engines agree.
+    gen.dyad_check(f"{k}ok", f"{k}dn", f"{d.a}-{d.b}", ("asin", f"abs({k}dn) / {k}D"))
     gen.series_out(f"slide.{d.a}", {"s": f"{k}t", "v": f"{k}dt", "a": f"{k}ddt"})
 
     def forces(gen: Generator) -> None:
@@ -170,7 +174,7 @@ def prp_code(gen: Generator, d) -> None:
     B = {"x": f"{k}bx", "y": f"{k}by", "vx": f"{k}Bvx", "vy": f"{k}Bvy", "ax": f"{k}Bax", "ay": f"{k}Bay"}
     gen.place(d.a, B, a_inner, Si["w"], Si["al"], u1x, u1y, ang1)
     gen.place(d.b, B, b_inner, Sj["w"], Sj["al"], u2x, u2y, ang2)
-    gen.dyad_check(f"{k}ok", f"{k}cr", f"{d.a}-{d.b}")
+    gen.dyad_check(f"{k}ok", f"{k}cr", f"{d.a}-{d.b}", ("asin", f"abs({k}cr)"))
     gen.series_out(f"slide.{d.a}", {"s": f"{k}s1", "v": f"{k}ds1", "a": f"{k}dds1"})
     gen.series_out(f"slide.{d.b}", {"s": f"{k}s2", "v": f"{k}ds2", "a": f"{k}dds2"})
 

@@ -95,6 +95,8 @@ class Generator:
     joint_base: int = 0
     reactions: list = field(default_factory=list)
     force_solvers: list = field(default_factory=list)
+    transmissions: list = field(default_factory=list)
+    exprs: dict = field(default_factory=dict)
 
     # -- names and values
     def new(self, prefix: str) -> str:
@@ -213,6 +215,7 @@ class Generator:
         """Outputs of the series kernels: each a row the kernel writes, unless it is a constant, an input
         (crank speed, acceleration, cos and sin of the crank angle), a parameter or a row already written."""
         for f, expr in names.items():
+            self.exprs[f"{prefix}.{f}"] = expr
             if re.fullmatch(r"-?\d+\.\d+", expr):
                 self.series[f"{prefix}.{f}"] = ("const", float(expr))
             elif expr in ("om", "ep", "c0", "s0"):
@@ -239,9 +242,12 @@ class Generator:
         """)
         return k, f"{k}c", f"{k}s"
 
-    def dyad_check(self, assembled: str, det: str, name: str) -> None:
+    def dyad_check(self, assembled: str, det: str, name: str, transmission: tuple[str, str]) -> None:
+        """A dyad's closure flag and normalised determinant expressions, and its transmission angle [rad] as
+        (function, argument): ("acos", x) for arccos(clip(x, -1, 1)), ("asin", x) for arcsin(clip(x, 0, 1))."""
         self.assembled.append(assembled)
         self.dead_checks.append(det)
+        self.transmissions.append(transmission)
         self.series_out(f"dyad.{name}", {"assembled": f"1.0 if {assembled} else 0.0", "det": det})
 
     # -- forces (the formulas of machdyn.linkage.kinetostatics)
@@ -369,6 +375,7 @@ def generate(mech, phi: np.ndarray) -> Generated:
         d.emit_fused(gen)
     motion_series = list(gen.series_lines)
     gen.series_lines.clear()
+    population = _population_sections(gen)
     _loads(gen)
     for i in reversed(range(len(mech.dyads))):
         gen.joint_base = 1 + 3 * i
@@ -390,12 +397,55 @@ def generate(mech, phi: np.ndarray) -> Generated:
     force_series = list(gen.series_lines)
     sections = {"prologue": gen.prologue, "motion": gen.motion, "forces": gen.forces,
                 "motion_series": motion_series, "force_series": force_series,
-                "assembled": gen.assembled, "dead": gen.dead_checks}
+                "assembled": gen.assembled, "dead": gen.dead_checks, **population}
     return Generated(sections, gen.params, gen.rows, gen.series, len(motion_series), len(gen.stored), names,
                      gen.angles)
 
 
-def _indent(lines: list[str], level: int) -> str:
+def _population_sections(gen: Generator) -> dict[str, list]:
+    """What the population kernels (:mod:`.fused_population`) compute at each position beyond the motion:
+    every dyad's transmission angle (its function and argument); each body's cos and sin; each output's value
+    and rate (a slider's travel and speed, a rocker's angle atan2(sin, cos), as the NumPy engine's body angle,
+    and angular velocity); and the inertia loads
+    (machdyn.linkage.mass_centre): the sums over the masses of m, m a_x, m a_y (in the order of
+    machdyn.linkage.loads.mass_elements), the inertial shaking moment sum (r - z) x (-m a) - I alpha about
+    z = (zx, zy), the kinetic energy T = sum m v^2/2 + I w^2/2 and its rate dT/dt = sum m v.a + I w alpha
+    (machdyn.linkage.energy)."""
+    from .diagnostics import output_bodies
+
+    out = {"transmission": list(gen.transmissions), "outputs": [], "inertial": [], "angles": []}
+    for body, kind in output_bodies(gen.mech):
+        if kind == "slide":
+            value, rate = gen.exprs[f"slide.{body}.s"], gen.exprs[f"slide.{body}.v"]
+        else:
+            state = gen.bodies[body]
+            value, rate = f"math.atan2({state['s']}, {state['c']})", state["w"]
+        out["outputs"] += [f"{kind}:{value}", rate]
+    for body in gen.mech.moving_bodies:
+        state = gen.bodies[body]
+        out["angles"] += [f"{body}:{state['c']}:{state['s']}"]
+    mech, section = gen.mech, out["inertial"]
+    masses = [(b.name, b.com, b.mass, b.inertia) for b in map(mech.body, mech.moving_bodies)]
+    masses += [(pm.body, pm.position, pm.mass, pm.inertia) for pm in mech.point_masses]
+    gen.emit(section, "im_m = 0.0\nim_ax = 0.0\nim_ay = 0.0\nim_mz = 0.0\nim_ke = 0.0\nim_kr = 0.0")
+    for body, com, mass, inertia in masses:
+        G = gen.point(body, gen.local_xy(com, value=True), section)
+        m, i = gen.param(mass), gen.param(inertia)
+        gen.emit(section, f"""
+            im_m = im_m + {m}
+            im_ax = im_ax + {m} * {G['ax']}
+            im_ay = im_ay + {m} * {G['ay']}
+            im_mz = im_mz + ({G['x']} - zx) * (-{m} * {G['ay']}) - ({G['y']} - zy) * (-{m} * {G['ax']}) \
+                - {i} * {gen.state(body)['al']}
+            im_ke = im_ke + 0.5 * {m} * ({G['vx']} * {G['vx']} + {G['vy']} * {G['vy']}) \
+                + 0.5 * {i} * {gen.state(body)['w']} * {gen.state(body)['w']}
+            im_kr = im_kr + {m} * ({G['vx']} * {G['ax']} + {G['vy']} * {G['ay']}) \
+                + {i} * {gen.state(body)['w']} * {gen.state(body)['al']}
+        """)
+    return out
+
+
+def indent(lines: list[str], level: int) -> str:
     pad = "    " * level
     return "\n".join(pad + line for line in lines) if lines else pad + "pass"
 
@@ -408,14 +458,14 @@ ROWS_PER_LOOP = 10
 MAX_LOOPS = 3
 
 
-def _loops(work: list[str], stores: list[str]) -> list[str]:
+def position_loops(work: list[str], stores: list[str]) -> list[str]:
     """Loops over the positions, each computing ``work`` and writing at most ROWS_PER_LOOP rows (the
     compiler drops from each loop what its rows do not need), or one loop when that would take more than
     MAX_LOOPS copies."""
     per_loop = ROWS_PER_LOOP if len(stores) <= ROWS_PER_LOOP * MAX_LOOPS else max(len(stores), 1)
     out = []
     for start in range(0, max(len(stores), 1), per_loop):
-        out.append(f"        for j in range(m):\n{_indent(work + stores[start:start + per_loop], 3)}\n")
+        out.append(f"        for j in range(m):\n{indent(work + stores[start:start + per_loop], 3)}\n")
     return out
 
 
@@ -436,28 +486,44 @@ def kernel(P, C0, S0, W, E, DW, LP, about, weighted, S, OUT, B):
         ip = i if P.shape[0] > 1 else 0
         Wi = W[i if W.shape[0] > 1 else 0]
         Ei = E[i if E.shape[0] > 1 else 0]
-{_indent(sec["prologue"], 2)}
+{indent(sec["prologue"], 2)}
 """
     position = ["om = Wi[j]", "ep = Ei[j]"] + sec["motion"]
     if mode != "summary":
         rows = sec["motion_series"] + (sec["force_series"] if mode == "full" else [])
         hoist = [f"S_{k} = S[{k}, i]" for k in range(len(rows))]
         work = position + (sec["forces"] if mode == "full" else [])
-        return head + _indent(hoist, 2) + "\n" + "".join(_loops(work, rows)) + "\n"
+        return head + indent(hoist, 2) + "\n" + "".join(position_loops(work, rows)) + "\n"
+    scratch, stores = summary_rows(g, 2)
+    return head + indent(scratch, 2) + "\n" + "".join(position_loops(position + sec["forces"], stores)) + \
+        summary_reduction(g)
+
+
+def summary_rows(g: Generated, base: int) -> tuple[list[str], list[str]]:
+    """The scratch rows of the per-design summaries (closure, regularity, then from row ``base`` the driving
+    torque, the frame force and moment and each joint's squared force) and the lines that fill them."""
+    sec = g.sections
     n_joints = len(g.joints)
     assembled = " & ".join(f"({a})" for a in sec["assembled"]) or "True"
     regular = " & ".join(f"(abs({d}) >= {_DEAD_TOL!r})" for d in sec["dead"]) or "True"
-    scratch = ["B_ok = B[0]", "B_reg = B[1]", "B_t = B[2]", "B_fx = B[3]", "B_fy = B[4]", "B_fm = B[5]"]
-    scratch += [f"B_j{j} = B[{6 + j}]" for j in range(n_joints)]
+    scratch = ["B_ok = B[0]", "B_reg = B[1]", f"B_t = B[{base}]", f"B_fx = B[{base + 1}]",
+               f"B_fy = B[{base + 2}]", f"B_fm = B[{base + 3}]"]
+    scratch += [f"B_j{j} = B[{base + 4 + j}]" for j in range(n_joints)]
     stores = [f"B_ok[j] = 1.0 if {assembled} else 0.0", f"B_reg[j] = 1.0 if {regular} else 0.0",
               "B_t[j] = torque", "B_fx[j] = ffx", "B_fy[j] = ffy", "B_fm[j] = ffm"]
     stores += [f"B_j{j}[j] = r{j}x * r{j}x + r{j}y * r{j}y" for j in range(n_joints)]
+    return scratch, stores
+
+
+def summary_reduction(g: Generated) -> str:
+    """The per-design reduction of the summary rows into OUT[i] (:data:`SUMMARY_FIELDS`, then the joints)."""
+    n_joints = len(g.joints)
     init = [f"jm{j} = 0.0" for j in range(n_joints)]
     reduce = []
     for j in range(n_joints):  # squared magnitudes: one square root per design
         reduce += [f"if B_j{j}[j] > jm{j}:", f"    jm{j} = B_j{j}[j]"]
     joint_out = [f"OUT[i, {len(SUMMARY_FIELDS) + j}] = math.sqrt(jm{j}) + bad" for j in range(n_joints)]
-    return head + _indent(scratch, 2) + "\n" + "".join(_loops(position + sec["forces"], stores)) + f"""
+    return f"""
         s_asm = True
         s_reg = True
         s_tmax = 0.0
@@ -466,7 +532,7 @@ def kernel(P, C0, S0, W, E, DW, LP, about, weighted, S, OUT, B):
         s_wsum = 0.0
         s_fmax = 0.0
         s_mmax = 0.0
-{_indent(init, 2)}
+{indent(init, 2)}
         for j in range(m):
             s_asm = s_asm and B_ok[j] > 0.5
             s_reg = s_reg and B_reg[j] > 0.5
@@ -486,7 +552,7 @@ def kernel(P, C0, S0, W, E, DW, LP, about, weighted, S, OUT, B):
             sm = abs(B_fm[j] - (zx * B_fy[j] - zy * B_fx[j]))
             if sm > s_mmax:
                 s_mmax = sm
-{_indent(reduce, 3)}
+{indent(reduce, 3)}
         ok = s_asm and s_reg
         bad = 0.0 if ok else math.nan
         OUT[i, 0] = 1.0 if s_asm else 0.0
@@ -496,5 +562,5 @@ def kernel(P, C0, S0, W, E, DW, LP, about, weighted, S, OUT, B):
         OUT[i, 4] = s_pw / s_wsum + bad if s_wsum > 0.0 else math.nan
         OUT[i, 5] = math.sqrt(s_fmax) + bad
         OUT[i, 6] = s_mmax + bad
-{_indent(joint_out, 2)}
+{indent(joint_out, 2)}
 """

@@ -24,7 +24,9 @@ def evaluate(mech: Mechanism, phi, speed, acceleration, wanted: Iterable[str], s
     """The results ``wanted`` for every design of ``mech`` (N designs), as (N,) arrays, plus
     ``assembled_fraction`` (share of crank angles where the design closes), ``regular`` (closes at every angle,
     passes no dead point or branch change, keeps its transmission angle ``min_transmission_angle`` [rad] away
-    from 0 and 180 deg) and the other numeric status columns. Results of designs that are not regular are NaN."""
+    from 0 and 180 deg) and the other numeric status columns. Results of designs that are not regular are NaN.
+    Every group but the full analysis is computed in one compiled pass over the population when numba is
+    present (:mod:`machdyn.linkage.fused_population`), else by the NumPy reference."""
     out = evaluate_population(mech, phi, speed, acceleration, wanted, about=shaking_about, machine=machine,
-                              min_transmission_angle=min_transmission_angle)
+                              min_transmission_angle=min_transmission_angle, engine="fused")
     return {k: v for k, v in out.items() if v.dtype.kind in "fb"}

@@ -149,11 +149,19 @@ def _groups(wanted: Iterable[str]) -> set[str]:
 def evaluate_population(mech: Mechanism, phi, speed, acceleration, wanted: Iterable[str], *,
                         about=(0.0, 0.0), machine: str | None = None,
                         min_transmission_angle: float = math.radians(DEFAULT_MIN_TRANSMISSION_DEG),
-                        ) -> dict[str, np.ndarray]:
+                        engine: str = "auto") -> dict[str, np.ndarray]:
     """The results ``wanted`` (catalogue keys) of every design of ``mech`` as (N,) arrays in SI, and the status
     columns. ``phi`` [rad] the crank angles, ``speed`` [rad/s] and ``acceleration`` [rad/s^2] floats or one
     value per design, ``about`` [m] the point of the shaking moments, ``min_transmission_angle`` [rad] the
-    threshold of ``poor_transmission``. Results of designs that are not regular are NaN."""
+    threshold of ``poor_transmission``. Results of designs that are not regular are NaN.
+
+    ``engine``: "numpy" (the reference: kinematics in chunks of designs, then whole-array reductions, the
+    forces by :func:`machdyn.linkage.sweep`), "fused" (the status, motion and force groups in one compiled
+    pass, :mod:`machdyn.linkage.fused_population`: what the optimiser uses) or "auto" (the status and motion
+    groups in that pass, the forces by :func:`machdyn.linkage.sweep`, whose own choice of engine keeps a
+    sweep's force summaries as they were recorded, to the last bit: a loss-free cycle's mean power is zero
+    up to rounding noise that differs between the two engines). "fused" and "auto" fall back to the NumPy
+    path when numba is absent or the mechanism does not compile. All agree to rounding."""
     order = list(dict.fromkeys(wanted))
     wanted = set(order)
     groups = _groups(wanted)
@@ -163,8 +171,15 @@ def evaluate_population(mech: Mechanism, phi, speed, acceleration, wanted: Itera
     with np.errstate(all="ignore"), warnings.catch_warnings():
         # Designs that close at no crank angle give all-NaN rows, reported as NaN and flagged.
         warnings.simplefilter("ignore", RuntimeWarning)
-        status = _motion(mech, phi, speed, acceleration, n, wanted, about, machine, min_transmission_angle, out)
-        if "forces" in groups:
+        forces = "forces" in groups
+        status = _fused(mech, phi, speed, acceleration, n, wanted, about, machine, min_transmission_angle, out,
+                        forces and engine == "fused", engine)
+        if status is None:  # the reference: NumPy kinematics in chunks, then the sweep for the forces
+            status = _motion(mech, phi, speed, acceleration, n, wanted, about, machine, min_transmission_angle,
+                             out)
+        elif engine == "fused":
+            forces = False  # computed in the same pass
+        if forces:
             from ..linkage import sweep
 
             res = sweep(mech, phi, speed, acceleration, shaking_about=tuple(about))
@@ -193,6 +208,84 @@ def evaluate_population(mech: Mechanism, phi, speed, acceleration, wanted: Itera
     first = {k: status.pop(k) for k in ("assembled", "regular", "status")}
     ordered = {k: out[k] for k in order if k in out}
     return {**first, **ordered, **{k: v for k, v in out.items() if k not in ordered}, **status}
+
+
+def _fused(mech, phi, speed, acceleration, n, wanted, about, machine, limit, out, forces, engine):
+    """The status columns, and the motion and (``forces``) force groups' results into ``out``, by one fused
+    pass (:func:`machdyn.linkage.fused_population.run_population`); None when the fused engine is not used
+    (``engine`` "numpy", no numba, crank angles not 1-D, or a mechanism it does not compile: then the NumPy
+    path computes them)."""
+    from ..linkage.engines import available, check_engine
+
+    check_engine(engine)
+    if engine == "numpy" or phi.ndim != 1 or not available():
+        return None
+    from ..linkage.fused_population import run_population
+    from ..linkage.fused_source import SUMMARY_FIELDS
+
+    inertial = bool(wanted & {"inertial_shaking_force.max", "inertial_shaking_moment.max_abs"})
+    plate = compactor_plate(mech) if machine == "compactor" and any(k.startswith("compactor.") for k in wanted) \
+        else None
+    coupler = plate[0].a if plate is not None else None
+    active = next((f.active for f in mech.forces if f.point.split(".")[0] == coupler and f.active), None) \
+        if coupler is not None else None
+    try:
+        run = run_population(mech, phi, _column(speed, n, phi), _column(acceleration, n, phi), designs=n,
+                             about=tuple(about), forces=forces, inertial=inertial, plate=coupler, active=active,
+                             strokes=any(k.startswith("stroke.") for k in wanted))
+    except InputError:  # a mechanism the fused engine does not compile
+        return None
+    M = run.motion
+    nd = run.dyads
+    dead = M[:, 2] > 0.5
+    lows, highs, worsts = (M[:, 5 + k:5 + 3 * nd:3] for k in range(3))
+    if nd:
+        low, high, worst = lows.min(axis=1), highs.max(axis=1), worsts.min(axis=1)
+        none = ~np.isfinite(low)
+        low, high, worst = (np.where(none, np.nan, v) for v in (low, high, worst))
+    else:
+        low = high = worst = np.full(n, np.nan)
+    status = {
+        "assembled": M[:, 0] > 0.5,
+        "assembled_fraction": M[:, 1],
+        "dead_point": dead,
+        "branch_change": M[:, 4] > 0.5,
+        "near_dead_point": (M[:, 3] > 0.5) & ~dead,
+        "poor_transmission": np.isfinite(worst) & (worst < limit),
+    }
+    results = {"transmission_angle.min": low, "transmission_angle.max": high, "transmission_angle.worst": worst}
+    col = 5 + 3 * nd
+    per = per_output(mech)
+    for i, (body, _kind) in enumerate(output_bodies(mech)):
+        results[f"stroke.{body}"] = M[:, col]
+        if i == 0:
+            results["time_ratio"] = M[:, col + 1]
+        if body in per:
+            results[f"time_ratio.{body}"] = M[:, col + 1]
+        col += 2
+    for d, dyad in enumerate(mech.dyads):
+        for output in dyad.outputs():
+            if output.body in per:
+                results[f"transmission_angle.{output.body}.min"] = lows[:, d]
+                results[f"transmission_angle.{output.body}.max"] = highs[:, d]
+    if inertial:
+        results["inertial_shaking_force.max"], results["inertial_shaking_moment.max_abs"] = M[:, col], M[:, col + 1]
+        col += 2
+    if plate is not None:
+        k1_min = M[:, col + 1]
+        k2 = np.broadcast_to(_plate_lever_ratio(mech, *plate), (n,))
+        results.update({"compactor.plate_angle.max": M[:, col], "compactor.k1.min": k1_min, "compactor.k2": k2,
+                        "compactor.force_gain.min": k1_min * k2})
+    out.update({k: v for k, v in results.items() if k in wanted})
+    if run.forces is not None:
+        F = run.forces
+        columns = {name: F[:, k] for k, name in enumerate(SUMMARY_FIELDS)}
+        status["dead_point"] = dead | (~(columns["regular"] > 0.5) & status["assembled"])
+        for key, attr in ENGINE_SUMMARIES.items():
+            out[key] = columns[attr]
+        for j, joint in enumerate(run.generated.joints):
+            out[f"joint.{joint}.max_force"] = F[:, len(SUMMARY_FIELDS) + j]
+    return status
 
 
 def _regular(status: dict[str, np.ndarray]) -> np.ndarray:
@@ -351,11 +444,7 @@ def _compactor_results(mech, kin, phi, ok, shape) -> dict[str, np.ndarray]:
         return {}
     dyad, point = plate
     coupler = dyad.a
-    pts = mech.body(coupler).points
-    length = np.hypot(np.asarray(pts[dyad.inner][0], dtype=float), np.asarray(pts[dyad.inner][1], dtype=float))
-    u = np.asarray(pts[point][0], dtype=float)
-    lever = length - u  # a: distance of P from B along the plate
-    k2 = np.where((lever > 0) & (u >= 0), length / np.where(lever > 0, lever, 1.0), np.nan)
+    k2 = _plate_lever_ratio(mech, dyad, point)
     theta2 = np.broadcast_to(kin.body(coupler).angle, shape)
     gamma = np.abs(np.mod(theta2 + np.pi, 2 * np.pi) - np.pi)
     active = next((f.active for f in mech.forces if f.point.split(".")[0] == coupler and f.active), None)
@@ -370,6 +459,16 @@ def _compactor_results(mech, kin, phi, ok, shape) -> dict[str, np.ndarray]:
         "compactor.k2": np.broadcast_to(k2, (shape[0],)),
         "compactor.force_gain.min": k1_min * k2,
     }
+
+
+def _plate_lever_ratio(mech, dyad, point) -> np.ndarray:
+    """k2 = l / a of the compactor's plate (seed 003 eq 1): l the plate's length, a = l - u the distance of the
+    pressing point P (at u along the plate from A) from B; NaN where P is not between A and B."""
+    pts = mech.body(dyad.a).points
+    length = np.hypot(np.asarray(pts[dyad.inner][0], dtype=float), np.asarray(pts[dyad.inner][1], dtype=float))
+    u = np.asarray(pts[point][0], dtype=float)
+    lever = length - u  # a: distance of P from B along the plate
+    return np.where((lever > 0) & (u >= 0), length / np.where(lever > 0, lever, 1.0), np.nan)
 
 
 def _geometry(mech: Mechanism, n: int) -> dict[str, np.ndarray]:
