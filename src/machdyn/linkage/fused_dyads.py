@@ -138,9 +138,8 @@ def rpr_code(gen: Generator, d) -> None:
              [*_motion(P), *_motion(Q), f"{k}cx", f"{k}cy", f"{k}e", sang, br])
     gen.place(d.b, Q, b_pin, f"{k}om", f"{k}al", f"{k}cb", f"{k}sb", ("value", f"{k}tb"))
     gen.place(d.a, P, a_pin, f"{k}om", f"{k}al", f"{k}ux", f"{k}uy", ("value", f"{k}psi"))
-    # dyads.rpr_motion's transmission reads its normalised determinant (the name is rebound before it is
-    # called), so it is arcsin of |det / D| / D: the same here, so that both engines agree.
-    gen.dyad_check(f"{k}ok", f"{k}dn", f"{d.a}-{d.b}", ("asin", f"abs({k}dn) / {k}D"))
+    # the transmission angle arcsin(|d . u| / D), as dyads.rpr_motion's
+    gen.dyad_check(f"{k}ok", f"{k}dn", f"{d.a}-{d.b}", ("asin", f"abs({k}det) / {k}D"))
     gen.series_out(f"slide.{d.a}", {"s": f"{k}t", "v": f"{k}dt", "a": f"{k}ddt"})
 
     def forces(gen: Generator) -> None:
