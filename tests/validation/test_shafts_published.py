@@ -19,8 +19,9 @@ import numpy as np
 import pytest
 
 from machdyn.shafts.balance import Plane, single_plane, two_plane
-from machdyn.shafts.field import Reading
+from machdyn.shafts.field import Reading, TrialRun
 from machdyn.shafts.field import single_plane as field_single
+from machdyn.shafts.field import two_plane as field_two
 from machdyn.shafts.locomotive import locomotive_balance
 from machdyn.shafts.reciprocating import Cylinder, engine_orders
 from machdyn.shafts.rotating import Mass
@@ -221,3 +222,40 @@ def test_v_twin_at_right_angles_primary_balance_and_secondary_force():
     n = 0.3 / 0.075
     assert e.secondary_force == pytest.approx(math.sqrt(2) * 11.5 * w**2 * 0.075 / n, rel=1e-9)
     assert e.secondary_force == pytest.approx(836.01, abs=0.005)
+
+
+def test_bruel_kjaer_17_227_two_plane_field_balance_as_published_by_hsbalance():
+    """Two-plane field balancing by influence coefficients on published readings: Bruel & Kjaer application note
+    17-227 (J. Vaughan, 'Static and Dynamic Balancing using portable measuring equipment'), Table 2, example 6,
+    as transcribed in the documentation of the open-source package hsbalance (README and docs/source/
+    walkThroughExample.rst of github.com/MagedMohamedTurk/Turbomachinery-Rotors-Balancing, read): original run
+    170 mm/s at 112 deg (sensor 1) and 53 mm/s at 78 deg (sensor 2); 1.15 g at 0 deg in plane 1 gives 235 at 94
+    and 58 at 68; 1.15 g at 0 deg in plane 2 gives 185 at 115 and 77 at 104. The application note's own printed
+    corrections were NOT retrieved (only its first page was readable); compared with the result hsbalance
+    publishes for these data, printed to four figures and 0.1 deg: influence coefficients 78.433 at 58.4, 15.34
+    at 145.3, 9.462 at 10.2, 32.56 at 142.4 (mm/s per g) and corrections 1.979 g at 236.2 deg (plane 1) and
+    1.071 g at 121.8 deg (plane 2). Same conventions there as here: V = A e^{i phase}, W = m e^{i angle},
+    W = -a^{-1} V0."""
+    d = math.radians
+    grams = 1e-3
+
+    def at(amplitude: float, phase: float) -> Reading:
+        return Reading(amplitude, d(phase))
+
+    original = [at(170.0, 112.0), at(53.0, 78.0)]
+    trials = [TrialRun(0, 1.15 * grams, 0.0, (at(235.0, 94.0), at(58.0, 68.0))),
+              TrialRun(1, 1.15 * grams, 0.0, (at(185.0, 115.0), at(77.0, 104.0)))]
+    fb = field_two(original, trials)
+    printed = [[(78.433, 58.4), (15.34, 145.3)], [(9.462, 10.2), (32.56, 142.4)]]
+    for i in range(2):
+        for j in range(2):
+            amplitude, phase = printed[i][j]
+            coeff = fb.coefficients[i, j] * grams  # per gram
+            assert abs(coeff) == pytest.approx(amplitude, rel=6e-4)  # four printed figures
+            assert math.degrees(cmath.phase(coeff)) % 360.0 == pytest.approx(phase, abs=0.05)
+    assert fb.correction_mass[0] / grams == pytest.approx(1.979, abs=5e-4)
+    assert math.degrees(fb.correction_angle[0]) == pytest.approx(236.2, abs=0.05)
+    assert fb.correction_mass[1] / grams == pytest.approx(1.071, abs=5e-4)
+    assert math.degrees(fb.correction_angle[1]) == pytest.approx(121.8, abs=0.05)
+    # and the corrections cancel the original readings through the same coefficients (a square system)
+    assert np.allclose(fb.coefficients @ fb.correction() + fb.original, 0.0, atol=1e-9 * 170.0)
