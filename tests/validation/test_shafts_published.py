@@ -176,7 +176,8 @@ def test_two_cylinder_uncoupled_locomotive_hammer_blow_tractive_effort_swaying_c
 
 def test_acoem_single_plane_vector_balancing_example():
     """ACOEM, 'A Vector Approach to Single Plane Balancing' (acoem.com/india/blog/a-vector-approach-to-single-
-    plane-balancing): O = 7 mils at 160 deg, trial weight 100 g, O + T = 5 mils at 70 deg. Printed, read off polar
+    plane-balancing; its text could not be retrieved again to re-check these figures, which are quoted as first
+    transcribed): O = 7 mils at 160 deg, trial weight 100 g, O + T = 5 mils at 70 deg. Printed, read off polar
     graph paper: T = 9 mils, correction weight 100 x 7 / 9 = 77.77 g, angle between O and T, A = 35 deg. The exact
     vector arithmetic gives T = sqrt(7^2 + 5^2) = 8.60 mils (the readings are 90 deg apart), hence 81.4 g: the
     printed values are those of the drawing, to its half-mil and one-degree resolution."""
@@ -194,7 +195,9 @@ def test_acoem_single_plane_vector_balancing_example():
 def test_iso_1940_permissible_unbalance_in_imperial_units():
     """energy-tech.com, 'Balancing standards' (energy-tech.com/article.cfm?id=18389, p. 3): ISO 1940-1 in imperial
     units, U_per [oz in] = 6.015 G W / N for a rotor of W lb at N rpm, and the two-plane allocation U_per =
-    U_per1 + U_per2 following the bearing loads. The printed constant 6.015 is rounded to four figures."""
+    U_per1 + U_per2 following the bearing loads. The printed constant 6.015 is rounded to four figures; it is
+    also what the SI form U = 9549 G m / n [g mm] gives in oz in for W lb (9549 x 0.45359 / 720.08 = 6.015), so
+    the check stands even though the article could not be retrieved again to re-read it."""
     from machdyn.shafts.grades import allocate, permissible_unbalance
 
     oz_in = 28.349523125e-3 * 25.4e-3  # kg m
