@@ -174,3 +174,47 @@ def test_phase_search_finds_the_three_throw_crank_and_writes_it_as_a_problem(run
     bad.write_text(PHASES.replace('cylinders = ["c2", "c3"]', 'cylinders = ["c2", "c9"]'))
     check, run, output = _both(runner, bad, tmp_path)
     assert check == run == 2 and "phase_search" in output and "c9" in output
+
+
+BK_17_227 = """
+[meta]
+name = "B&K 17-227, Table 2, example 6"
+
+[shaft_line]
+speed = "1485 rpm"  # not transcribed with the readings; the influence-coefficient solution does not use it
+
+[field_balancing]
+unit = "mm/s"
+planes = [ { name = "plane1" }, { name = "plane2" } ]
+original = [ { amplitude = 170, phase = "112 deg" }, { amplitude = 53, phase = "78 deg" } ]
+
+[[field_balancing.trials]]
+plane = 1
+mass = "1.15 g"
+angle = "0 deg"
+readings = [ { amplitude = 235, phase = "94 deg" }, { amplitude = 58, phase = "68 deg" } ]
+
+[[field_balancing.trials]]
+plane = 2
+mass = "1.15 g"
+angle = "0 deg"
+readings = [ { amplitude = 185, phase = "115 deg" }, { amplitude = 77, phase = "104 deg" } ]
+"""
+
+
+def test_published_two_plane_field_readings_through_a_problem_file(runner, tmp_path):
+    """The readings of Bruel & Kjaer application note 17-227, Table 2, example 6 (as transcribed by hsbalance's
+    documentation; see tests/validation/test_shafts_published.py) entered as a [field_balancing] table give, from
+    the command line, the corrections hsbalance publishes for them: 1.979 g at 236.2 deg and 1.071 g at
+    121.8 deg (printed to 0.001 g and 0.1 deg)."""
+    path = tmp_path / "bk.toml"
+    path.write_text(BK_17_227)
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["run", str(path), "--out", str(out), "-q"])
+    assert result.exit_code == 0, result.output
+    scalars = json.loads((out / "results.json").read_text())["scalars"]
+    assert scalars["shaft.field.plane1.mass"]["unit"] == "g"
+    assert scalars["shaft.field.plane1.mass"]["value"] == pytest.approx(1.979, abs=5e-4)
+    assert scalars["shaft.field.plane2.mass"]["value"] == pytest.approx(1.071, abs=5e-4)
+    assert scalars["shaft.field.plane1.angle"]["value"] == pytest.approx(236.2, abs=0.05)
+    assert scalars["shaft.field.plane2.angle"]["value"] == pytest.approx(121.8, abs=0.05)

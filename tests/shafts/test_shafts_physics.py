@@ -111,6 +111,28 @@ def test_exact_first_order_equals_the_primary_and_second_order_approaches_the_se
     assert e.force_order[1] > e.secondary_force
 
 
+def test_exact_orders_tend_to_the_two_term_values_as_the_crank_to_rod_ratio_vanishes():
+    """lambda = r / l -> 0: the exact force's order 1 stays the primary m w^2 r, order 2 tends to the two-term
+    secondary m w^2 r lambda with a relative excess lambda^2 / 4 + O(lambda^4) (the Fourier series of the
+    piston acceleration, Uicker et al., 5th ed., sec. 16.6), and orders 3 and above vanish (order 4 as
+    lambda^3 / 4); so the two-term textbook model is the limit of the exact one."""
+    r, m, w = 0.05, 2.0, 100.0
+    excess, fourth = [], []
+    for n in (4.0, 8.0, 16.0, 32.0, 64.0):
+        lam = 1.0 / n
+        e = engine_orders([Cylinder("1", 0.0, 0.0, 0.0, r, r * n, m)], w, 720, 6)
+        mrw2 = m * w**2 * r
+        assert e.force_order[0] == pytest.approx(e.primary_force, rel=1e-12)
+        assert e.secondary_force == pytest.approx(mrw2 * lam, rel=1e-12)
+        excess.append(e.force_order[1] / e.secondary_force - 1.0)
+        assert excess[-1] == pytest.approx(lam**2 / 4, rel=0.6 * lam**2 + 1e-9)
+        fourth.append(e.force_order[3] / mrw2)
+        assert fourth[-1] == pytest.approx(lam**3 / 4, rel=lam**2 + 1e-6)
+        assert e.force_order[2] <= 1e-9 * mrw2 and e.force_order[4] <= 1e-9 * mrw2  # odd orders: none at all
+    assert all(b < a for a, b in zip(excess, excess[1:], strict=False))
+    assert excess[-1] < 1e-4 and fourth[-1] < 1e-6
+
+
 def test_four_stroke_inline_four_is_free_of_primary_forces_and_couples():
     phases = crank_phases_from_firing_order([1, 3, 4, 2])
     cyl = [Cylinder(str(k), 0.1 * k, phases[k], 0.0, 0.04, 0.14, 0.5) for k in (1, 2, 3, 4)]
