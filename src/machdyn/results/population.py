@@ -405,13 +405,10 @@ def _motion_chunk(mech, kin, phi, shape, wanted, about, machine, limit) -> tuple
                     results[f"transmission_angle.{out.body}.min"] = np.where(good, mu, np.inf).min(axis=1)
                     results[f"transmission_angle.{out.body}.max"] = np.where(good, mu, -np.inf).max(axis=1)
     if wanted & {"inertial_shaking_force.max", "inertial_shaking_moment.max_abs"}:
-        from ..linkage import mass_centre
-        from ..linkage.mass_centre import inertial_shaking_moment
+        from ..linkage.mass_centre import inertial_force, inertial_shaking_moment
 
-        try:
-            ix, iy = mass_centre(kin).inertia_force
-        except InputError:  # a massless (statics) model: no centre of mass, no inertia force
-            ix = iy = np.zeros(shape)
+        # -sum m a per design: zero for a massless (statics) design, whatever the other designs of the chunk weigh
+        ix, iy = (np.broadcast_to(np.asarray(f, dtype=float), shape) for f in inertial_force(kin))
         results["inertial_shaking_force.max"] = np.where(ok, np.hypot(ix, iy), -np.inf).max(axis=1)
         moment = np.abs(np.broadcast_to(inertial_shaking_moment(kin, (about[0], about[1])), shape))
         results["inertial_shaking_moment.max_abs"] = np.where(ok, moment, -np.inf).max(axis=1)
