@@ -253,14 +253,3 @@ LABELS = {
     "iso7119": "ISO 7119 (P_H + P_N + P_st)",
     "cema": "CEMA 350 horsepower method",
 }
-
-
-def select_motor(required_power: float) -> float:
-    """The smallest IEC 60072-1 motor rating [W] ≥ ``required_power`` [W]."""
-    for rating in tables.motor_ratings():
-        if rating >= required_power * (1.0 - 1e-12):
-            return rating
-    raise InputError(
-        f"The required motor power {required_power / 1000:.4g} kW exceeds the largest tabulated rating "
-        f"{tables.motor_ratings()[-1] / 1000:g} kW."
-    )

@@ -12,6 +12,7 @@ from typing import Any
 
 import numpy as np
 
+from ..dynamics.motors import smallest_rating
 from . import checks as ck
 from . import power as pw
 from . import tables
@@ -122,7 +123,7 @@ def screw_states(problem: ConveyorProblem, diameter: Any, pitch: Any, speed: Any
     powers = method_powers(p, d, n, m_dot, fill_actual)
     shaft = powers[p.power_method]["power"] if p.power_method in powers else np.nan * d
     motor_required = shaft / p.drive_efficiency
-    motor = tables.motor_ratings_for(motor_required)
+    motor = np.asarray(smallest_rating(motor_required))
     torque = ck.torque_from_power(shaft, n) if p.torque is None else p.torque + 0 * d
 
     wall = p.pipe_wall if p.pipe_wall is not None else d_o / 12.0
