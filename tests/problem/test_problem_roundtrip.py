@@ -218,12 +218,3 @@ def test_quantities_are_written_exactly(value):
         from machdyn.units import parse_quantity
 
         assert parse_quantity(text, meta.unit) == value
-
-
-def test_dump_problem_refuses_a_conveyor_problem_clearly():
-    from machdyn.errors import InputError
-    from machdyn.problem import dump_problem, load_problem
-
-    message = "dump_problem writes linkage and rotary-screen problems; got a ConveyorProblem"
-    with pytest.raises(InputError, match=message):
-        dump_problem(load_problem("examples/iodized_salt_conveyor.toml"))
