@@ -13,8 +13,8 @@ from hypothesis import strategies as st
 from machdyn.problem import build_mechanism, crank_angles, dump_problem, load_problem
 from machdyn.problem.dumper import format_quantity_exact
 from machdyn.problem.fields import Unit
-from machdyn.problem.rotary import RotaryScreenProblem
 from machdyn.problem.schema import LinkageProblem
+from machdyn.screen.schema import RotaryScreenProblem
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))

@@ -269,7 +269,7 @@ def load_problem(source: str | os.PathLike) -> Any:
     """Read and validate a problem file (a path, or the TOML text itself); returns the validated problem.
 
     A ``[mechanism]`` file gives a :class:`~machdyn.problem.schema.LinkageProblem`, a ``[rotary_screen]`` file a
-    :class:`~machdyn.problem.rotary.RotaryScreenProblem`, a ``[screw_conveyor]`` file the conveyor's problem;
+    :class:`~machdyn.screen.schema.RotaryScreenProblem`, a ``[screw_conveyor]`` file the conveyor's problem;
     each capability table the file has is an attribute of the same name (``problem.sweep``). Raises
     :class:`~machdyn.errors.ProblemFileError` listing every mistake with its path (``mechanism.coupler.length``),
     the rule broken and the value received; assembly at every crank angle is checked by
