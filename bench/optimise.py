@@ -44,7 +44,7 @@ TARGET_RATIO = 50.0
 
 def machdyn_problem(forces: bool):
     """The compactor problem with three variables (and the torque constraint when ``forces``)."""
-    from machdyn.problem.loader import load_problem
+    from machdyn.reading import load_problem
 
     problem = load_problem(EXAMPLE)
     spec = problem.optimise

@@ -57,7 +57,7 @@ def _said(problems, path):
 
 
 def test_every_mistake_of_a_conveyor_file_is_said_at_once_with_path_rule_and_value():
-    from machdyn.problem import load_problem
+    from machdyn.reading import load_problem
 
     with pytest.raises(ProblemFileError) as caught:
         load_problem(BAD)
@@ -83,7 +83,7 @@ def test_check_and_run_refuse_the_bad_file_alike(tmp_path):
 
 def test_a_rule_across_fields_of_valid_tables_is_said_by_the_build():
     """The lift longer than the screw needs both values valid: the kind's build says it, check and run alike."""
-    from machdyn.problem import load_problem
+    from machdyn.reading import load_problem
     from machdyn.runner import check_problem
 
     text = (ROOT / "examples" / "conveyor_lift_torque.toml").read_text(encoding="utf-8")
@@ -99,7 +99,8 @@ def test_a_rule_across_fields_of_valid_tables_is_said_by_the_build():
 
 @pytest.mark.parametrize("example", CONVEYORS, ids=lambda p: p.stem)
 def test_a_conveyor_problem_is_written_back_and_read_to_the_same_problem_and_results(example):
-    from machdyn.problem import dump_problem, load_problem
+    from machdyn.problem import dump_problem
+    from machdyn.reading import load_problem
     from machdyn.runner import run_problem
 
     spec = load_problem(example)

@@ -10,10 +10,11 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from machdyn.problem import build_mechanism, crank_angles, dump_problem, load_problem
+from machdyn.problem import build_mechanism, crank_angles, dump_problem
 from machdyn.problem.dumper import format_quantity_exact
 from machdyn.problem.fields import Unit
 from machdyn.problem.schema import LinkageProblem
+from machdyn.reading import load_problem
 from machdyn.screen.schema import RotaryScreenProblem
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -359,7 +359,7 @@ def validate(data: dict[str, Any], source: str | None = None) -> ConveyorProblem
 
     Raises :class:`~machdyn.errors.ProblemFileError` listing every mistake as (path, message).
     """
-    from ..problem.loader import validate as validate_file
+    from ..reading import validate as validate_file
 
     _spec, problem = validate_file(data, MAIN, source)
     return problem
