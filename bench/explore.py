@@ -34,7 +34,7 @@ EXAMPLE = ROOT / "examples" / "four_bar_press_explore.toml"
 
 def problem(designs: int, positions: int, partition: int | None = None):
     """The press exploration with ``designs`` Sobol' designs at ``positions`` crank angles."""
-    from machdyn.problem import load_problem
+    from machdyn.reading import load_problem
 
     text = EXAMPLE.read_text()
     text = re.sub(r"(?m)^samples = \d+", f"samples = {designs}", text)

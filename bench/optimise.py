@@ -59,7 +59,7 @@ POSITIONS = 360  # crank positions per design, for every optimiser (the example 
 
 def machdyn_problem(forces: bool):
     """The compactor problem with three variables (and the torque constraint when ``forces``)."""
-    from machdyn.problem.loader import load_problem
+    from machdyn.reading import load_problem
 
     problem = load_problem(EXAMPLE)
     spec = problem.optimise

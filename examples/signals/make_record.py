@@ -22,7 +22,7 @@ sys.path.insert(0, str(ROOT / "src"))
 
 from machdyn.kinds import kind  # noqa: E402
 from machdyn.pipeline import no_step  # noqa: E402
-from machdyn.problem.loader import read_problem  # noqa: E402
+from machdyn.reading import read_problem  # noqa: E402
 from machdyn.vibration.study import study_frame  # noqa: E402
 
 SAMPLING_RATE = 2560.0  # Hz: more than twice the band's top of 1000 Hz

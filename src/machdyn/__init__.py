@@ -7,7 +7,7 @@ Everything computes in SI floats; units are parsed and printed at the boundary b
 __version__ = "0.1.0"
 
 _LAZY = {
-    "load_problem": "problem",
+    "load_problem": "reading",
     "dump_problem": "problem",
     "run_problem": "runner",
     "check_problem": "runner",

@@ -196,7 +196,7 @@ def _print_rows(summary: Any, fmt: TableFormat, warnings: list[str]) -> None:
 def _load(file: Path):
     """The loaded problem of a file, or exit 2 with every problem listed."""
     from .errors import ProblemFileError
-    from .problem.loader import read_problem
+    from .reading import read_problem
 
     try:
         return read_problem(file)

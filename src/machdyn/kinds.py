@@ -16,7 +16,7 @@ from .pipeline import Capability, ProblemKind, import_object
 #: main table -> the :class:`~machdyn.pipeline.ProblemKind`
 KINDS: dict[str, str] = {
     "mechanism": "machdyn.pipelines.mechanism:KIND",
-    "rotary_screen": "machdyn.pipelines.rotary_screen:KIND",
+    "rotary_screen": "machdyn.screen.kind:KIND",
     "screw_conveyor": "machdyn.conveyor.kind:KIND",
     "cam": "machdyn.cams.stage:KIND",
     "shaft_line": "machdyn.shafts.kind:KIND",

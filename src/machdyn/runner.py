@@ -6,7 +6,7 @@
 >>> result.frames["torque_power"].head()                    # doctest: +SKIP
 >>> result.write("out")                                     # doctest: +SKIP
 
-The stages: read and validate the file (:mod:`machdyn.problem.loader`), build the model and analyse it (the
+The stages: read and validate the file (:mod:`machdyn.reading`), build the model and analyse it (the
 problem's kind), run each capability table the file has, in order (:mod:`machdyn.kinds`), collect every result
 in SI with its label (:mod:`machdyn.results`), and write the outputs (:mod:`machdyn.outputs`, the report).
 """
@@ -21,7 +21,7 @@ from typing import Any
 
 from .errors import AssemblyError, InputError, ProblemFileError, SingularPositionError
 from .pipeline import Outcome, StageContext, Step, import_object, no_step
-from .problem.loader import LoadedProblem, load_problem, read_problem
+from .reading import LoadedProblem, load_problem, read_problem
 from .results import Results, Summary, collect, summarise
 
 __all__ = ["RunResult", "check_problem", "load_problem", "read_problem", "run_problem"]
@@ -206,7 +206,7 @@ def check_problem(problem: Any) -> list[str]:
 
 def run_problem(problem: Any, *, text: str | None = None, step: Step = no_step) -> RunResult:
     """Analyse a problem: a path or TOML text, a :class:`LoadedProblem` or a problem from
-    :func:`~machdyn.problem.load_problem`. ``text`` is the problem file echoed in the report (by default the
+    :func:`~machdyn.reading.load_problem`. ``text`` is the problem file echoed in the report (by default the
     problem written back as TOML). Raises :class:`~machdyn.errors.ProblemFileError` for bad input and the
     engine's errors (:class:`~machdyn.errors.AssemblyError`, ...) when the linkage cannot close."""
     from .kinds import capabilities_for, kind

@@ -22,9 +22,9 @@ COVERED_MODULES = (
     "machdyn.linkage.inverse",
     "machdyn.linkage.mass_centre",
     "machdyn.machines.compactor",
-    "machdyn.machines.rotary_screen.formulas",
-    "machdyn.machines.rotary_screen.ratio",
-    "machdyn.machines.rotary_screen.slider",
+    "machdyn.screen.formulas",
+    "machdyn.screen.ratio",
+    "machdyn.screen.slider",
     "machdyn.units",
 )
 

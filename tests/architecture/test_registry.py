@@ -18,9 +18,9 @@ from typer.testing import CliRunner
 from machdyn import kinds
 from machdyn.cli import EXIT_BAD_INPUT, EXIT_CHECKS_FAILED, EXIT_OK, app
 from machdyn.pipeline import Capability, Outcome, StageContext
-from machdyn.problem import load_problem
 from machdyn.problem.fields import Torque
 from machdyn.problem.schema import Spec
+from machdyn.reading import load_problem
 from machdyn.results.labels import Label
 from machdyn.runner import run_problem
 

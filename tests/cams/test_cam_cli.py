@@ -97,7 +97,8 @@ def test_a_given_spring_too_weak_for_the_margin_fails_with_exit_3(tmp_path):
 
 
 def test_the_example_round_trips_through_the_dumper():
-    from machdyn.problem import dump_problem, load_problem
+    from machdyn.problem import dump_problem
+    from machdyn.reading import load_problem
 
     problem = load_problem(EXAMPLE)
     assert load_problem(dump_problem(problem)) == problem

@@ -190,7 +190,7 @@ def test_interrupted_run_leaves_the_previous_set_whole(tmp_path, monkeypatch):
     """Ctrl-C while the report is rendered: an output folder of an earlier run keeps that run's whole set (no
     mix of old and new files), a new folder is not left behind, and no staging files remain."""
     from machdyn import runner as runner_module
-    from machdyn.problem import load_problem
+    from machdyn.reading import load_problem
 
     old = runner_module.run_problem(load_problem(ROOT / "examples" / "slider_crank.toml"))
     kept = tmp_path / "kept"

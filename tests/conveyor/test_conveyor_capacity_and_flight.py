@@ -31,8 +31,8 @@ def test_capacity_deducts_the_pipe_as_cema_capacity_tables_do(screw, pipe, table
     8-20 % above every row (12 in: 21.2): the tables assume the deduction.
     """
     d, d_o = screw * INCH, pipe * INCH
-    annulus = design.volume_capacity(d, d, 1.0, 0.45, 1.0, d_o) / FT3_PER_H
-    circle = design.volume_capacity(d, d, 1.0, 0.45, 1.0) / FT3_PER_H
+    annulus = design.volume_capacity(d, d, design.RPM, 0.45, 1.0, d_o) / FT3_PER_H  # at 1 rpm
+    circle = design.volume_capacity(d, d, design.RPM, 0.45, 1.0) / FT3_PER_H
     assert annulus == pytest.approx(table, rel=0.02)
     assert circle > 1.07 * table
 

@@ -68,8 +68,8 @@ def test_textbook_forms_differ_only_by_g():
 
 
 def test_cema_units_and_overload():
-    # HPf = L N Fd Fb / 1e6 in ft and rpm
-    assert power.cema_friction_hp(100 * 0.3048, 50, 55, 1.7) == pytest.approx(100 * 50 * 55 * 1.7 / 1e6)
+    # HPf = L N Fd Fb / 1e6 in ft and rpm (the speed given in rad/s: 50 rpm)
+    assert power.cema_friction_hp(100 * 0.3048, 50 * math.pi / 30, 55, 1.7) == pytest.approx(100 * 50 * 55 * 1.7 / 1e6)
     # HPm = C L W Ff Fm Fp / 1e6, C ft^3/h, W lb/ft^3
     c_ft3h, w = 1000.0, 50.0
     vol = c_ft3h * 0.3048**3 / 3600
@@ -84,11 +84,11 @@ def test_cema_units_and_overload():
 
 
 def test_cema_total_applies_overload_and_efficiency():
-    r = power.power_cema(volume_flow=0.01, bulk_density=800, length=10, speed_rpm=60, diameter_factor=55,
+    r = power.power_cema(volume_flow=0.01, bulk_density=800, length=10, speed=2 * math.pi, diameter_factor=55,
                          hanger_bearing_factor=1.7, material_factor=1.0, efficiency=0.9)
     assert r.total_hp == pytest.approx((r.friction_hp + r.material_hp) * r.overload_factor / 0.9)
     with pytest.raises(InputError, match=re.escape("The drive efficiency must be in (0, 1]; got 1.2.")):
-        power.power_cema(volume_flow=0.01, bulk_density=800, length=10, speed_rpm=60, diameter_factor=55,
+        power.power_cema(volume_flow=0.01, bulk_density=800, length=10, speed=2 * math.pi, diameter_factor=55,
                          hanger_bearing_factor=1.7, material_factor=1.0, efficiency=1.2)
 
 
@@ -105,9 +105,11 @@ def test_table_lookups_name_the_value_and_suggest():
 
 
 def test_motor_selection_next_iec_rating():
-    assert power.select_motor(1276.0) == 1500.0
-    assert power.select_motor(1500.0) == 1500.0
-    with pytest.raises(InputError, match="exceeds the largest tabulated rating 200 kW"):
-        power.select_motor(250e3)
+    """The conveyor's drive is chosen from the one IEC 60072-1 table by the shared selection."""
+    from machdyn.dynamics.motors import smallest_rating
+
+    assert smallest_rating(1276.0) == 1500.0
+    assert smallest_rating(1500.0) == 1500.0
+    assert math.isnan(smallest_rating(250e3))
 
 

@@ -22,7 +22,7 @@ def _all_methods(m, length, beta, d, lam):
         power.power_textbook_360(m, length, lift, lam),
         power.power_textbook_367(m, length, lift, lam),
         power.power_iso7119(m, length, beta, d, lam).total,
-        power.power_cema(volume_flow=vol, bulk_density=1200.0, length=length, speed_rpm=45 / math.sqrt(d),
+        power.power_cema(volume_flow=vol, bulk_density=1200.0, length=length, speed=45 / math.sqrt(d) * math.pi / 30,
                          diameter_factor=55.0, hanger_bearing_factor=1.7, material_factor=1.0, lift=lift,
                          efficiency=0.9).total_watts,
     ]

@@ -11,7 +11,7 @@ import pytest
 
 from machdyn.optimise import optimise
 from machdyn.optimise.pareto import hypervolume_converged, hypervolumes, spacing
-from machdyn.problem.loader import load_problem
+from machdyn.reading import load_problem
 
 from .helpers import ROOT, check_and_run, invoke
 

@@ -11,7 +11,7 @@ from typer.testing import CliRunner
 
 from machdyn.cli import app
 from machdyn.errors import ProblemFileError
-from machdyn.problem import load_problem
+from machdyn.reading import load_problem
 from machdyn.runner import run_problem
 
 ROOT = Path(__file__).resolve().parents[2]

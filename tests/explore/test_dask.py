@@ -12,7 +12,7 @@ import pandas as pd
 
 from machdyn.explore import explore
 from machdyn.explore.population import evaluate_population
-from machdyn.problem import load_problem
+from machdyn.reading import load_problem
 
 from .conftest import explore_text
 

@@ -12,8 +12,8 @@ from machdyn.explore import explore, plan_exploration
 from machdyn.explore.evaluate import evaluate_partition
 from machdyn.explore.sampling import partition_designs
 from machdyn.linkage import crank_angles, kinetostatics
-from machdyn.problem import load_problem
 from machdyn.problem.build import build_mechanism
+from machdyn.reading import load_problem
 
 from .conftest import BASE, explore_text
 

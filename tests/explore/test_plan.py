@@ -10,7 +10,7 @@ import pytest
 
 from machdyn.errors import ProblemFileError
 from machdyn.explore import explore, plan_exploration
-from machdyn.problem import load_problem
+from machdyn.reading import load_problem
 
 from .conftest import BASE
 

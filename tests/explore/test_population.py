@@ -9,7 +9,7 @@ import pytest
 from machdyn.errors import InputError, ProblemFileError
 from machdyn.explore import explore
 from machdyn.explore.population import evaluate_population
-from machdyn.problem import load_problem
+from machdyn.reading import load_problem
 
 from .conftest import explore_text
 

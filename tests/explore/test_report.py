@@ -9,7 +9,7 @@ from matplotlib.figure import Figure
 from machdyn.explore import explore
 from machdyn.explore.digest import SAMPLE
 from machdyn.explore.stage import outcome
-from machdyn.problem import load_problem
+from machdyn.reading import load_problem
 from machdyn.report.explore import exploration_section, plot_design_space, sections
 
 from .conftest import explore_text

@@ -11,7 +11,7 @@ import pyarrow.parquet as pq
 import pytest
 
 from machdyn.explore import explore
-from machdyn.problem import load_problem
+from machdyn.reading import load_problem
 
 from .conftest import explore_text
 

@@ -7,8 +7,9 @@ import re
 import numpy as np
 import pytest
 
+from machdyn import screen as rotary_screen
 from machdyn.errors import AssemblyError, InputError
-from machdyn.machines import compactor, rotary_screen, tamper
+from machdyn.machines import compactor, tamper
 
 
 def raises(exc, message):

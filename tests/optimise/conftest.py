@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from machdyn.problem.loader import load_problem
+from machdyn.reading import load_problem
 
 ROOT = Path(__file__).resolve().parents[2]
 

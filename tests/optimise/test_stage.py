@@ -8,7 +8,7 @@ import json
 from typer.testing import CliRunner
 
 from machdyn.cli import app
-from machdyn.problem.loader import load_problem
+from machdyn.reading import load_problem
 from machdyn.runner import run_problem
 
 from .conftest import ROOT

@@ -10,11 +10,12 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from machdyn.problem import build_mechanism, crank_angles, dump_problem, load_problem
+from machdyn.problem import build_mechanism, crank_angles, dump_problem
 from machdyn.problem.dumper import format_quantity_exact
 from machdyn.problem.fields import Unit
-from machdyn.problem.rotary import RotaryScreenProblem
 from machdyn.problem.schema import LinkageProblem
+from machdyn.reading import load_problem
+from machdyn.screen.schema import RotaryScreenProblem
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
@@ -218,12 +219,3 @@ def test_quantities_are_written_exactly(value):
         from machdyn.units import parse_quantity
 
         assert parse_quantity(text, meta.unit) == value
-
-
-def test_dump_problem_refuses_a_conveyor_problem_clearly():
-    from machdyn.errors import InputError
-    from machdyn.problem import dump_problem, load_problem
-
-    message = "dump_problem writes linkage and rotary-screen problems; got a ConveyorProblem"
-    with pytest.raises(InputError, match=message):
-        dump_problem(load_problem("examples/iodized_salt_conveyor.toml"))

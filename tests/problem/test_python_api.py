@@ -8,7 +8,7 @@ import pandas as pd
 import pytest
 
 from machdyn.errors import AssemblyError, ProblemFileError
-from machdyn.problem import load_problem
+from machdyn.reading import load_problem
 from machdyn.runner import RunResult, check_problem, run_problem
 
 ROOT = Path(__file__).resolve().parents[2]

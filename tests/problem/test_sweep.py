@@ -11,8 +11,8 @@ import pytest
 
 from machdyn.errors import ProblemFileError
 from machdyn.linkage import crank_angles, kinetostatics
-from machdyn.problem import load_problem
 from machdyn.problem.build import build_mechanism
+from machdyn.reading import load_problem
 from machdyn.runner import run_problem
 
 BASE = """

@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.figure import Figure
 
-from machdyn.problem import load_problem
+from machdyn.reading import load_problem
 from machdyn.report import plots
 from machdyn.runner import run_problem
 

@@ -10,8 +10,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from machdyn.problem import load_problem
 from machdyn.problem.build import build_mechanism, crank_angles
+from machdyn.reading import load_problem
 from machdyn.results.catalogue import (
     ALIASES,
     MECHANISM,

@@ -243,7 +243,7 @@ def test_half_the_reciprocating_masses_balances_the_primary_force_of_a_90_deg_v_
     """A 90 deg V-twin on one crank pin: its primary forces add up to one direct crank m r w^2 turning with the
     shaft and no reverse crank (Khurmi & Gupta, 14th ed., sec. 22.11), so correcting c = 1/2 of each reciprocating
     mass as if it revolved at the pin removes the whole primary force; the secondary remains."""
-    from machdyn.problem.loader import load_problem
+    from machdyn.reading import load_problem
     from machdyn.shafts.model import analyse, build
 
     text = """
@@ -315,7 +315,7 @@ def test_linkages_on_the_shaft_carry_the_planar_engine_shaking_force_into_space(
     """Two slider-cranks of examples/slider_crank.toml (rod with its own inertia) in two planes, the second turned
     90 deg about the shaft and half a turn behind: the shaft line's force is the planar engine's shaking force of
     each, turned into shaft axes, and its couple z x F; in one plane at z = 0 the couple vanishes."""
-    from machdyn.problem.loader import load_problem, read_problem
+    from machdyn.reading import load_problem, read_problem
     from machdyn.shafts.model import analyse, build
 
     problem = load_problem(LINKAGE_LINE.replace("{z1}", "-100 mm").replace("{z2}", "150 mm"))
@@ -357,7 +357,7 @@ def test_first_harmonic_target_cancels_the_forward_first_harmonic_of_linkages_in
     """The tamper line of two double tampers: corrections aimed at the forward-turning first harmonic leave
     none of it in the force or the couple (to 1e-9); the backward part and the higher orders stay. For rotating
     masses alone the same target gives the classical two-plane corrections."""
-    from machdyn.problem.loader import load_problem
+    from machdyn.reading import load_problem
     from machdyn.shafts.balance import forward_first_harmonic
     from machdyn.shafts.model import analyse, build
 

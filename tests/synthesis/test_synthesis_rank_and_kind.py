@@ -10,7 +10,7 @@ from typer.testing import CliRunner
 
 from machdyn.cli import app
 from machdyn.linkage import analyse
-from machdyn.problem import load_problem
+from machdyn.reading import load_problem
 from machdyn.runner import run_problem
 from machdyn.synthesis.candidate import Candidate
 from machdyn.synthesis.defects import Targets, check

@@ -11,9 +11,9 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from machdyn import screen as rs
 from machdyn.balancing.frame import cycle
 from machdyn.balancing.springs import spring_compensation
-from machdyn.machines import rotary_screen as rs
 
 
 def test_least_squares_spring_is_seed002_k_equals_mc_omega_squared():

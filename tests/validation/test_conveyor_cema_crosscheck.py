@@ -45,7 +45,8 @@ def reference_hp(*, diameter_in, length_mm, density_lb_ft3, mass_flow_kg_h, spee
 def machdyn_hp(*, diameter_in, length_mm, density_lb_ft3, mass_flow_kg_h, speed_rpm, fb, fm, ff, fp, lift=0.0):
     rho = density_lb_ft3 * 0.45359237 / 0.3048**3
     r = power.power_cema(volume_flow=mass_flow_kg_h / 3600 / rho, bulk_density=rho, length=length_mm / 1000,
-                         speed_rpm=speed_rpm, diameter_factor=tables.cema_diameter_factor(diameter_in * 0.0254),
+                         speed=speed_rpm * math.pi / 30,
+                         diameter_factor=tables.cema_diameter_factor(diameter_in * 0.0254),
                          hanger_bearing_factor=fb, material_factor=fm, flight_factor=ff, paddle_factor=fp,
                          efficiency=0.88, lift=lift)
     return r.total_hp, r.overload_factor, r.friction_hp + r.material_hp

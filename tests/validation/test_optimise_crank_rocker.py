@@ -19,7 +19,7 @@ import math
 import pytest
 
 from machdyn.optimise import optimise
-from machdyn.problem.loader import load_problem
+from machdyn.reading import load_problem
 
 PROBLEM = """
 [meta]

@@ -11,8 +11,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from machdyn import screen as rs
 from machdyn.linkage import energy, kinematics, kinetostatics
-from machdyn.machines import rotary_screen as rs
 
 S = rs.PAPER_SCREEN
 W = S.omega

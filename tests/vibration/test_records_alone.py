@@ -15,7 +15,7 @@ from machdyn.cli import app
 from machdyn.errors import ProblemFileError
 from machdyn.kinds import kind
 from machdyn.pipeline import no_step
-from machdyn.problem.loader import read_problem
+from machdyn.reading import read_problem
 from machdyn.report.vibration import predicted_note
 from machdyn.runner import check_problem, run_problem
 from machdyn.vibration.orders import band_order_warnings, orders_outside_band
@@ -214,7 +214,7 @@ def test_machine_tables_without_their_main_table_name_it(tmp_path):
 
 
 def test_records_alone_from_python_read_relative_records_against_the_file(tmp_path, monkeypatch):
-    from machdyn.problem import load_problem
+    from machdyn.reading import load_problem
 
     path = _file(tmp_path, "")
     monkeypatch.chdir(ROOT)  # elsewhere than the problem file's folder

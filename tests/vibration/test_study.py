@@ -12,7 +12,7 @@ from pydantic import ValidationError
 from machdyn.errors import InputError
 from machdyn.kinds import kind
 from machdyn.pipeline import no_step
-from machdyn.problem.loader import read_problem
+from machdyn.reading import read_problem
 from machdyn.vibration.stage import frame_outcome, signal_outcome
 from machdyn.vibration.study import study_frame, study_signals
 from machdyn.vibration.tables import FrameTable, SignalsTable

@@ -28,7 +28,7 @@ from .kind import check, run, validate
 from .model import ConveyorProblem
 from .optimise import best_design
 from .plate import flight_edge_moments, flight_moments, plate_coefficient
-from .power import power_cema, power_iso7119, power_textbook_360, power_textbook_367, select_motor
+from .power import power_cema, power_iso7119, power_textbook_360, power_textbook_367
 from .problem import load_conveyor_problem, run_conveyor
 
 __all__ = [
@@ -36,7 +36,7 @@ __all__ = [
     "check", "design_screw", "diameter_for_duty", "distributed_loads", "evaluate", "flight_edge_moments",
     "flight_moments", "flight_pressure", "helix_angle", "lateral_load", "load_conveyor_problem", "moment_one_term",
     "one_term_error", "pipe_equivalent_stress", "plate_coefficient", "polar_moment_tube", "power_cema",
-    "power_iso7119", "power_textbook_360", "power_textbook_367", "run", "run_conveyor", "select_motor",
+    "power_iso7119", "power_textbook_360", "power_textbook_367", "run", "run_conveyor",
     "shear_stress_tube", "span_deflection", "speed_limit", "torque_from_power", "torsion_angle_distributed",
     "twist_rate", "validate", "volume_capacity",
 ]

@@ -71,15 +71,15 @@ class Check:
 # --------------------------------------------------------------------------------------------- torque
 
 
-def torque_from_power(power: float, speed_rpm: float) -> float:
+def torque_from_power(power: float, speed: float) -> float:
     """Shaft torque T = P/ω [N·m] (seed 004, eq 2.85: T = 9.55·10⁶·P/n with T in N·mm, P in kW).
 
     Parameters
     ----------
     power : float or array
         Shaft power P [W], >= 0.
-    speed_rpm : float or array
-        Screw speed n [rpm], > 0.
+    speed : float or array
+        Screw angular speed ω [rad/s], > 0.
 
     Returns
     -------
@@ -88,12 +88,13 @@ def torque_from_power(power: float, speed_rpm: float) -> float:
 
     Examples
     --------
-    >>> round(torque_from_power(1123.0, 101.0) * 1000, 2)  # seed 004, eq 2.90: 106 184.65 with 9.55e6 for 30e6/π
+    >>> # seed 004, eq 2.90 at 101 rpm: 106 184.65 N·mm with 9.55e6 for 30e6/π
+    >>> round(torque_from_power(1123.0, 101.0 * math.pi / 30) * 1000, 2)
     106176.83
     """
-    if np.any(np.asarray(speed_rpm) <= 0):
-        raise InputError(f"The screw speed must be > 0 rpm; got {np.min(speed_rpm):g} rpm.")
-    return power / (speed_rpm * 2.0 * math.pi / 60.0)
+    if np.any(np.asarray(speed) <= 0):
+        raise InputError(f"The screw speed must be > 0 rad/s; got {np.min(speed):g} rad/s.")
+    return power / speed
 
 
 # ----------------------------------------------------------------------------------- screw loads

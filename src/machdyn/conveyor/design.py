@@ -1,25 +1,29 @@
 """Screw size, pitch and speed from the duty (seed 004, eqs 2.83-2.84; Alexandrov's capacity rule).
 
-All functions take and return SI floats: m, s, kg, rad, and rad/s or rpm where the name says so.
+All functions take and return SI floats: m, s, kg, rad, rad/s. The one exception is the speed coefficient k
+of n = k/√D, a material constant kept in the unit its sources tabulate it in (rpm·m^0.5); :func:`speed_limit`
+turns it into a speed in rad/s.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from ..errors import InputError, check_positive
 from . import tables
 
-#: Seconds per minute, used where speeds are given in rpm.
-_MIN = 60.0
+#: rad/s per rpm: the speed coefficient k is tabulated in rpm·m^0.5.
+RPM = math.pi / 30.0
 
 
-def volume_capacity(diameter: float, pitch: float, speed_rpm: float, filling: float,
+def volume_capacity(diameter: float, pitch: float, speed: float, filling: float,
                     inclination_factor: float = 1.0, pipe_diameter: float = 0.0) -> float:
-    """Volumetric capacity of a screw conveyor Q_v = (π/4)·(D² − d_o²)·S·n·φ·C/60 [m³/s].
+    """Volumetric capacity of a screw conveyor Q_v = (π/4)·(D² − d_o²)·S·(ω/2π)·φ·C [m³/s] (ω/2π = n/60 the
+    turns per second of a speed n [rpm]).
 
     With ``pipe_diameter`` d_o = 0 this is seed 004, eq 2.83 divided by ρ (Q in t/h there is
     60·(π/4)·D²·S·n·φ·C·ρ), the whole circle as in Alexandrov, *Materials Handling Equipment* (his worked
@@ -36,8 +40,8 @@ def volume_capacity(diameter: float, pitch: float, speed_rpm: float, filling: fl
         Screw diameter D [m].
     pitch : float or array
         Pitch S [m].
-    speed_rpm : float or array
-        Speed n [rpm].
+    speed : float or array
+        Angular speed ω [rad/s].
     filling : float or array
         Filling coefficient φ [-], 0 < φ <= 1.
     inclination_factor : float
@@ -52,16 +56,17 @@ def volume_capacity(diameter: float, pitch: float, speed_rpm: float, filling: fl
 
     Examples
     --------
-    >>> round(volume_capacity(0.2, 0.16, 100.62306, 0.4, 0.8) * 3600, 4)  # seed 004: 9.71 m³/h
+    >>> round(volume_capacity(0.2, 0.16, 100.62306 * RPM, 0.4, 0.8) * 3600, 4)  # seed 004: 9.71 m³/h at 100.6 rpm
     9.7111
-    >>> round(volume_capacity(0.2, 0.16, 100.62306, 0.4, 0.8, 0.1) * 3600, 4)  # the 100 mm pipe deducted
+    >>> round(volume_capacity(0.2, 0.16, 100.62306 * RPM, 0.4, 0.8, 0.1) * 3600, 4)  # the 100 mm pipe deducted
     7.2833
     """
-    return math.pi / 4.0 * (diameter**2 - pipe_diameter**2) * pitch * speed_rpm / _MIN * filling * inclination_factor
+    turns_per_second = speed / (2.0 * math.pi)
+    return math.pi / 4.0 * (diameter**2 - pipe_diameter**2) * pitch * turns_per_second * filling * inclination_factor
 
 
-def speed_limit(diameter: float, speed_coefficient: float) -> float:
-    """Highest recommended screw speed n = k/√D [rpm] (seed 004, after eq 2.83).
+def speed_limit(diameter: Any, speed_coefficient: float) -> Any:
+    """Highest recommended screw speed n = k/√D (seed 004, after eq 2.83), as an angular speed [rad/s].
 
     Parameters
     ----------
@@ -74,14 +79,14 @@ def speed_limit(diameter: float, speed_coefficient: float) -> float:
     Returns
     -------
     float or array
-        n [rpm].
+        ω [rad/s] (n = k/√D [rpm] times π/30).
 
     Examples
     --------
-    >>> round(float(speed_limit(0.2, 45.0)), 3)  # seed 004: 101 rpm
+    >>> round(float(speed_limit(0.2, 45.0) / RPM), 3)  # seed 004: 101 rpm
     100.623
     """
-    return speed_coefficient / np.sqrt(diameter)
+    return speed_coefficient / np.sqrt(diameter) * RPM
 
 
 def diameter_for_duty(volume_flow: float, pitch_ratio: float, speed_coefficient: float, filling: float,
@@ -157,7 +162,7 @@ def next_standard_diameter(diameter: float) -> float:
 
 @dataclass(frozen=True)
 class ScrewDesign:
-    """The screw chosen for a duty (SI: m, rpm for speeds, kg/s and m³/s for flows)."""
+    """The screw chosen for a duty (SI: m, rad/s, kg/s and m³/s for flows)."""
 
     diameter_required: float
     diameter: float
@@ -178,8 +183,8 @@ class ScrewDesign:
 
     @property
     def omega(self) -> float:
-        """Angular speed [rad/s]."""
-        return self.speed * 2.0 * math.pi / _MIN
+        """Angular speed [rad/s] (the same as :attr:`speed`, kept for the first releases' name)."""
+        return self.speed
 
 
 def design_screw(*, mass_flow: float, bulk_density: float, filling: float, speed_coefficient: float,
@@ -189,7 +194,7 @@ def design_screw(*, mass_flow: float, bulk_density: float, filling: float, speed
 
     mass_flow [kg/s], bulk_density [kg/m³], filling φ [-] (≤ 1), speed_coefficient k [rpm·m^0.5],
     pitch_ratio S/D [-], inclination_factor C [-]; ``diameter`` [m] forces a size (otherwise the next
-    standard size), ``speed`` [rpm] forces a speed (otherwise the speed limit k/√D, as in seed 004).
+    standard size), ``speed`` [rad/s] forces a speed (otherwise the speed limit k/√D, as in seed 004).
     ``pipe_diameter`` [m] (a given pipe) or ``pipe_ratio`` d_o/D [-] (a pipe scaling with the screw) is deducted
     from the capacity (:func:`volume_capacity`); both 0: the whole circle, as in seed 004.
     """
@@ -218,7 +223,7 @@ def design_screw(*, mass_flow: float, bulk_density: float, filling: float, speed
             cap = volume_capacity(biggest, pitch_ratio * biggest, n_big, filling, inclination_factor, pipe(biggest))
             raise InputError(
                 f"The throughput {mass_flow * 3.6:.4g} t/h ({volume_flow * 3600:.4g} m^3/h) exceeds the "
-                f"capacity of the largest standard screw ({biggest * 1000:.0f} mm at {n_big:.1f} rpm): "
+                f"capacity of the largest standard screw ({biggest * 1000:.0f} mm at {n_big / RPM:.1f} rpm): "
                 f"{cap * 3600:.4g} m^3/h. Use several screws or a higher filling or speed coefficient."
             )
         d = next_standard_diameter(d_req)
@@ -228,7 +233,7 @@ def design_screw(*, mass_flow: float, bulk_density: float, filling: float, speed
     pitch = pitch_ratio * d
     n_lim = speed_limit(d, speed_coefficient)
     n = n_lim if speed is None else speed
-    check_positive("screw speed", n, "rpm")
+    check_positive("screw speed", n, "rad/s")
     cap_v = volume_capacity(d, pitch, n, filling, inclination_factor, min(pipe(d), d))
     return ScrewDesign(
         diameter_required=d_req, diameter=d, pitch=pitch, speed_limit=n_lim, speed=n,

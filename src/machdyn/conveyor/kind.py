@@ -1,9 +1,12 @@
-"""The screw conveyor as a problem kind: ``validate``, ``check`` and ``run`` for the registry of kinds.
+"""The screw conveyor as a problem kind, in the shape of every kind: schema, build, check, analysis.
 
-``validate(data, source)`` -> :class:`~machdyn.conveyor.model.ConveyorProblem` (raises
-:class:`~machdyn.errors.ProblemFileError` listing every mistake); ``check(problem)`` -> warnings, after every
-validation ``run`` relies on; ``run(problem, step)`` -> :class:`~machdyn.pipeline.Outcome` with SI scalars,
-labels, summary keys, warnings and failed checks.
+The registry's line ``"screw_conveyor": "machdyn.conveyor.kind:KIND"`` gives the loader the schema
+(:class:`~machdyn.conveyor.schema.ConveyorFile`, validated with every other mistake of the file at once) and
+``build`` (the frozen SI :class:`~machdyn.conveyor.model.ConveyorProblem` of a valid file, or the problems of
+its rules across fields). ``check(problem)`` -> warnings, after every validation ``run`` relies on;
+``run(problem, step)`` -> :class:`~machdyn.pipeline.Outcome` with SI scalars, labels, summary keys, warnings and
+failed checks; the report module :mod:`machdyn.report.conveyor` draws them. ``validate(data, source)`` is the
+loader's validation of a parsed file, returning the :class:`ConveyorProblem`.
 """
 
 from __future__ import annotations
@@ -13,7 +16,7 @@ from typing import Any
 from ..errors import InputError, ProblemFileError
 from .labels import SUMMARY, label_of
 from .model import ConveyorProblem
-from .schema import validate
+from .schema import ConveyorFile, build, validate
 
 __all__ = ["check", "run", "validate"]
 
@@ -57,8 +60,8 @@ def run(problem: ConveyorProblem, step: Any = None) -> Any:
                    failed_checks=result.failed_checks)
 
 
-def _title(problem: ConveyorProblem) -> str:
-    return problem.name
+def _title(spec: ConveyorFile) -> str:
+    return spec.meta.name
 
 
 def _kind() -> Any:
@@ -66,10 +69,9 @@ def _kind() -> Any:
     from .labels import LABELS
 
     return ProblemKind(
-        name="screw_conveyor", schema=None, build=lambda problem: (None, []),
-        check=lambda problem, _model: check(problem), analyse=lambda problem, _model, step: run(problem, step),
+        name="screw_conveyor", schema=ConveyorFile, build=build,
+        check=lambda _spec, problem: check(problem), analyse=lambda _spec, problem, step: run(problem, step),
         title=_title, steps=("design",), labels=LABELS, report="machdyn.report.conveyor:sections",
-        validate=validate, dump=repr, problem_type=lambda: ConveyorProblem,
     )
 
 

@@ -52,7 +52,8 @@ class DesignSearch:
 
 @dataclass(frozen=True)
 class ConveyorProblem:
-    """A validated screw-conveyor problem in SI floats (kg/s, kg/m³, m, rad, rpm for speeds, Pa, W).
+    """A validated screw-conveyor problem in SI floats (kg/s, kg/m³, m, rad, rad/s, Pa, W; the speed
+    coefficient k of n = k/√D in rpm·m^0.5, as tabulated).
 
     ``mass_flow`` is None when the file describes an existing screw (diameter, speed, filling) whose capacity
     is the duty. ``lift`` and ``torque`` are None unless given directly.

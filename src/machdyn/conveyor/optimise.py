@@ -15,13 +15,14 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
+from .design import RPM, speed_limit
 from .model import ConveyorProblem
 from .screw import passes, screw_states
 
 
 @dataclass(frozen=True)
 class Ranking:
-    """Every candidate (arrays, SI; speed in rpm), which are feasible, and their order by objective."""
+    """Every candidate (arrays, SI: speed in rad/s), which are feasible, and their order by objective."""
 
     objective: str
     diameter: np.ndarray
@@ -56,7 +57,7 @@ class Ranking:
                 "speed": float(self.speed[i]), "filling": float(self.filling[i]), "power": float(self.power[i]),
                 "screw_mass": float(self.screw_mass[i]), "motor_rating": float(self.motor_rating[i]),
                 "objective": float(self.value[i]),
-                "name": f"D {self.diameter[i] * 1000:.0f}, S/D {self.pitch_ratio[i]:g}, {self.speed[i]:.0f} rpm, "
+                "name": f"D {self.diameter[i] * 1000:.0f}, S/D {self.pitch_ratio[i]:g}, {self.speed[i] / RPM:.0f} rpm, "
                         f"φ {self.filling[i]:g}"}
 
     def table(self, top: int = 10) -> list[dict[str, Any]]:
@@ -66,21 +67,21 @@ class Ranking:
     def series(self) -> dict[str, tuple[np.ndarray, str]]:
         """Columns of every candidate for a CSV file."""
         return {"diameter": (self.diameter, "m"), "pitch_ratio": (self.pitch_ratio, ""),
-                "speed": (self.speed * np.pi / 30, "rad/s"), "filling": (self.filling, ""), "power": (self.power, "W"),
+                "speed": (self.speed, "rad/s"), "filling": (self.filling, ""), "power": (self.power, "W"),
                 "screw_mass": (self.screw_mass, "kg"), "motor_rating": (self.motor_rating, "W"),
                 "objective": (self.value, "W" if self.objective == "power" else "kg"),
                 "feasible": (self.feasible_mask.astype(float), "")}
 
 
 def candidate_grid(problem: ConveyorProblem) -> dict[str, np.ndarray]:
-    """The flattened grid of candidates (diameter [m], pitch ratio, speed [rpm], filling) of the search."""
+    """The flattened grid of candidates (diameter [m], pitch ratio, speed [rad/s], filling) of the search."""
     s = problem.search
     if s is None:
         raise InputError("The problem has no [screw_conveyor.optimise] table.")
     d, r, f, phi = np.meshgrid(np.array(s.diameters), np.array(s.pitch_ratios), np.array(s.speed_fractions),
                                np.array(s.fillings), indexing="ij")
     d, r, f, phi = (a.ravel() for a in (d, r, f, phi))
-    return {"diameter": d, "pitch_ratio": r, "speed": f * problem.speed_coefficient / np.sqrt(d), "filling": phi}
+    return {"diameter": d, "pitch_ratio": r, "speed": f * speed_limit(d, problem.speed_coefficient), "filling": phi}
 
 
 def evaluate_candidates(problem: ConveyorProblem) -> tuple[dict[str, np.ndarray], dict[str, Any]]:

@@ -161,14 +161,15 @@ class CemaPower:
         return self.total_hp * self.efficiency
 
 
-def cema_friction_hp(length: float, speed_rpm: float, diameter_factor: float,
+def cema_friction_hp(length: float, speed: float, diameter_factor: float,
                      hanger_bearing_factor: float) -> float:
     """CEMA 350 friction horsepower HPf = L·N·Fd·Fb/1 000 000 [hp].
 
-    length L [m] (converted to ft), speed_rpm N [rpm], diameter_factor Fd [-], hanger_bearing_factor Fb [-].
+    length L [m] (converted to ft), speed ω [rad/s] (converted to N [rpm], the unit of the formula),
+    diameter_factor Fd [-], hanger_bearing_factor Fb [-].
     Source: CEMA 350 *Screw Conveyors for Bulk Materials*, horsepower requirements.
     """
-    return (length / _FT) * speed_rpm * diameter_factor * hanger_bearing_factor / 1.0e6
+    return (length / _FT) * (speed * 30.0 / math.pi) * diameter_factor * hanger_bearing_factor / 1.0e6
 
 
 def cema_material_hp(volume_flow: float, bulk_density: float, length: float, flight_factor: float,
@@ -183,7 +184,7 @@ def cema_material_hp(volume_flow: float, bulk_density: float, length: float, fli
     return c * (length / _FT) * w * flight_factor * material_factor * paddle_factor / 1.0e6
 
 
-def power_cema(*, volume_flow: float, bulk_density: float, length: float, speed_rpm: float,
+def power_cema(*, volume_flow: float, bulk_density: float, length: float, speed: float,
                diameter_factor: float, hanger_bearing_factor: float, material_factor: float,
                flight_factor: float = 1.0, paddle_factor: float = 1.0, efficiency: float = 1.0,
                lift: float = 0.0) -> CemaPower:
@@ -202,8 +203,8 @@ def power_cema(*, volume_flow: float, bulk_density: float, length: float, speed_
         [kg/m³].
     length : float
         L [m].
-    speed_rpm : float or array
-        N [rpm].
+    speed : float or array
+        ω [rad/s] (N = 30ω/π [rpm] in CEMA's formula).
     diameter_factor, hanger_bearing_factor, material_factor : float or array
         Fd, Fb, Fm [-] (CEMA 350 tables).
     flight_factor, paddle_factor : float or array
@@ -220,14 +221,15 @@ def power_cema(*, volume_flow: float, bulk_density: float, length: float, speed_
 
     Examples
     --------
-    >>> r = power_cema(volume_flow=0.01, bulk_density=800.0, length=10.0, speed_rpm=50.0, diameter_factor=55.0,
+    >>> r = power_cema(volume_flow=0.01, bulk_density=800.0, length=10.0, speed=50 * math.pi / 30,
+    ...                diameter_factor=55.0,
     ...                hanger_bearing_factor=1.7, material_factor=0.5)
     >>> round(float(r.total_hp), 4)
     2.2736
     """
     if not 0.0 < efficiency <= 1.0:
         raise InputError(f"The drive efficiency must be in (0, 1]; got {efficiency:g}.")
-    hpf = cema_friction_hp(length, speed_rpm, diameter_factor, hanger_bearing_factor)
+    hpf = cema_friction_hp(length, speed, diameter_factor, hanger_bearing_factor)
     hpm = cema_material_hp(volume_flow, bulk_density, length, flight_factor, material_factor, paddle_factor)
     hpl = volume_flow * bulk_density * G * lift / HP
     fo = tables.cema_overload_factor(hpf + hpm + hpl)
@@ -253,14 +255,3 @@ LABELS = {
     "iso7119": "ISO 7119 (P_H + P_N + P_st)",
     "cema": "CEMA 350 horsepower method",
 }
-
-
-def select_motor(required_power: float) -> float:
-    """The smallest IEC 60072-1 motor rating [W] ≥ ``required_power`` [W]."""
-    for rating in tables.motor_ratings():
-        if rating >= required_power * (1.0 - 1e-12):
-            return rating
-    raise InputError(
-        f"The required motor power {required_power / 1000:.4g} kW exceeds the largest tabulated rating "
-        f"{tables.motor_ratings()[-1] / 1000:g} kW."
-    )

@@ -1,9 +1,12 @@
-"""The ``[screw_conveyor]`` problem file: its tables as pydantic models, validated all at once.
+"""The ``[screw_conveyor]`` problem file: its tables as pydantic models, the schema of the kind.
 
-Quantities use the shared field types of :mod:`machdyn.problem.fields` (text with a unit in, SI float out) and
-the shared error collector of :mod:`machdyn.problem.errors` (every mistake with its path, the rule and the value,
-"did you mean" for misspelled keys and names). :func:`validate` returns a frozen
-:class:`~machdyn.conveyor.model.ConveyorProblem`.
+Quantities use the shared field types of :mod:`machdyn.problem.fields` (text with a unit in, SI float out, the
+unit kept for the dumper), each with a plausibility bound so that no absurd value such as 1e300 m reaches the
+formulas; speeds are read as angular speeds in rad/s (``"100 rpm"`` in the file). The loader validates a file
+against :class:`ConveyorFile` like any other kind's schema (every mistake at once, with its path, the rule and
+the value); the rules across fields that a single field cannot say are :func:`presence_problems` (on the raw
+tables, so that they are said with every other mistake) and :func:`build` (on the valid tables), which makes
+the frozen :class:`~machdyn.conveyor.model.ConveyorProblem` in SI the analysis works on.
 """
 
 from __future__ import annotations
@@ -11,27 +14,31 @@ from __future__ import annotations
 import math
 from typing import Annotated, Any, Literal
 
-from pydantic import AfterValidator, BaseModel, BeforeValidator, ConfigDict, Field, ValidationError
+from pydantic import AfterValidator, BeforeValidator, Field, ValidationError, model_validator
+from pydantic_core import InitErrorDetails
 
-from ..errors import InputError, ProblemFileError
-from ..problem.errors import did_you_mean, problems_from
+from ..errors import InputError
+from ..problem import fields as qf
+from ..problem.errors import did_you_mean
 from ..problem.fields import FieldError, Unit, to_si
+from ..problem.schema import Meta, Spec
 from . import tables
 from .model import BaseBolts, ConveyorProblem, Coupling, DesignSearch
 from .power import ISO7119_MAX_INCLINATION, METHODS
 
+#: The path of the kind's main table in the file.
+MAIN = "screw_conveyor"
 
-def _bounded(meta: Unit, upper: float, why: str) -> Any:
-    """The validator of a quantity in SI ``meta.unit`` with a sign rule and a plausibility bound ``upper`` (so
-    that no absurd value such as 1e300 m reaches the formulas and overflows)."""
 
-    def check(value: Any) -> float:
-        si = to_si(value, meta)
-        if abs(si) > upper:
-            raise FieldError(f"must be <= {upper:g} {meta.unit} ({why}); got {value!r}")
-        return si
+def _at_most(upper: float, unit: str, why: str) -> Any:
+    """A plausibility bound on a validated SI value: larger values are refused, saying why."""
 
-    return BeforeValidator(check)
+    def check(value: float) -> float:
+        if abs(value) > upper:
+            raise FieldError(f"must be <= {upper:g} {unit} ({why}); got {value:g} {unit}")
+        return value
+
+    return AfterValidator(check)
 
 
 def _number(lo: float, hi: float, *, lo_open: bool = True, hi_open: bool = False) -> Any:
@@ -64,28 +71,20 @@ def _method(value: str) -> str:
 
 
 Method = Annotated[str, AfterValidator(_method)]
-_SCREWLENGTH = Unit("m", "length", ">0")
-ScrewLength = Annotated[float, _bounded(_SCREWLENGTH, 1e4, "longer than any screw conveyor"), _SCREWLENGTH]
-_SCREWSIZE = Unit("m", "length", ">0")
-ScrewSize = Annotated[float, _bounded(_SCREWSIZE, 10.0, "larger than any screw"), _SCREWSIZE]
-_LIFT = Unit("m", "length", ">=0")
-Lift = Annotated[float, _bounded(_LIFT, 1e4, "higher than any screw conveyor"), _LIFT]
-_SLOPE = Unit("rad", "angle", ">=0")
-Slope = Annotated[float, _bounded(_SLOPE, math.pi / 2 * (1 - 1e-12), "a screw steeper than vertical"), _SLOPE]
-_DENSITY = Unit("kg/m^3", "density", ">0")
-Density = Annotated[float, _bounded(_DENSITY, 3e4, "denser than any bulk material or metal"), _DENSITY]
-_RPM = Unit("rpm", "angular_velocity", ">0")
-Rpm = Annotated[float, _bounded(_RPM, 1e4, "faster than any screw"), _RPM]
-_STRESS = Unit("Pa", "stress", ">0")
-Stress = Annotated[float, _bounded(_STRESS, 1e12, "beyond any steel"), _STRESS]
-_MODULUS = Unit("Pa", "stress", ">0")
-Modulus = Annotated[float, _bounded(_MODULUS, 1e13, "beyond any steel"), _MODULUS]
-_TWISTRATE = Unit("rad/m", "twist_rate", ">0")
-TwistRate = Annotated[float, _bounded(_TWISTRATE, 10.0, "a twist of more than 10 rad per metre"), _TWISTRATE]
-_FORCEN = Unit("N", "force", ">=0")
-ForceN = Annotated[float, _bounded(_FORCEN, 1e9, "beyond any conveyor drive"), _FORCEN]
-_TORQUENM = Unit("N*m", "torque", ">0")
-TorqueNm = Annotated[float, _bounded(_TORQUENM, 1e9, "beyond any conveyor drive"), _TORQUENM]
+ScrewLength = Annotated[qf.PositiveLength, _at_most(1e4, "m", "longer than any screw conveyor")]
+ScrewSize = Annotated[qf.PositiveLength, _at_most(10.0, "m", "larger than any screw")]
+Lift = Annotated[qf.NonNegativeLength, _at_most(1e4, "m", "higher than any screw conveyor")]
+Slope = Annotated[qf.NonNegativeAngle,
+                  _at_most(math.pi / 2 * (1 - 1e-12), "rad", "a screw steeper than vertical")]
+Density = Annotated[qf.Density, _at_most(3e4, "kg/m^3", "denser than any bulk material or metal")]
+#: A screw's angular speed [rad/s]; ``"100 rpm"`` in the file.
+Speed = Annotated[qf.PositiveAngularVelocity, _at_most(1e3, "rad/s", "faster than any screw")]
+Stress = Annotated[qf.Stress, _at_most(1e12, "Pa", "beyond any steel")]
+Modulus = Annotated[qf.Stress, _at_most(1e13, "Pa", "beyond any steel")]
+TwistRate = Annotated[qf.TwistRate,
+                      _at_most(10.0, "rad/m", "a twist of more than 10 rad per metre")]
+ForceN = Annotated[qf.NonNegativeForce, _at_most(1e9, "N", "beyond any conveyor drive")]
+TorqueNm = Annotated[qf.PositiveTorque, _at_most(1e9, "N*m", "beyond any conveyor drive")]
 Fraction = Annotated[float, _number(0.0, 1.0)]
 Positive = Annotated[float, _number(0.0, 1e6)]
 
@@ -105,11 +104,18 @@ def _throughput(value: Any) -> tuple[str, float]:
     raise FieldError(f'must be a mass flow (like "7.2 t/h") or a volume flow (like "6 m^3/h"); got {value!r}')
 
 
-Throughput = Annotated[tuple[str, float], BeforeValidator(_throughput)]
+def _throughput_text(value: Any) -> Any:
+    """The throughput as written (a mass or a volume flow with its unit), after checking it; :func:`build`
+    reads it. Kept as text so that the problem is written back exactly as it was given."""
+    _throughput(value)
+    return value
 
 
-class _Table(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True)
+Throughput = Annotated[str, BeforeValidator(_throughput_text)]
+
+
+class _Table(Spec):
+    """A table of the file: unknown keys refused, frozen, plain text."""
 
 
 class MaterialIn(_Table):
@@ -127,8 +133,8 @@ class MaterialIn(_Table):
 
 class ScrewIn(_Table):
     diameter: ScrewSize | None = None
-    speed: Rpm | None = None
-    pitch_ratio: Positive = 1.0
+    speed: Speed | None = None
+    pitch_ratio: Positive | None = None  # S/D; 1 (full pitch) when not given
     inclination_factor: Fraction | None = None
     pipe_outer_diameter: ScrewSize | None = None
     pipe_wall: ScrewSize | None = None
@@ -222,14 +228,39 @@ class ConveyorIn(_Table):
     optimise: OptimiseIn | None = None
 
 
-class MetaIn(_Table):
-    name: str = "screw conveyor"
-    description: str = ""
+class ConveyorFile(_Table):
+    """A whole ``[screw_conveyor]`` problem file: ``[meta]`` and ``[screw_conveyor]`` with its sub-tables."""
 
-
-class FileIn(_Table):
-    meta: MetaIn = MetaIn()
+    meta: Meta = Meta(name="screw conveyor")
     screw_conveyor: ConveyorIn
+
+    @model_validator(mode="wrap")
+    @classmethod
+    def _with_presence(cls, data: Any, handler: Any) -> Any:
+        """Say the rules across fields of :func:`presence_problems` together with every mistake of the schema."""
+        missing = presence_problems(data) if isinstance(data, dict) else []
+        extra: list[InitErrorDetails] = [
+            {"type": "value_error", "loc": tuple(path.split(".")), "input": _get(data, *path.split(".")),
+             "ctx": {"error": FieldError(message)}} for path, message in missing]
+        try:
+            done = handler(data)
+        except ValidationError as exc:
+            if not extra:
+                raise
+            raise ValidationError.from_exception_data(cls.__name__, [*_details(exc), *extra]) from None
+        if extra:
+            raise ValidationError.from_exception_data(cls.__name__, extra)
+        return done
+
+
+def _details(exc: ValidationError) -> list[InitErrorDetails]:
+    out: list[InitErrorDetails] = []
+    for err in exc.errors(include_url=False):
+        detail: InitErrorDetails = {"type": err["type"], "loc": err["loc"], "input": err.get("input")}
+        if "ctx" in err:
+            detail["ctx"] = err["ctx"]
+        out.append(detail)
+    return out
 
 
 def _get(data: Any, *path: str) -> Any:
@@ -240,7 +271,7 @@ def _get(data: Any, *path: str) -> Any:
     return data
 
 
-def _presence(data: dict[str, Any]) -> list[tuple[str, str]]:
+def presence_problems(data: dict[str, Any]) -> list[tuple[str, str]]:
     """Rules across fields that hold whatever else is wrong in the file (checked on the raw tables)."""
     out: list[tuple[str, str]] = []
     p = "screw_conveyor"
@@ -310,27 +341,37 @@ def _after(c: ConveyorIn) -> tuple[list[tuple[str, str]], dict[str, Any]]:
     return out, got
 
 
+def build(spec: ConveyorFile) -> tuple[ConveyorProblem | None, list[tuple[str, str]]]:
+    """The frozen :class:`ConveyorProblem` (SI) of a valid file, and the problems of the rules across fields
+    (a lift longer than the screw, a power method that does not apply, a screw that does not exist ...)."""
+    c = spec.screw_conveyor
+    problems, got = _after(c)
+    if problems:
+        return None, problems
+    problem = _problem(spec, got)
+    problems = _feasible(problem)
+    return (None, problems) if problems else (problem, [])
+
+
 def validate(data: dict[str, Any], source: str | None = None) -> ConveyorProblem:
-    """Validate the parsed TOML ``data`` of a whole ``[screw_conveyor]`` problem file.
+    """Validate the parsed TOML ``data`` of a whole ``[screw_conveyor]`` problem file, as the loader does for
+    every kind, and return the :class:`ConveyorProblem` the analysis works on.
 
     Raises :class:`~machdyn.errors.ProblemFileError` listing every mistake as (path, message).
     """
-    problems = _presence(data) if isinstance(data, dict) else []
-    try:
-        f = FileIn.model_validate(data)
-    except ValidationError as exc:
-        problems = problems_from(exc, FileIn) + problems
-        raise ProblemFileError(_unique(problems), source) from None
+    from ..reading import validate as validate_file
+
+    _spec, problem = validate_file(data, MAIN, source)
+    return problem
+
+
+def _problem(f: ConveyorFile, got: dict[str, Any]) -> ConveyorProblem:
     c = f.screw_conveyor
-    more, got = _after(c)
-    problems += more
-    if problems:
-        raise ProblemFileError(_unique(problems), source)
     m, s, st, d = c.material, c.screw, c.strength, c.drive
     rho = m.bulk_density
     mass_flow = None
     if c.throughput is not None:
-        what, value = c.throughput
+        what, value = _throughput(c.throughput)
         mass_flow = value if what == "mass" else value * rho
     k_v = m.speed_coefficient if m.speed_coefficient is not None else tables.speed_coefficient(str(m.speed_class))
     resistance = m.resistance if m.resistance is not None else tables.resistance_coefficient(str(m.resistance_group))
@@ -347,13 +388,13 @@ def validate(data: dict[str, Any], source: str | None = None) -> ConveyorProblem
             objective=o.objective, diameters=tuple(o.diameters or tables.standard_diameters()),
             pitch_ratios=tuple(o.pitch_ratios), speed_fractions=tuple(o.speed_fractions),
             fillings=tuple(o.fillings), motor_mass_per_kw=o.motor_mass_per_kw)
-    problem = ConveyorProblem(
+    return ConveyorProblem(
         name=f.meta.name, description=f.meta.description, mass_flow=mass_flow, length=c.length,
         inclination=got["inclination"], lift=c.lift, torque=c.torque, power_method=c.power_method,
         methods=tuple(dict.fromkeys([*c.methods, c.power_method])), material_name=m.name, bulk_density=rho,
         filling=m.filling, speed_coefficient=k_v, resistance=resistance, cema_material_factor=fm,
         friction_coefficient=m.friction_coefficient, diameter=s.diameter, speed=s.speed,
-        pitch_ratio=s.pitch_ratio, inclination_factor=got["inclination_factor"],
+        pitch_ratio=s.pitch_ratio if s.pitch_ratio is not None else 1.0, inclination_factor=got["inclination_factor"],
         pipe_outer_diameter=s.pipe_outer_diameter, pipe_wall=s.pipe_wall, flight_thickness=s.flight_thickness,
         hanger_spacing=s.hanger_spacing, force_radius_ratio=s.force_radius_ratio,
         lateral_load_factor=s.lateral_load_factor, hanger_bearing=s.hanger_bearing, flight_type=s.flight_type,
@@ -362,12 +403,8 @@ def validate(data: dict[str, Any], source: str | None = None) -> ConveyorProblem
         shear_modulus=st.shear_modulus, elastic_modulus=st.elastic_modulus, poisson_ratio=st.poisson_ratio,
         steel_density=st.steel_density, allowable_shear_stress=st.allowable_shear_stress,
         allowable_stress=st.allowable_stress, allowable_twist=st.allowable_twist,
-        max_deflection=st.max_deflection, coupling=coupling, base_bolts=bolts, search=search, source=source,
+        max_deflection=st.max_deflection, coupling=coupling, base_bolts=bolts, search=search,
     )
-    problems = _feasible(problem)
-    if problems:
-        raise ProblemFileError(problems, source)
-    return problem
 
 
 def _feasible(problem: ConveyorProblem) -> list[tuple[str, str]]:
@@ -389,11 +426,3 @@ def _feasible(problem: ConveyorProblem) -> list[tuple[str, str]]:
         out.append((f"{p}.power_method", f"'cema' has no diameter factor Fd for a {design.diameter * 1000:g} mm screw "
                                          f"(tabulated 4 to 24 in): choose another power_method"))
     return out
-
-
-def _unique(problems: list[tuple[str, str]]) -> list[tuple[str, str]]:
-    """One message per path (a rule on the raw tables and the schema may both see the same gap)."""
-    seen: dict[str, str] = {}
-    for path, message in problems:
-        seen.setdefault(path, message)
-    return list(seen.items())

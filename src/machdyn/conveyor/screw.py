@@ -12,14 +12,13 @@ from typing import Any
 
 import numpy as np
 
+from ..dynamics.motors import smallest_rating
 from . import checks as ck
 from . import power as pw
 from . import tables
 from .design import speed_limit, volume_capacity
 from .model import ConveyorProblem
 from .plate import flight_max_stress
-
-_RPM = math.pi / 30.0  # rad/s per rpm
 
 #: The design checks every candidate must pass: key -> (name, SI unit, display unit, basis).
 CHECKS: dict[str, tuple[str, str, str, str]] = {
@@ -83,7 +82,7 @@ def method_powers(problem: ConveyorProblem, diameter: Any, speed: Any, mass_flow
             loading = np.minimum(filling_actual, 0.95)
             r = pw.power_cema(
                 volume_flow=mass_flow / p.bulk_density, bulk_density=p.bulk_density, length=length,
-                speed_rpm=speed, diameter_factor=fd,
+                speed=speed, diameter_factor=fd,
                 hanger_bearing_factor=tables.cema_hanger_bearing_factor(p.hanger_bearing),
                 material_factor=p.cema_material_factor,
                 flight_factor=tables.cema_flight_factors(p.flight_type, loading),
@@ -103,7 +102,7 @@ def screw_states(problem: ConveyorProblem, diameter: Any, pitch: Any, speed: Any
                  mass_flow: Any) -> dict[str, Any]:
     """Every quantity [SI] and the value and limit of every check of :data:`CHECKS` for candidate screws.
 
-    diameter D [m], pitch S [m], speed n [rpm], filling φ [-], mass_flow [kg/s] (the duty): arrays that
+    diameter D [m], pitch S [m], speed ω [rad/s], filling φ [-], mass_flow [kg/s] (the duty): arrays that
     broadcast together. Returns ``{key: array}`` with the keys of the run's results plus ``check.<key>`` and
     ``limit.<key>`` for each check and ``power.<method>`` for each method.
     """
@@ -122,7 +121,7 @@ def screw_states(problem: ConveyorProblem, diameter: Any, pitch: Any, speed: Any
     powers = method_powers(p, d, n, m_dot, fill_actual)
     shaft = powers[p.power_method]["power"] if p.power_method in powers else np.nan * d
     motor_required = shaft / p.drive_efficiency
-    motor = tables.motor_ratings_for(motor_required)
+    motor = np.asarray(smallest_rating(motor_required))
     torque = ck.torque_from_power(shaft, n) if p.torque is None else p.torque + 0 * d
 
     wall = p.pipe_wall if p.pipe_wall is not None else d_o / 12.0
@@ -151,7 +150,7 @@ def screw_states(problem: ConveyorProblem, diameter: Any, pitch: Any, speed: Any
 
     out.update({
         "mass_flow": m_dot + 0 * d, "volume_flow": v_dot + 0 * d, "diameter": d, "pitch": s,
-        "speed": n * _RPM, "speed_limit": n_lim * _RPM, "capacity": cap_v * p.bulk_density,
+        "speed": n + 0 * d, "speed_limit": n_lim, "capacity": cap_v * p.bulk_density,
         "filling_actual": fill_actual,
         "shaft_power": shaft, "motor_power_required": motor_required, "motor_rating": motor, "torque": torque,
         "helix_angle": alpha, "axial_force": f_axial, "lateral_load": p_lat, "p_d": dist["p_d"],
@@ -163,7 +162,7 @@ def screw_states(problem: ConveyorProblem, diameter: Any, pitch: Any, speed: Any
     })
     for method, entry in powers.items():
         out[f"power.{method}"] = entry["power"]
-    values = {"speed": (n * _RPM, n_lim * _RPM), "capacity": (m_dot + 0 * d, cap_v * p.bulk_density),
+    values = {"speed": (n + 0 * d, n_lim), "capacity": (m_dot + 0 * d, cap_v * p.bulk_density),
               "motor": (motor_required, motor), "twist": (twist_rate, p.allowable_twist + 0 * d),
               "shear": (ck.shear_stress_tube(torque, d_o, d_i), p.allowable_shear_stress + 0 * d),
               "stress": (sigma_eq, p.allowable_stress + 0 * d),

@@ -49,11 +49,6 @@ def standard_diameters() -> list[float]:
     return [float(row["diameter_mm"]) / 1000.0 for row in read_table("standard_diameters")]
 
 
-def motor_ratings() -> list[float]:
-    """IEC 60072-1 rated output powers of squirrel-cage motors [W], ascending."""
-    return [float(row["rated_power_kw"]) * 1000.0 for row in read_table("motor_ratings_iec")]
-
-
 def speed_coefficient(material_class: str) -> float:
     """Speed coefficient k in n = k/√D [rpm·m^0.5] of a material class (see ``speed_coefficient.csv``)."""
     return lookup("speed_coefficient", "material_class", material_class, "k_rpm_sqrt_m",
@@ -179,16 +174,6 @@ def cema_flight_factors(flight_type: str, loading):
     for (limit, _), value in reversed(list(zip(cols, values, strict=True))):
         out = np.where(load <= limit + 1e-9, value, out)
     return out
-
-
-def motor_ratings_for(required_power):
-    """The smallest IEC 60072-1 rating [W] >= each required power [W] (NaN beyond the largest rating)."""
-    import numpy as np
-
-    ratings = np.array(motor_ratings())
-    req = np.asarray(required_power, dtype=float) * (1.0 - 1e-12)
-    idx = np.searchsorted(ratings, req, side="left")
-    return np.where(idx < ratings.size, ratings[np.minimum(idx, ratings.size - 1)], np.nan)
 
 
 def cema_material_factor(material: str) -> float:

@@ -24,6 +24,35 @@ def standard_ratings() -> tuple[float, ...]:
     return tuple(float(v) * 1000.0 for v in lines)
 
 
+def smallest_rating(required_power):
+    """The smallest IEC 60072-1 preferred rating [W] >= ``required_power`` [W] (``data/motors.csv``).
+
+    The one motor selection by power of machdyn: the screw conveyor's drive and :func:`select_motor` use it.
+    A required power within a relative 1e-12 of a rating is met by that rating (the round-off of a power
+    computed in another order must not move the choice up one size).
+
+    Parameters
+    ----------
+    required_power : float or array
+        Power the motor must give [W], >= 0.
+
+    Returns
+    -------
+    float or array
+        The rating [W]; NaN where the power exceeds the largest rating (200 kW).
+
+    Examples
+    --------
+    >>> smallest_rating(1276.0), smallest_rating(1500.0), smallest_rating(250e3)
+    (1500.0, 1500.0, nan)
+    """
+    ratings = np.asarray(standard_ratings())
+    required = np.asarray(required_power, dtype=float)
+    idx = np.searchsorted(ratings, required * (1.0 - 1e-12), side="left")
+    chosen = np.where(idx < ratings.size, ratings[np.minimum(idx, ratings.size - 1)], np.nan)
+    return float(chosen) if chosen.ndim == 0 else chosen
+
+
 @dataclass(frozen=True)
 class MotorChoice:
     """The chosen motor and why: the power needed [W], the peak crank torque it must carry [N*m] and the
@@ -68,8 +97,9 @@ def select_motor(mean_power, peak_torque, crank_speed, *, synchronous_speed=1500
     needed = mean_power / gear_efficiency * service_factor
     rated_speed = synchronous_speed * (1.0 - rated_slip)
     ratio = rated_speed / crank_speed
+    first = smallest_rating(needed)
     for rating in standard_ratings():
-        if rating < needed:
+        if not rating >= first:  # below the power needed (every rating fails when none is large enough)
             continue
         motor = InductionMotor(rating, rated_speed, synchronous_speed, breakdown_ratio, ratio, gear_efficiency,
                                rotor_inertia)

@@ -4,7 +4,7 @@ same engine call as an exploration, here or on Dask, the results in memory.
 ```python
 import numpy as np
 from machdyn.explore.population import evaluate_population
-from machdyn.problem import load_problem
+from machdyn.reading import load_problem
 problem = load_problem("examples/four_bar.toml")
 values = np.array([[0.035, -1.0], [0.04, -2.0]])   # SI: m, N*m
 out = evaluate_population(problem, ["mechanism.crank.length", "loads.torques[0].torque"], values)

@@ -227,7 +227,7 @@ def explore(
     on_partition : ``on_partition(index)`` after each partition computed is written.
     """
     if isinstance(problem, str | os.PathLike):
-        from ..problem.loader import read_problem
+        from ..reading import read_problem
 
         loaded = read_problem(problem)
         problem, source = loaded.spec, loaded.source if source is None else source

@@ -116,5 +116,10 @@ SectionModulus = quantity("m^3", "section_modulus", ">0")
 PressureVelocity = quantity("Pa*m/s", "pressure_velocity", ">0")
 RotaryDamping = quantity("N*m*s/rad", "rotary_damping", ">=0")
 LinearDamping = quantity("N*s/m", "linear_damping", ">=0")
+NonNegativeAngle = quantity("rad", "angle", ">=0")
+PositiveAngularVelocity = quantity("rad/s", "angular_velocity", ">0")
+TwistRate = quantity("rad/m", "twist_rate", ">0")
+NonNegativeForce = quantity("N", "force", ">=0")
+PositiveTorque = quantity("N*m", "torque", ">0")
 
 Point = tuple[Length, Length]  # type: ignore[valid-type]  # Length is an Annotated alias built at import

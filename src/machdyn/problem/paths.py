@@ -112,12 +112,22 @@ def value_at(model: Any, path: str) -> float:
 def design_problem(problem: Any, values: typing.Mapping[str, float]) -> Any:
     """The validated problem of one design: ``problem`` with each quantity path of ``values`` set to its SI
     value and without its design-space tables (``[sweep]``, ``[optimise]``), written out and read back so that
-    every field's rule is checked as for a file; it runs on its own."""
-    from .dumper import dump_problem
-    from .loader import load_problem
+    every field's rule is checked as for a file (by the problem's own schema: this package knows no kind); it
+    runs on its own, its model built where it is analysed. Raises :class:`~machdyn.errors.ProblemFileError`
+    naming each broken rule."""
+    import tomllib
 
-    fields = type(problem).model_fields
-    candidate = problem.model_copy(update={t: None for t in ("sweep", "optimise") if t in fields})
+    from pydantic import ValidationError
+
+    from ..errors import ProblemFileError
+    from .dumper import dump_problem
+    from .errors import problems_from
+
+    schema = type(problem)
+    candidate = problem.model_copy(update={t: None for t in ("sweep", "optimise") if t in schema.model_fields})
     for path, value in values.items():
         candidate = assign(candidate, path, float(value))
-    return load_problem(dump_problem(candidate))
+    try:
+        return schema.model_validate(tomllib.loads(dump_problem(candidate)))
+    except ValidationError as exc:
+        raise ProblemFileError(problems_from(exc, schema)) from None

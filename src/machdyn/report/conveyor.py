@@ -6,6 +6,7 @@ Reads a :class:`~machdyn.conveyor.evaluate.ConveyorResult` only (SI) and shows i
 
 from __future__ import annotations
 
+import math
 from html import escape
 from typing import Any
 
@@ -160,7 +161,8 @@ def conveyor_html_section(result: Any, *, figures: bool = True) -> str:
         parts.append(_row(["Rank", "D [mm]", "S/D", "n [rpm]", "filling", "power [kW]", "screw mass [kg]",
                            escape(r.objective_label)], head=True))
         for i, row in enumerate(r.table(10), 1):
-            parts.append(_row([str(i), _fmt(row["diameter"] * 1000), _fmt(row["pitch_ratio"]), _fmt(row["speed"]),
+            rpm = row["speed"] * 30 / math.pi  # shown in rpm, kept in rad/s
+            parts.append(_row([str(i), _fmt(row["diameter"] * 1000), _fmt(row["pitch_ratio"]), _fmt(rpm),
                                _fmt(row["filling"]), _fmt(row["power"] / 1000), _fmt(row["screw_mass"]),
                                _fmt(row["objective"])]))
         parts.append("</table>")

@@ -6,7 +6,7 @@ peak, crest factor and spectra computed and judged by ISO 10816-1 / ISO 20816-1 
 (:mod:`machdyn.vibration.signals`, :mod:`machdyn.vibration.severity`); two records give the reduction in %.
 ``signals.speed`` (the machine's running speed) adds order spectra and a warning when the band leaves out an
 order of it. In a machine's file ``[signals]`` is a capability (:mod:`machdyn.vibration.stage`) instead; the
-loader tells the two apart (:func:`machdyn.problem.loader.kind_of`).
+loader tells the two apart (:func:`machdyn.reading.kind_of`).
 """
 
 from __future__ import annotations

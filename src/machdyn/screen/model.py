@@ -6,7 +6,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ...errors import InputError, check_positive
+from ..errors import InputError, check_positive
 
 
 @dataclass(frozen=True)
@@ -56,7 +56,7 @@ class RotaryScreen:
     @property
     def m_C(self) -> float:
         """Mass substituted at the slider C [kg], seed 002 eq 5: m_C = (l_BS2/L) m2 + m3
-        (:func:`~machdyn.machines.rotary_screen.translating_mass`)."""
+        (:func:`~machdyn.screen.translating_mass`)."""
         return self.l_BS2 / self.L * self.m2 + self.m3
 
     # ------------------------------------------------------------------------------------- engine model
@@ -75,8 +75,8 @@ class RotaryScreen:
         slider displacement S' of eq 13 (without the series expansion).
         The engine's crank angle is the paper's alpha (see the module docstring).
         """
-        from ...linkage import slider_crank
-        from ...linkage.model import PointMass, Spring
+        from ..linkage import slider_crank
+        from ..linkage.model import PointMass, Spring
 
         crank_inertia = self.m1 * self.l_AS1 * (self.R - self.l_AS1)
         if crank_inertia < 0:

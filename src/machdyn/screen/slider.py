@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...errors import check_positive
+from ..errors import check_positive
 
 
 def slider_position_series(alpha, R, L):

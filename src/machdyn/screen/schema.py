@@ -3,7 +3,7 @@
 The table holds the paper's symbols (R, m1, L, m2, m3, l_AS1, l_BS2, l_CS2, m_e, r_e), each with its unit; the
 crank speed omega is ``[drive] speed``. ``spring = true`` adds the energy-storing spring of eq 17 (stiffness
 m_C omega^2 unless ``stiffness`` is given). The run analyses the engine's model of the screen
-(:meth:`machdyn.machines.rotary_screen.RotaryScreen.mechanism`) and reports the paper's energy figures
+(:meth:`machdyn.screen.model.RotaryScreen.mechanism`) and reports the paper's energy figures
 (T1max, T2, T3, the range of W) next to the engine's exact values.
 """
 
@@ -11,8 +11,9 @@ from __future__ import annotations
 
 from pydantic import Field
 
-from .fields import Mass, NonNegativeLength, PositiveLength, PositiveMass, Stiffness
-from .schema import DriveSpec, Meta, OutputSpec, Spec
+from ..problem.fields import Mass, NonNegativeLength, PositiveLength, PositiveMass, Stiffness
+from ..problem.schema import DriveSpec, Meta, OutputSpec, Spec
+from .model import RotaryScreen
 
 
 class RotaryScreenSpec(Spec):
@@ -43,9 +44,7 @@ class RotaryScreenProblem(Spec):
     output: OutputSpec = OutputSpec()
 
     def screen(self):
-        """The :class:`~machdyn.machines.rotary_screen.RotaryScreen` of these inputs."""
-        from ..machines.rotary_screen import RotaryScreen
-
+        """The :class:`~machdyn.screen.model.RotaryScreen` of these inputs."""
         s = self.rotary_screen
         return RotaryScreen(
             R=s.R, m1=s.m1, L=s.L, m2=s.m2, m3=s.m3, l_AS1=s.l_AS1, l_BS2=s.l_BS2, l_CS2=s.l_CS2,

@@ -1,4 +1,11 @@
-"""Rotary grading screen: slider-crank energy analysis and the energy-storing spring (seed paper 002).
+"""Rotary grading screen: slider-crank energy analysis and the energy-storing spring (seed paper 002), and
+the ``[rotary_screen]`` problem kind, in one package.
+
+The package has the shape of a kind (as :mod:`machdyn.conveyor`): :mod:`.schema` (the ``[rotary_screen]``
+problem file), :mod:`.model` (the screen and the engine's model of it), :mod:`.formulas`, :mod:`.slider`,
+:mod:`.ratio` (the paper's equations, corrected), :mod:`.figures` (the energy figures: as printed, by the
+formulas corrected, and exact) and :mod:`.kind` (build, check, analysis, the registry's entry). The report draws
+the results in :mod:`machdyn.report.rotary_screen`; nothing here draws.
 
 Source: Yuan Rui et al., *Study of Vibration Decreasing and Energy Saving of Rotary Grading Screen* (seed 002,
 Trans. CSAM 2013). Corrections follow ``seed-reproduction.md`` section 002 (cited as "repro 002.x").

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...errors import check_finite, check_positive
+from ..errors import check_finite, check_positive
 from .model import PAPER_SCREEN, RotaryScreen, _s  # noqa: F401 - PAPER_SCREEN is used by the doctests
 from .ratio import (  # noqa: F401 - re-exported: eqs 20-26 live in ratio.py
     _refined_extreme,

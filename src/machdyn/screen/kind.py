@@ -6,10 +6,11 @@ from __future__ import annotations
 from typing import Any
 
 from ..pipeline import Outcome, ProblemKind, Step
-from ..problem.rotary import RotaryScreenProblem
+from ..pipelines.linkage_run import analyse_linkage, check_assembly
 from ..results.labels import Label
 from ..results.linkage import LINKAGE_LABELS
-from .linkage_run import analyse_linkage, check_assembly
+from .figures import energy_figures
+from .schema import RotaryScreenProblem
 
 #: The engine's joints by the paper's names (seed 002, fig 2): A the crank centre, B crank-rod, C rod-slider.
 PAPER_JOINTS = {"O": "A, the crank centre", "A": "B, crank to rod", "B": "C, rod to slider",
@@ -40,8 +41,6 @@ def build(problem: Any) -> tuple[Any, list[tuple[str, str]]]:
 
 
 def analyse(problem: Any, mech: Any, step: Step) -> Outcome:
-    from ..machines.rotary_screen import energy_figures
-
     linkage = analyse_linkage(problem, mech, step)
     step("energy figures")
     figures = energy_figures(problem.screen())
