@@ -28,7 +28,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 def _compactor():
     from machdyn.problem.build import build_mechanism
-    from machdyn.problem.loader import load_problem
+    from machdyn.reading import load_problem
 
     return build_mechanism(load_problem(ROOT / "examples" / "compactor_optimise.toml"))
 
