@@ -102,7 +102,7 @@ MECHANISM: tuple[Quantity, ...] = (
        "analysis"),
     _q("inertial_shaking_force.max", "Shaking force, inertial (-sum m a_G), max", "N", "max", "min", "motion"),
     _q("inertial_shaking_moment.max_abs", "Shaking moment, inertial (of -m a_G and -I alpha), max |M|", "N*m",
-       "max_abs", "min", "motion"),
+       "max_abs", "min", "motion", zero_below="driving_torque.max_abs"),
     _q("frame_force.max", "Frame force, max (inertia, process loads and weight)", "N", "max", "min", "forces"),
     _q("shaking_moment.max_abs", "Shaking moment on the frame, max |M| (inertia, loads, weight, drive reaction)",
        "N*m", "max_abs", "min", "forces", zero_below="driving_torque.max_abs"),
