@@ -4,25 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-BASE = """
-[meta]
-name = "explore"
+from problem_texts import four_bar
 
-[mechanism]
-type = "four_bar"
-crank = {length = "40 mm", mass = "0.2 kg"}
-coupler = {length = "120 mm", mass = "0.5 kg"}
-rocker = {length = "80 mm", mass = "0.4 kg"}
-ground = {length = "100 mm"}
-
-[drive]
-speed = "10 rad/s"
-positions = 36
-
-[[loads.torques]]
-body = "crank"
-torque = "-0.5 N*m"
-"""
+BASE = four_bar("explore", positions=36)
 
 FOUR = """
 [[sweep.quantities]]

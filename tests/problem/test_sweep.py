@@ -14,26 +14,9 @@ from machdyn.linkage import crank_angles, kinetostatics
 from machdyn.problem.build import build_mechanism
 from machdyn.reading import load_problem
 from machdyn.runner import run_problem
+from problem_texts import four_bar
 
-BASE = """
-[meta]
-name = "sweep"
-
-[mechanism]
-type = "four_bar"
-crank = {length = "40 mm", mass = "0.2 kg"}
-coupler = {length = "120 mm", mass = "0.5 kg"}
-rocker = {length = "80 mm", mass = "0.4 kg"}
-ground = {length = "100 mm"}
-
-[drive]
-speed = "10 rad/s"
-positions = 72
-
-[[loads.torques]]
-body = "crank"
-torque = "-0.5 N*m"
-"""
+BASE = four_bar("sweep", positions=72)
 
 
 def _single(text: str, replace: tuple[str, str]) -> float:

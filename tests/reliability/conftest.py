@@ -10,27 +10,11 @@ from pathlib import Path
 
 import pytest
 
+from problem_texts import four_bar
+
 ROOT = Path(__file__).resolve().parents[2]
 
-FOUR_BAR = """
-[meta]
-name = "reliability"
-
-[mechanism]
-type = "four_bar"
-crank = {length = "40 mm", mass = "0.2 kg"}
-coupler = {length = "120 mm", mass = "0.5 kg"}
-rocker = {length = "80 mm", mass = "0.4 kg"}
-ground = {length = "100 mm"}
-
-[drive]
-speed = "10 rad/s"
-positions = 36
-
-[[loads.torques]]
-body = "crank"
-torque = "-0.5 N*m"
-"""
+FOUR_BAR = four_bar("reliability", positions=36)
 
 SWEEP = """
 [[sweep.quantities]]

@@ -1,4 +1,5 @@
-"""Regression tests of the findings of trying machdyn as a new user would, with broken files and CLI abuse."""
+"""The command line with broken files and abuse (each refused plainly, with the field named), and the results a
+new user misread until they were named apart (time ratio, inertial shaking force, a rocker through 180 deg)."""
 
 from __future__ import annotations
 
