@@ -4,6 +4,8 @@ balance."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -20,6 +22,8 @@ from machdyn.dynamics.duty import (
     starts_per_hour,
 )
 from machdyn.errors import InputError
+
+ROOT = Path(__file__).resolve().parents[2]
 
 RPM = np.pi / 30.0
 
@@ -163,3 +167,29 @@ def test_rotor_loss_of_the_simulated_start_up_is_the_energy_balance(bench_machin
     # the starts per hour follow from the rated rotor loss left by the running load
     heat = rotor_heat_per_hour(10.0, 1.0 - 1440 / 1500)
     assert duty.starts_allowed == pytest.approx(heat * (1 - duty.load_ratio**2) / duty.start_loss, rel=1e-12)
+
+
+def test_the_report_draws_the_motor_duty_with_its_rms_and_rated_lines(tmp_path):
+    """The flywheel section shows the motor's duty as a chart: its torque over one steady cycle, the RMS line at
+    the run's RMS load and the rated line at the motor's rated torque at the crank (the values of the duty check,
+    which the report reads, not computes)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from machdyn.report.dynamics import plot_motor_duty, sections
+    from machdyn.runner import run_problem
+
+    outcome = run_problem(ROOT / "examples" / "crank_press.toml").outcomes["flywheel"]
+    run = outcome.results
+    fig, ax = plt.subplots()
+    try:
+        plot_motor_duty(run, ax)
+        levels = sorted(float(line.get_ydata()[0]) for line in ax.lines[1:])
+    finally:
+        plt.close(fig)
+    assert levels == pytest.approx(sorted([run.duty.load_rms, run.duty.rated]), rel=1e-12)
+    assert run.duty.load_rms == pytest.approx(float(run.steady.rms_drive_torque), rel=1e-12)
+    html = "".join(body for _, body in sections(outcome))
+    assert "Motor duty S1" in html

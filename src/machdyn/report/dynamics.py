@@ -103,6 +103,33 @@ def plot_drive_against_load(run: Any, ax: Axes) -> Axes:
     return ax
 
 
+def plot_motor_duty(run: Any, ax: Axes) -> Axes:
+    """The motor's duty (machdyn.dynamics.duty, IEC 60034-1): its torque at the crank over one steady cycle
+    against time, its RMS over the cycle, the equivalent torque of its duty (S3/S6: the RMS over the duty period,
+    the rest counted), the rated S1 torque and the torque it may carry while loaded in this duty — all at the
+    crank. The motor passes its thermal check when the equivalent torque stays at or below the rated torque."""
+    duty, s = run.duty, run.steady
+    t = _row(s.time)
+    ax.plot(t, _row(s.drive_torque), color=PALETTE[0], lw=1.1, label="motor torque at the crank")
+    levels = [(duty.load_rms, "RMS over the cycle", PALETTE[1], "--"),
+              (duty.equivalent, f"equivalent torque, duty {duty.duty}", PALETTE[2], "-."),
+              (duty.rated, "rated torque (S1)", PALETTE[3], "-"),
+              (duty.rated_for_duty, f"allowed while loaded in {duty.duty}", PALETTE[4], ":")]
+    seen: set[float] = set()
+    for value, label, colour, style in levels:
+        if duty.duty == "S1" and label.startswith(("equivalent", "allowed")):
+            continue  # in S1 these are the RMS and the rating themselves
+        if round(value, 9) in seen:
+            continue
+        seen.add(round(value, 9))
+        ax.axhline(value, color=colour, ls=style, lw=1.0, label=f"{label}: {format_value(value)} N·m")
+    ax.set_xlabel("time over one steady cycle [s]")
+    ax.set_ylabel("torque at the crank [N·m]")
+    ax.set_title(f"Motor duty {duty.duty}: {format_value(duty.load_ratio * 100)} % of its rating", fontsize=9)
+    ax.legend(fontsize=7, loc="best")
+    return ax
+
+
 def flywheel_rows(run: Any) -> list[list[str]]:
     """The flywheel table: sizing, the part, the drive."""
     sz, part = run.sizing, run.part
@@ -195,6 +222,9 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
 
     figs = [_render("flywheel", "Flywheel and drive", "", (11.0, 8.0), draw, margins=(0.9, 0.9, 0.6, 0.45),
                     wspace=0.55, hspace=0.5)]
+    if run.duty is not None:
+        figs.append(_render("motor-duty", "Motor duty", "", (6.5, 3.6),
+                            lambda fig: plot_motor_duty(run, fig.subplots()), margins=(0.8, 0.25, 0.55, 0.45)))
     if run.start_up is not None:
         figs.append(_render("start-up", "Start-up", "", (6.0, 3.4), lambda fig: plot_start_up(run.start_up,
                                                                                              fig.subplots()),
