@@ -76,6 +76,10 @@ class StageContext:
     analysis: Any
     outcomes: Mapping[str, Outcome]
     source: str | None = None
+    #: runs one design's validated problem through the kind's and capabilities' stages, without the studies
+    #: ([sweep], [optimise]), and returns its results (SI) by key: what a study needs for results no population
+    #: group computes (a capability's). None where no runner is at hand.
+    run_design: Callable[[Any], Mapping[str, Any]] | None = None
 
     def result_of(self, table: str, expected: type[R]) -> R | None:
         """The result of the earlier stage of ``table`` (a capability's table or the kind's name), typed: None

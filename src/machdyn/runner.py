@@ -204,6 +204,14 @@ def check_problem(problem: Any) -> list[str]:
     return kind(loaded.kind).check(loaded.spec, loaded.model)
 
 
+def design_results(problem: Any) -> dict[str, Any]:
+    """The results (SI, by key) of one design of a study: its validated problem run as ``machdyn run`` would run
+    it, but without the file's studies (``[sweep]``, ``[optimise]``), which would otherwise start again."""
+    studies = {t: None for t in ("sweep", "optimise") if getattr(problem, t, None) is not None}
+    plain = problem.model_copy(update=studies) if studies else problem
+    return dict(run_problem(plain).results.values)
+
+
 def run_problem(problem: Any, *, text: str | None = None, step: Step = no_step) -> RunResult:
     """Analyse a problem: a path or TOML text, a :class:`LoadedProblem` or a problem from
     :func:`~machdyn.reading.load_problem`. ``text`` is the problem file echoed in the report (by default the
@@ -222,7 +230,8 @@ def run_problem(problem: Any, *, text: str | None = None, step: Step = no_step) 
         if table is None:
             continue
         step(cap.step)
-        ctx = StageContext(loaded.spec, table, first.mechanism, first.analysis, dict(outcomes), loaded.source)
+        ctx = StageContext(loaded.spec, table, first.mechanism, first.analysis, dict(outcomes), loaded.source,
+                           run_design=design_results)
         outcomes[cap.table] = done = cap.run(ctx)
         if cap.result_type is not None and done.results is not None and not isinstance(done.results,
                                                                                        cap.result_type):

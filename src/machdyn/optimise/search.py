@@ -20,6 +20,7 @@ import numpy as np
 from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
 from .constraints import CLOSES, violations
 from .evaluate import evaluate
+from .per_design import evaluate_designs
 from .result import History, NoFeasibleDesign
 
 #: Cost floor of infeasible designs; feasible objective values must stay far below it in magnitude.
@@ -44,16 +45,36 @@ class Evaluator:
     machine: str | None = None
     #: the threshold [rad] of a degenerate design's poor transmission (the built-in constraint)
     min_transmission_angle: float = math.radians(DEFAULT_MIN_TRANSMISSION_DEG)
+    #: capability results (no population group computes them): each design is run by ``run_design``
+    per_design_keys: frozenset = frozenset()
+    run_design: Any = None
 
     def __post_init__(self) -> None:
         self.wanted = {o.result for o in self.objectives} | {c.result for c in self.constraints}
+
+    @property
+    def per_design_wanted(self) -> set[str]:
+        """The results asked for that only a run of each design gives."""
+        return self.wanted & set(self.per_design_keys)
+
+    def design_results(self, problems, keys) -> dict[str, np.ndarray]:
+        """``keys`` of each design's run (:func:`~machdyn.optimise.per_design.evaluate_designs`)."""
+        if self.run_design is None:
+            raise RuntimeError("results of a capability need a way to run a design (StageContext.run_design)")
+        problems = list(problems)
+        return evaluate_designs(self.run_design, problems, keys, len(problems))
 
     def __call__(self, population) -> tuple[dict, np.ndarray, np.ndarray]:
         """(results, costs N x K, violations N x (1 + C)) of a population."""
         x = np.atleast_2d(np.asarray(population, dtype=float))
         pop = self.space.population(x)
-        results = evaluate(pop.mechanism, self.phi, pop.speed, pop.acceleration, self.wanted, self.about,
-                           machine=self.machine, min_transmission_angle=self.min_transmission_angle)
+        per_design = self.per_design_wanted
+        results = evaluate(pop.mechanism, self.phi, pop.speed, pop.acceleration, self.wanted - per_design,
+                           self.about, machine=self.machine, min_transmission_angle=self.min_transmission_angle)
+        if per_design:  # the regular designs run one by one through the file's stages
+            regular = np.asarray(results.get("regular", pop.buildable), dtype=bool) & pop.buildable
+            results |= self.design_results((self.space.problem_at(x[i]) if regular[i] else None
+                                            for i in range(x.shape[0])), per_design)
         costs = np.stack([o.cost(results) for o in self.objectives], axis=1)
         viol = violations(self.constraints, results, pop.buildable)
         viol[:, 0] += np.where(np.isfinite(costs).all(axis=1), 0.0, 1.0)

@@ -32,9 +32,12 @@ LABELS = {
 
 def _text(key: str) -> str:
     """The catalogue's text of a result, in lower case after "Best design: "."""
-    from ..results.catalogue import label
+    from ..results.catalogue import catalogue, find, label
 
     found = label(key)
+    if found is None:  # a capability's result (optimised design by design)
+        declared = find(key, catalogue())
+        found = declared[0].label() if declared is not None and not declared[0].is_pattern else None
     text = found.text if found is not None else key
     return text[:1].lower() + text[1:]
 
@@ -64,7 +67,7 @@ def run(ctx: StageContext) -> Outcome:
     from .study import optimise
 
     try:
-        result = optimise(ctx.problem, ctx.table)
+        result = optimise(ctx.problem, ctx.table, ctx.run_design)
     except NoFeasibleDesign as exc:
         # A well-formed table whose constraints no design within the bounds meets: the design fails its
         # checks (the rest of the run is still written), with the tightest constraints listed.
@@ -88,6 +91,7 @@ def run(ctx: StageContext) -> Outcome:
         labels[key] = Label(f"Best design: {name}", unit, shown)
         summary.append(key)
     asked = [o.result for o in result.objectives] + [c.result for c in result.constraints]
+    units = {o.result: o.unit for o in (*result.objectives, *result.constraints)}  # a capability's result's too
     # The results asked for (in the summary) and the other results of the best design that were computed.
     computed = [k for k in result.results if k not in STATUS_KEYS]
     for res_key in dict.fromkeys(asked + computed):
@@ -96,7 +100,7 @@ def run(ctx: StageContext) -> Outcome:
         if res_key not in asked and not math.isfinite(value):
             continue
         scalars[key] = value
-        labels[key] = Label(f"Best design: {_text(res_key)}", result_unit(res_key, mech))
+        labels[key] = Label(f"Best design: {_text(res_key)}", units.get(res_key) or result_unit(res_key, mech))
         if res_key in asked:
             summary.append(key)
     summary += ["optimise.evaluations", "optimise.converged", "optimise.verified"]

@@ -13,6 +13,7 @@ from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
 from .constraints import parse_constraints, violations
 from .evaluate import evaluate, result_names, result_unit
 from .objectives import parse_objectives
+from .per_design import RunDesign, capability_results
 from .result import OptimiseResult
 from .schema import OptimiseSpec
 from .search import Evaluator, differential_evolution
@@ -39,9 +40,12 @@ def show_value(unit: str):
     return lambda v: f"{v:.4g} {unit}".rstrip()
 
 
-def setup(problem: Any, spec: OptimiseSpec) -> Evaluator:
+def setup(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None = None) -> Evaluator:
     """The :class:`~machdyn.optimise.search.Evaluator` of a problem and its ``[optimise]`` table; every
-    mistake of the table is reported at once (:class:`~machdyn.errors.ProblemFileError`)."""
+    mistake of the table is reported at once (:class:`~machdyn.errors.ProblemFileError`). Objectives and
+    constraints may name the linkage's results (computed for the whole population at once) and the results of
+    the file's capability tables (``flywheel.mass``, ``parts...``: each design run by ``run_design``, see
+    :mod:`machdyn.optimise.per_design`)."""
     from ..problem.build import build_mechanism, crank_angles
 
     problems: list[tuple[str, str]] = []
@@ -52,9 +56,13 @@ def setup(problem: Any, spec: OptimiseSpec) -> Evaluator:
         problems += exc.problems
     mech = build_mechanism(problem)
     machine = getattr(problem.mechanism, "machine", None)
-    names = result_names(mech, machine)
+    linkage_names = result_names(mech, machine)
+    per_design = {k: u for k, u in capability_results(problem).items() if k not in set(linkage_names)}
+    names = linkage_names + sorted(per_design)
 
     def unit_of(key):
+        if key in per_design:
+            return per_design[key]
         return result_unit(key, mech)
 
     objectives: tuple[Any, ...] = ()
@@ -76,14 +84,15 @@ def setup(problem: Any, spec: OptimiseSpec) -> Evaluator:
     lowest = spec.min_transmission_angle
     return Evaluator(space, objectives, constraints, phi, tuple(problem.output.shaking_moment_about),
                      machine=machine, min_transmission_angle=(
-                         float(lowest) if lowest is not None else math.radians(DEFAULT_MIN_TRANSMISSION_DEG)))
+                         float(lowest) if lowest is not None else math.radians(DEFAULT_MIN_TRANSMISSION_DEG)),
+                     per_design_keys=frozenset(per_design), run_design=run_design)
 
 
 def _show(constraint):
     return show_value(constraint.unit)
 
 
-def optimise(problem: Any, spec: OptimiseSpec) -> OptimiseResult:
+def optimise(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None = None) -> OptimiseResult:
     """Optimise ``problem`` (a validated linkage problem) as ``spec`` (its ``[optimise]`` table) says.
 
     One objective: differential evolution (:mod:`machdyn.optimise.search`); several: the Pareto front by
@@ -94,7 +103,7 @@ def optimise(problem: Any, spec: OptimiseSpec) -> OptimiseResult:
     """
     from ..problem.dumper import dump_problem
 
-    ev = setup(problem, spec)
+    ev = setup(problem, spec, run_design)
     space = ev.space
     warnings: list[str] = []
     front_x = front_f = None
@@ -146,6 +155,8 @@ def verify(problem: Any, ev: Evaluator) -> tuple[dict[str, float], bool]:
     wanted = set(result_names(mech, ev.machine)) & (ev.wanted | _all_cheap(mech, ev.machine))
     res = evaluate(mech, ev.phi, problem.drive.speed, problem.drive.acceleration, wanted, ev.about,
                    machine=ev.machine, min_transmission_angle=ev.min_transmission_angle)
+    if ev.per_design_wanted:
+        res |= ev.design_results([problem], ev.per_design_wanted)
     viol = violations(ev.constraints, res, np.array([True]))
     results = {k: float(np.asarray(v)[0]) for k, v in res.items()}
     return results, bool(np.all(viol <= VERIFY_TOLERANCE))
