@@ -103,3 +103,15 @@ def test_a_design_whose_run_fails_gets_nan_and_the_others_their_values():
     out = evaluate_designs(run_design, ["good", "bad", None], ["flywheel.inertia", "flywheel.mass"], 3)
     np.testing.assert_array_equal(out["flywheel.inertia"], [2.0, np.nan, np.nan])
     assert np.isnan(out["flywheel.mass"]).all()  # not a finite figure: never a value to optimise
+
+
+def test_a_sweep_column_of_a_capability_result_is_each_variants_own_run():
+    plain = STUDY.split("[optimise]")[0]
+    text = plain + ('\n[sweep]\nparameter = "mechanism.coupler.mass"\nvalues = ["0.5 kg", "2 kg"]\n'
+                    'columns = ["flywheel.inertia"]\n')
+    check_problem(text)
+    run = run_problem(text)
+    swept = run.outcomes["sweep"].results.columns["flywheel.inertia"]
+    for mass, value in zip(("0.5 kg", "2 kg"), swept, strict=True):
+        alone = run_problem(plain.replace('"2 kg"', f'"{mass}"', 1)).results["flywheel.inertia"]
+        assert value == pytest.approx(alone, rel=1e-12)

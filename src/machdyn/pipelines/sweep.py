@@ -73,18 +73,23 @@ def check(problem: Any, _table: Any, source: str | None = None) -> list[tuple[st
 
 
 def unknown_columns(problem: Any, mech: Any) -> list[tuple[str, str]]:
-    """The ``[sweep] columns`` that name no result of this mechanism, as (path, message)."""
+    """The ``[sweep] columns`` that name no result of this mechanism or of the file's other tables (a capability's
+    result, computed by a run of each variant), as (path, message)."""
+    from ..optimise.per_design import capability_results
     from ..problem.errors import did_you_mean
     from ..results.population import result_names
 
-    known = result_names(mech, getattr(problem.mechanism, "machine", None))
+    known = result_names(mech, getattr(problem.mechanism, "machine", None)) + sorted(capability_results(problem))
     return [(f"sweep.columns[{i}]", f"'{key}' is not a result of this mechanism{did_you_mean(key, known)}")
             for i, key in enumerate(problem.sweep.extra_columns) if key not in known]
 
 
-def run_sweep(problem: Any) -> SweepRun:
-    """The design variants of a problem's ``[sweep]``, evaluated together by the population evaluator."""
+def run_sweep(problem: Any, run_design: Any = None) -> SweepRun:
+    """The design variants of a problem's ``[sweep]``, evaluated together by the population evaluator; the
+    columns that are results of the file's other tables (a capability's, :mod:`machdyn.optimise.per_design`)
+    by ``run_design`` running each regular variant through the file's stages."""
     from ..linkage import stack_designs
+    from ..optimise.per_design import capability_results, evaluate_designs
     from ..results.population import evaluate_population, result_unit, sweep_columns
     from .linkage_run import crank_range
 
@@ -100,13 +105,19 @@ def run_sweep(problem: Any) -> SweepRun:
     about = tuple(problem.output.shaking_moment_about)
     mech = stack_designs(mechs)
     machine = getattr(problem.mechanism, "machine", None)
-    wanted = sweep_columns(mech, machine, extra=problem.sweep.extra_columns)
+    by_run = {k: u for k, u in capability_results(problem).items() if k in problem.sweep.extra_columns}
+    wanted = sweep_columns(mech, machine, extra=tuple(k for k in problem.sweep.extra_columns if k not in by_run))
     columns = evaluate_population(mech, angles, speed, accel, wanted, about=about, machine=machine,
                                   min_transmission_angle=problem.sweep.transmission_limit)
     n = len(plan.problems)
     # Variants that are all alike stack into one design: one entry per variant all the same.
     columns = {k: np.broadcast_to(np.asarray(v), (n,)).copy() for k, v in columns.items()}
     units = {k: result_unit(k, mech) for k in columns}
+    if by_run and run_design is not None:
+        regular = np.asarray(columns["regular"], dtype=bool)
+        columns |= evaluate_designs(run_design, (p if ok else None for p, ok in zip(plan.problems, regular,
+                                                                                  strict=True)), by_run, n)
+        units |= by_run
     return SweepRun(plan, columns, units)
 
 
@@ -136,7 +147,7 @@ def _played(done: SweepRun) -> SweepRun:
 
 
 def run(ctx: StageContext) -> Outcome:
-    done = _played(run_sweep(ctx.problem))
+    done = _played(run_sweep(ctx.problem, ctx.run_design))
     plan, cols = done.plan, done.columns
     unit = plan.display_unit
     regular = np.asarray(cols["regular"], dtype=bool)
