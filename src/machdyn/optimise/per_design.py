@@ -27,18 +27,30 @@ STUDIES = ("sweep", "optimise")
 RunDesign = Callable[[Any], Mapping[str, Any]]
 
 
+class KnownResults(list):
+    """The results a study may name: the exact keys listed, and keys that a declared pattern matches
+    (``shaft.engine.order2.couple``), as ``accepts(key)`` tells."""
+
+    def __init__(self, names: Iterable[str], accepts: Callable[[str], bool]) -> None:
+        super().__init__(names)
+        self._accepts = accepts
+
+    def __contains__(self, key: object) -> bool:
+        return list.__contains__(self, key) or (isinstance(key, str) and self._accepts(key))
+
+
 def capability_results(problem: Any) -> dict[str, str]:
-    """{key: SI unit} of every numeric result the capability tables of ``problem`` declare (a table the file
-    has, but for the studies): the results a run of one of its designs reports beyond the linkage's own. Keys
-    made at run time (``balance.<part>.mass``) are declared as patterns; :func:`unit_of` resolves them."""
+    """{key: SI unit} of every numeric result the tables of ``problem`` declare (its kind's main table and every
+    other table the file has, but for the studies): what a run of one of its designs reports. Keys made at run
+    time (``balance.<part>.mass``) are declared as patterns; :func:`unit_of` resolves them."""
     present = {t for t in _tables(problem) if getattr(problem, t, None) is not None}
     return {q.key: q.unit for q in catalogue()
             if q.producer in present and q.kind == "number" and "<" not in q.key}
 
 
 def unit_of(key: str, problem: Any) -> str | None:
-    """The SI unit of a capability result ``key`` of ``problem`` (a pattern's too), or None if none of its
-    tables declares it."""
+    """The SI unit of a result ``key`` of ``problem`` declared by one of its tables (a pattern's too), or None if
+    none declares it."""
     present = {t for t in _tables(problem) if getattr(problem, t, None) is not None}
     found = find(key, catalogue())
     if found is None or found[0].producer not in present or found[0].kind != "number":

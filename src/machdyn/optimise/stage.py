@@ -48,9 +48,10 @@ def check(problem: Any, table: OptimiseSpec, source: str | None = None) -> list[
     from ..problem.build import crank_angles
     from .study import setup
 
-    too_many = held_values_error(table.population, crank_angles(problem).size)
-    if too_many is not None:
-        return [("optimise.population", too_many)]
+    if getattr(problem, "mechanism", None) is not None:  # a linkage population holds designs x crank angles
+        too_many = held_values_error(table.population, crank_angles(problem).size)
+        if too_many is not None:
+            return [("optimise.population", too_many)]
     try:
         setup(problem, table)
     except ProblemFileError as exc:
@@ -73,7 +74,8 @@ def run(ctx: StageContext) -> Outcome:
         # checks (the rest of the run is still written), with the tightest constraints listed.
         return Outcome(results=None, scalars={"optimise.feasible": 0.0}, summary=("optimise.feasible",),
                        failed_checks=(str(exc),))
-    result = with_views(ctx.problem, result)
+    if ctx.mechanism is not None:  # a linkage: the nominal design and the optimum played side by side
+        result = with_views(ctx.problem, result)
     mech = ctx.mechanism
     scalars: dict[str, Any] = {
         "optimise.feasible": 1.0,
@@ -162,6 +164,7 @@ CAPABILITY = Capability(
     step="design optimisation",
     labels=LABELS,
     report="machdyn.report.optimise:sections",
+    kinds=("mechanism", "shaft_line", "cam"),
     check=check,
     result_type=OptimiseResult,
 )

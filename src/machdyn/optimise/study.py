@@ -10,6 +10,7 @@ import numpy as np
 
 from ..errors import ProblemFileError
 from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
+from .by_runs import RunEvaluator, setup_by_runs, verify_by_runs
 from .constraints import parse_constraints, violations
 from .evaluate import evaluate, result_names, result_unit
 from .objectives import parse_objectives
@@ -48,6 +49,8 @@ def setup(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None = None)
     :mod:`machdyn.optimise.per_design`)."""
     from ..problem.build import build_mechanism, crank_angles
 
+    if getattr(problem, "mechanism", None) is None:  # a shaft line, a cam: every design run whole
+        return setup_by_runs(problem, spec, run_design)
     problems: list[tuple[str, str]] = []
     space = None
     try:
@@ -151,6 +154,8 @@ def verify(problem: Any, ev: Evaluator) -> tuple[dict[str, float], bool]:
     constraint (and closes at every crank angle)."""
     from ..problem.build import build_mechanism
 
+    if isinstance(ev, RunEvaluator):
+        return verify_by_runs(problem, ev)
     mech = build_mechanism(problem)
     wanted = set(result_names(mech, ev.machine)) & (ev.wanted | _all_cheap(mech, ev.machine))
     res = evaluate(mech, ev.phi, problem.drive.speed, problem.drive.acceleration, wanted, ev.about,

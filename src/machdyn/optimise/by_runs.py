@@ -1,0 +1,91 @@
+"""``[optimise]`` for a kind with no linkage population — a shaft line, a cam: each design is written out and run
+through the file's own stages (:mod:`machdyn.optimise.per_design`), and the objectives and constraints read its
+results by their catalogue keys (``shaft.engine.primary_couple``, ``cam.pressure_angle.max`` ...). The search is
+the linkage optimiser's (scipy's differential evolution, NSGA-II for several objectives) with the same Deb rules,
+history and verification; only the evaluation differs, one run per design instead of one engine call per
+population.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from ..errors import ProblemFileError
+from .constraints import parse_constraints, violations
+from .objectives import parse_objectives
+from .per_design import KnownResults, RunDesign, capability_results, evaluate_designs, unit_of
+from .schema import OptimiseSpec
+from .search import Evaluator
+from .variables import search_space
+
+
+@dataclass
+class RunEvaluator(Evaluator):
+    """An :class:`~machdyn.optimise.search.Evaluator` whose designs are each run whole by ``run_design``."""
+
+    def __call__(self, population) -> tuple[dict, np.ndarray, np.ndarray]:
+        x = np.atleast_2d(np.asarray(population, dtype=float))
+        problems: list[Any] = []
+        for row in x:
+            try:
+                problems.append(self.space.problem_at(row))
+            except ProblemFileError:  # a design whose values break a field's rule: not buildable
+                problems.append(None)
+        results = self.design_results(problems, self.wanted)
+        built = np.array([p is not None for p in problems])
+        ran = np.all([np.isfinite(v) for v in results.values()], axis=0) if results else built
+        results["regular"] = built & ran
+        results["assembled_fraction"] = results["regular"].astype(float)  # a design that runs is whole
+        costs = np.stack([o.cost(results) for o in self.objectives], axis=1)
+        viol = violations(self.constraints, results, results["regular"])
+        viol[:, 0] += np.where(np.isfinite(costs).all(axis=1), 0.0, 1.0)
+        self.evaluations += x.shape[0]
+        self._track(x, results, viol)
+        return results, costs, viol
+
+    @property
+    def per_design_wanted(self) -> set[str]:
+        return set(self.wanted)
+
+
+def setup_by_runs(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None) -> RunEvaluator:
+    """The evaluator of a problem of a kind without a linkage population; every mistake of the table at once.
+    The results it may name are those the file's kind and tables declare in the catalogue."""
+    problems: list[tuple[str, str]] = []
+    space = None
+    try:
+        space = search_space(problem, spec)
+    except ProblemFileError as exc:
+        problems += exc.problems
+    declared = capability_results(problem)
+    names = KnownResults(sorted(declared), lambda key: unit_of(key, problem) is not None)
+
+    def unit(key: str) -> str:
+        found = unit_of(key, problem)
+        return found if found is not None else ""
+
+    objectives: tuple[Any, ...] = ()
+    constraints: tuple[Any, ...] = ()
+    try:
+        objectives = parse_objectives(spec.objectives, names, unit)
+    except ProblemFileError as exc:
+        problems += exc.problems
+    try:
+        constraints = parse_constraints(spec.constraints, names, unit)
+    except ProblemFileError as exc:
+        problems += exc.problems
+    if problems:
+        raise ProblemFileError(problems)
+    wanted = frozenset(o.result for o in objectives) | frozenset(c.result for c in constraints)
+    return RunEvaluator(space, objectives, constraints, np.zeros(0), per_design_keys=wanted, run_design=run_design)
+
+
+def verify_by_runs(problem: Any, ev: RunEvaluator) -> tuple[dict[str, float], bool]:
+    """The results of the best design run alone, and whether it meets every constraint."""
+    res = evaluate_designs(ev.run_design, [problem], ev.wanted, 1) if ev.run_design is not None else {}
+    ok = np.array([all(np.isfinite(v[0]) for v in res.values())])
+    viol = violations(ev.constraints, {**res, "regular": ok, "assembled_fraction": ok.astype(float)}, ok)
+    return {k: float(v[0]) for k, v in res.items()}, bool(np.all(viol <= 1e-9))
