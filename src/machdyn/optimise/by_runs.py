@@ -14,8 +14,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import ProblemFileError
-from .constraints import parse_constraints, violations
-from .objectives import parse_objectives
+from .constraints import parse_goals, violations
 from .per_design import KnownResults, RunDesign, capability_results, evaluate_designs, unit_of
 from .schema import OptimiseSpec
 from .search import Evaluator
@@ -67,18 +66,7 @@ def setup_by_runs(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None
         found = unit_of(key, problem)
         return found if found is not None else ""
 
-    objectives: tuple[Any, ...] = ()
-    constraints: tuple[Any, ...] = ()
-    try:
-        objectives = parse_objectives(spec.objectives, names, unit)
-    except ProblemFileError as exc:
-        problems += exc.problems
-    try:
-        constraints = parse_constraints(spec.constraints, names, unit)
-    except ProblemFileError as exc:
-        problems += exc.problems
-    if problems:
-        raise ProblemFileError(problems)
+    objectives, constraints = parse_goals(spec, names, unit, problems)
     wanted = frozenset(o.result for o in objectives) | frozenset(c.result for c in constraints)
     return RunEvaluator(space, objectives, constraints, np.zeros(0), per_design_keys=wanted, run_design=run_design)
 

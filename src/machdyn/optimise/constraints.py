@@ -9,13 +9,14 @@ so constraints in different units add up to one total; a feasible design has a t
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from ..errors import ProblemFileError
 from ..problem.fields import FieldError, Unit, to_si
 from ..results.catalogue import canonical
-from .objectives import unknown_result
+from .objectives import parse_objectives, unknown_result
 from .schema import ConstraintSpec
 
 #: The built-in constraint's name in messages.
@@ -80,6 +81,25 @@ def parse_constraints(specs: list[ConstraintSpec], names: list[str], unit_of) ->
     if problems:
         raise ProblemFileError(problems)
     return tuple(out)
+
+
+def parse_goals(spec: Any, names: list[str], unit_of, problems: list[tuple[str, str]]) -> tuple[tuple, tuple]:
+    """(objectives, constraints) of an ``[optimise]`` table; raises one ProblemFileError with ``problems`` (the
+    table's mistakes found before) and every mistake of its objectives and constraints."""
+    problems = list(problems)
+    objectives: tuple = ()
+    constraints: tuple = ()
+    try:
+        objectives = parse_objectives(spec.objectives, names, unit_of)
+    except ProblemFileError as exc:
+        problems += exc.problems
+    try:
+        constraints = parse_constraints(spec.constraints, names, unit_of)
+    except ProblemFileError as exc:
+        problems += exc.problems
+    if problems:
+        raise ProblemFileError(problems)
+    return objectives, constraints
 
 
 def closing_violation(results: dict[str, np.ndarray], buildable: np.ndarray) -> np.ndarray:

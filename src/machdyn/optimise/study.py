@@ -11,9 +11,8 @@ import numpy as np
 from ..errors import ProblemFileError
 from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
 from .by_runs import RunEvaluator, setup_by_runs, verify_by_runs
-from .constraints import parse_constraints, violations
+from .constraints import parse_goals, violations
 from .evaluate import evaluate, result_names, result_unit
-from .objectives import parse_objectives
 from .per_design import RunDesign, capability_results
 from .result import OptimiseResult
 from .schema import OptimiseSpec
@@ -68,18 +67,7 @@ def setup(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None = None)
             return per_design[key]
         return result_unit(key, mech)
 
-    objectives: tuple[Any, ...] = ()
-    constraints: tuple[Any, ...] = ()
-    try:
-        objectives = parse_objectives(spec.objectives, names, unit_of)
-    except ProblemFileError as exc:
-        problems += exc.problems
-    try:
-        constraints = parse_constraints(spec.constraints, names, unit_of)
-    except ProblemFileError as exc:
-        problems += exc.problems
-    if problems:
-        raise ProblemFileError(problems)
+    objectives, constraints = parse_goals(spec, names, unit_of, problems)
     if spec.positions is not None:
         # The drive's own crank range, sampled at the search's number of positions.
         problem = problem.model_copy(update={"drive": problem.drive.model_copy(update={"positions": spec.positions})})
