@@ -30,6 +30,7 @@ CAPABILITIES: dict[str, str] = {
     "balance": "machdyn.balancing.stage:CAPABILITY",
     "frame": "machdyn.vibration.stage:FRAME",
     "signals": "machdyn.vibration.stage:SIGNALS",
+    "follower_linkage": "machdyn.cams.linkage_stage:CAPABILITY",
     "flywheel": "machdyn.dynamics.stage:CAPABILITY",
     "optimise": "machdyn.optimise.stage:CAPABILITY",
     "drivetrain": "machdyn.drivetrain.stage:CAPABILITY",

@@ -25,7 +25,7 @@ margin = 0.25
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
@@ -37,11 +37,25 @@ from ..problem.fields import (
     Length,
     LinearDamping,
     NonNegativeLength,
+    Point,
     PositiveLength,
     PositiveMass,
     Stiffness,
 )
-from ..problem.schema import Meta, Spec
+from ..problem.schema import (
+    BodySpec,
+    CounterweightSpec,
+    DyadSpec,
+    ForceSpec,
+    Gravity,
+    Meta,
+    Name,
+    Spec,
+    TorqueSpec,
+)
+from ..problem.schema import (
+    SpringSpec as LinkageSpringSpec,
+)
 
 
 class FollowerSpec(Spec):
@@ -134,6 +148,36 @@ class ShaftCamTable(CamBody):
     (cam angle = crank angle + phase); ``[cam.dynamics]`` is required there (the cam loads the shaft)."""
 
     phase: Angle = 0.0
+
+
+class FollowerLinkageLoads(Spec):
+    """``[follower_linkage.loads]``: the loads on the linkage, as a linkage file's ``[loads]`` (gravity, point
+    forces, torques on bodies, springs); an ``active`` window is a range of the cam angle."""
+
+    gravity: Gravity = "on"
+    forces: list[ForceSpec] = []
+    torques: list[TorqueSpec] = []
+    springs: list[LinkageSpringSpec] = []
+
+
+class FollowerLinkageTable(Spec):
+    """``[follower_linkage]``: a linkage driven by an oscillating follower's arm, written as the dyad chain of a
+    linkage file's custom ``[mechanism]`` (bodies, dyads, ground points, loads, counterweights).
+
+    The arm is the linkage's crank: body ``arm`` with the points ``pivot`` (on the ground point ``ground.pivot``,
+    the follower's pivot) and ``roller`` (the roller centre), in its frame with x from the pivot to the roller;
+    ``arm_points`` adds points to it. Ground points are in the cam's frame (cam centre at the origin, the
+    follower's pivot at (pivot_distance, 0), mirrored for a clockwise cam). The arm carries no mass here: its
+    inertia is ``[cam.dynamics] mass`` lumped at the roller."""
+
+    name: Name | None = None
+    ground: dict[Name, Point] = {}
+    arm_points: dict[Name, Point] = {}
+    bodies: list[BodySpec] = Field(min_length=1, max_length=130)
+    dyads: list[Annotated[DyadSpec, Field(discriminator="type")]] = Field(min_length=1, max_length=64)
+    loads: FollowerLinkageLoads = FollowerLinkageLoads()
+    counterweights: list[CounterweightSpec] = []
+    output: Name | None = None
 
 
 class CamProblem(Spec):

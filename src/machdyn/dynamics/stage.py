@@ -13,6 +13,7 @@ from typing import Any, Literal
 import numpy as np
 from pydantic import Field, model_validator
 
+from ..cams.linkage_stage import FollowerLinkageResult
 from ..cams.stage import CamResult
 from ..errors import InputError
 from ..pipeline import Capability, Outcome, StageContext
@@ -246,6 +247,9 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     if cam is not None:  # a cam machine: the camshaft is the crank, its reduced machine comes from the cam
         speed = float(cam.speed)
         machine = cam.machine(table.positions)
+        linked = ctx.result_of("follower_linkage", FollowerLinkageResult)
+        if linked is not None:  # the linkage the follower drives adds its reduced quantities at the camshaft
+            machine = linked.machine(machine, table.positions)
     else:
         speed = float(ctx.problem.drive.speed)
         if not speed > 0:
@@ -424,6 +428,6 @@ CAPABILITY = Capability(
     labels=LABELS,
     report="machdyn.report.dynamics:sections",
     check=check_flywheel,
-    after=("shaft_cam",),
+    after=("shaft_cam", "follower_linkage"),
     result_type=FlywheelRun,
 )

@@ -1,0 +1,287 @@
+"""A linkage driven by an oscillating follower's arm: the arm is the linkage's crank, moved by the cam.
+
+The follower's arm turns about its pivot with the angle psi = psi_0 + s(phi) [rad] (:mod:`machdyn.cams.followers`;
+phi the cam angle [rad], s the motion program's angular displacement). In the cam's frame (cam centre at the
+origin, pivot at (d, 0), the drawing mirrored about the y axis for a clockwise cam) the arm's direction from the
+pivot to the roller centre makes the angle
+
+  theta(phi) = pi - psi(phi)  (counter-clockwise cam),   theta(phi) = psi(phi)  (clockwise cam)   [rad]
+
+with the x axis, so the linkage's crank angle, speed and acceleration at a constant cam speed Omega [rad/s] are
+theta, theta' Omega [rad/s] and theta'' Omega^2 [rad/s^2], theta' = dtheta/dphi = -/+ s'(phi) and
+theta'' = -/+ s''(phi) (chain rule; the acceleration has no theta' dOmega/dt term at a constant cam speed). The
+linkage engine takes these arrays as its crank's given speed law, unchanged.
+
+Kinetostatics then gives the torque T_arm(phi) [N*m] the arm's pivot must supply to drive the linkage (inertia of
+its bodies, gravity, springs and external loads). By power balance (virtual work) the camshaft supplies it through
+the follower: T_cam Omega = T_arm theta' Omega, hence
+
+  T_cam(phi) = T_arm(phi) theta'(phi)   [N*m]
+
+(Norton, *Design of Machinery*, 5th ed., ch. 11, the power equation; Uicker, Pennock & Shigley, *Theory of
+Machines and Mechanisms*, 4th ed., ch. 17, energy methods and virtual work), and the moment about the pivot the cam
+must add along the follower's coordinate s is M_link = T_arm dtheta/ds = -/+ T_arm [N*m]. It adds to the
+follower's contact force as a load towards the cam (Norton eq 15.3 with the load F_L now a function of phi): at
+a constant cam speed it is M_link = A(phi) Omega^2 + B(phi), A from the motion, B from gravity, springs and
+external loads (kinetostatics is linear in the inertia loads, which scale with Omega^2), so the jump speed with
+the linkage is the lowest root over phi of (m a + A) Omega^2 + c v Omega + (k s + F_0 + F_L + B) = 0.
+
+For ``[flywheel]`` the linkage adds its reduced quantities at the camshaft, sampled at unit cam speed (where
+velocities are the velocity ratios dr/dphi): J(phi) = 2 T [kg*m^2], dJ/dphi = 2 dT/dphi, the potential of gravity
+and springs V(phi) [J] with slope -P_conservative, and the reduced moment of the external loads P_loads [N*m]
+(Uicker, Pennock & Shigley, ch. 17, the equivalent system; the same reduction as
+:func:`machdyn.dynamics.equivalent.equivalent_machine`).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, replace
+from typing import Any
+
+import numpy as np
+
+from ..dynamics.equivalent import EquivalentMachine
+from ..dynamics.tables import FourierCurve, PeriodicCurve
+from ..errors import InputError, ProblemFileError
+from ..linkage.energy import Energy, energy
+from ..linkage.kinematics import Kinematics, angle_ranges, format_ranges, kinematics, singular
+from ..linkage.kinetostatics import Forces, kinetostatics
+from ..linkage.model import Mechanism
+from ..problem.build import build_mechanism
+from ..problem.schema import BodySpec, CustomSpec, DriverSpec, DriveSpec, LinkageProblem, LoadsSpec
+from .dynamics import FollowerTrain, Spring
+from .followers import Follower
+from .program import SVAJ, Program
+from .schema import FollowerLinkageTable
+
+TABLE = "follower_linkage"
+ARM = "arm"
+PIVOT = "pivot"
+ROLLER = "roller"
+
+
+@dataclass(frozen=True)
+class ArmDrive:
+    """The arm as the linkage's crank over cam angles phi [rad]: its angle theta [rad], theta' = dtheta/dphi
+    [rad/rad], theta'' [rad/rad^2], and sign = dtheta/ds (-1 for a counter-clockwise cam, +1 clockwise)."""
+
+    phi: np.ndarray
+    theta: np.ndarray
+    d1: np.ndarray
+    d2: np.ndarray
+    sign: float
+
+
+def arm_drive(program: Program, follower: Follower, clockwise: bool, phi) -> ArmDrive:
+    """The arm's angle and its derivatives over the cam angles ``phi`` [rad] (module docstring)."""
+    phi = np.asarray(phi, dtype=float)
+    m = program.svaj(phi)
+    psi = follower.start_angle + m.s
+    sign = 1.0 if clockwise else -1.0
+    theta = psi if clockwise else np.pi - psi
+    return ArmDrive(phi, theta, sign * m.v, sign * m.a, sign)
+
+
+def pivot_point(follower: Follower, clockwise: bool) -> tuple[float, float]:
+    """The follower's pivot in the cam's frame [m]: (d, 0), or (-d, 0) for a clockwise cam."""
+    d = float(follower.pivot_distance)
+    return (-d if clockwise else d, 0.0)
+
+
+def _renamed(path: str) -> str:
+    """A path of the linkage file's tables as the path of the ``[follower_linkage]`` table."""
+    path = re.sub(r"^mechanism\.bodies\[(\d+)\]", lambda m: f"{TABLE}.bodies[{int(m.group(1)) - 1}]", path)
+    path = re.sub(r"^mechanism\b", TABLE, path)
+    return re.sub(r"^(loads|counterweights)\b", rf"{TABLE}.\1", path)
+
+
+def linkage_mechanism(table: FollowerLinkageTable, follower: Follower, clockwise: bool) -> Mechanism:
+    """The :class:`~machdyn.linkage.model.Mechanism` of ``[follower_linkage]``: the arm (massless, points
+    ``pivot``, ``roller`` and ``arm_points``) as the crank about ``ground.pivot``, then the table's bodies and
+    dyads. Raises :class:`~machdyn.errors.ProblemFileError` naming the table's fields."""
+    problems: list[tuple[str, str]] = []
+    if PIVOT in table.ground:
+        problems.append((f"{TABLE}.ground.{PIVOT}", "is the follower's pivot, placed by [cam.follower]; "
+                                                    "give the other ground points only"))
+    for name in (PIVOT, ROLLER):
+        if name in table.arm_points:
+            problems.append((f"{TABLE}.arm_points.{name}", f"the arm's '{name}' point is placed by "
+                                                           "[cam.follower] (pivot_distance, arm_length)"))
+    for i, b in enumerate(table.bodies):
+        if b.name == ARM:
+            problems.append((f"{TABLE}.bodies[{i}].name", "'arm' is the follower's arm, the linkage's crank; "
+                                                          "give the body another name"))
+    if problems:
+        raise ProblemFileError(problems)
+    arm = BodySpec.model_construct(name=ARM, points={PIVOT: (0.0, 0.0), ROLLER: (float(follower.arm_length), 0.0),
+                                                     **table.arm_points}, mass=0.0, inertia=0.0, com=(0.0, 0.0))
+    ground = {PIVOT: pivot_point(follower, clockwise), **table.ground}
+    spec = CustomSpec.model_construct(type="custom", name=table.name or TABLE, ground=ground,
+                                      crank=DriverSpec.model_construct(body=ARM, pivot=f"ground.{PIVOT}"),
+                                      bodies=[arm, *table.bodies], dyads=list(table.dyads))
+    loads = LoadsSpec.model_construct(gravity=table.loads.gravity, forces=table.loads.forces, stroke_forces=[],
+                                      torques=table.loads.torques, springs=table.loads.springs)
+    problem = LinkageProblem.model_construct(mechanism=spec, drive=DriveSpec.model_construct(speed=1.0), loads=loads,
+                                             counterweights=table.counterweights)
+    try:
+        return build_mechanism(problem)
+    except ProblemFileError as exc:
+        raise ProblemFileError([(_renamed(p), m) for p, m in exc.problems]) from None
+
+
+def output_body(table: FollowerLinkageTable, mech: Mechanism) -> str:
+    """The body whose travel is the linkage's output: ``output``, else the second body of the last dyad."""
+    if table.output is None:
+        return mech.dyads[-1].b
+    if table.output not in {b.name for b in mech.bodies}:
+        raise ProblemFileError([(f"{TABLE}.output", f"unknown body '{table.output}' (bodies: "
+                                                    f"{', '.join(b.name for b in mech.bodies)})")])
+    return table.output
+
+
+def linkage_motion(mech: Mechanism, drive: ArmDrive, speed: float) -> Kinematics:
+    """The linkage's motion at the cam angles of ``drive`` at the constant cam speed ``speed`` [rad/s]: crank
+    angle theta, speed theta' Omega and acceleration theta'' Omega^2. The result's ``crank_angle`` is the cam
+    angle, so that a load's ``active`` window reads the cam angle. Raises
+    :class:`~machdyn.errors.ProblemFileError` (field ``follower_linkage.dyads``) where the linkage does not close
+    or is at a dead position over the follower's swing."""
+    kin = kinematics(mech, drive.theta, drive.d1 * speed, drive.d2 * speed**2, on_fail="mask")
+    where = f"{TABLE}.dyads"
+    swing = (f"the arm swings from {np.degrees(np.min(drive.theta)):.4g} to {np.degrees(np.max(drive.theta)):.4g} "
+             "deg from the x axis")
+    fails = ~np.asarray(kin.assembled, dtype=bool)
+    if np.any(fails):
+        at = format_ranges(angle_ranges(drive.phi, fails))
+        raise ProblemFileError([(where, f"the linkage cannot be assembled at cam angles {at} ({swing}): the links "
+                                        "are too short or too long to close over the follower's swing")])
+    dead = singular(kin.dyad_reports, kin.shape)
+    if np.any(dead):
+        at = format_ranges(angle_ranges(drive.phi, dead))
+        raise ProblemFileError([(where, f"the linkage passes a dead (toggle) position at cam angles {at} ({swing}):"
+                                        " the follower cannot drive it there; change the geometry")])
+    return replace(kin, crank_angle=drive.phi)
+
+
+@dataclass(frozen=True)
+class LinkageLoad:
+    """The linkage's load on the follower over the cam angles phi [rad] at the cam speed ``speed`` [rad/s].
+
+    forces, energy : the linkage's kinetostatics and energy (crank = the arm).
+    arm_torque : T_arm [N*m], the torque at the arm's pivot driving the linkage.
+    camshaft_torque : T_arm theta' [N*m], the camshaft torque the linkage adds.
+    moment : M_link = A Omega^2 + B [N*m], the moment about the pivot along the follower's coordinate.
+    static : B [N*m], its part from gravity, springs and external loads (at zero speed).
+    """
+
+    drive: ArmDrive
+    speed: float
+    forces: Forces
+    energy: Energy
+    arm_torque: np.ndarray
+    camshaft_torque: np.ndarray
+    moment: np.ndarray
+    static: np.ndarray
+
+    @property
+    def inertial(self) -> np.ndarray:
+        """A [N*m*s^2] = (M_link - B) / Omega^2, the part of M_link from the linkage's motion."""
+        return (self.moment - self.static) / self.speed**2
+
+
+def linkage_load(mech: Mechanism, drive: ArmDrive, speed: float) -> LinkageLoad:
+    """Kinetostatics of the linkage at the cam speed ``speed`` [rad/s] and at rest, and the torques and moment
+    they put on the follower and the camshaft (module docstring)."""
+    kin = linkage_motion(mech, drive, speed)
+    forces = kinetostatics(mech, kinematics_result=kin)
+    en = energy(mech, forces=forces)
+    at_rest = kinematics(mech, drive.theta, 0.0, 0.0, on_fail="mask")
+    static_arm = kinetostatics(mech, kinematics_result=replace(at_rest, crank_angle=drive.phi)).driving_torque
+    t_arm = np.asarray(forces.driving_torque, dtype=float)
+    return LinkageLoad(drive, float(speed), forces, en, t_arm, t_arm * drive.d1, t_arm * drive.sign,
+                       np.asarray(static_arm, dtype=float) * drive.sign)
+
+
+def jump_speed_with_linkage(svaj: SVAJ, train: FollowerTrain, spring: Spring, inertial, static) -> float:
+    """The lowest cam speed [rad/s] at which the contact force with the linkage, (m a + A) w^2 + c v w +
+    (k s + F_0 + F_L + B), reaches 0 somewhere (Norton, *Design of Machinery*, 5th ed., eq 15.3 with the linkage's
+    load A w^2 + B; module docstring); inf if never."""
+    a_ = train.mass * svaj.a + np.asarray(inertial)
+    b_ = train.damping * svaj.v
+    c_ = spring.rate * svaj.s + spring.preload + train.load + np.asarray(static)
+    if np.any(c_ <= 0):
+        return 0.0
+    neg = a_ < 0
+    if not np.any(neg):
+        return float("inf")
+    disc = b_[neg] ** 2 - 4.0 * a_[neg] * c_[neg]
+    return float(np.min((-b_[neg] - np.sqrt(disc)) / (2.0 * a_[neg])))
+
+
+def spring_needed(svaj: SVAJ, train: FollowerTrain, spring: Spring, inertial, static, design_speed: float,
+                  stroke: float) -> tuple[float, float]:
+    """The spring that keeps contact with the linkage up to ``design_speed`` [rad/s] (Norton §15.4, as
+    :func:`~machdyn.cams.dynamics.size_spring` with the linkage's load): the least rate at the spring's preload
+    (inf if the preload alone is too small where the follower rests) and the least preload at its rate, in the
+    follower's coordinate [N*m/rad], [N*m]."""
+    need = -((train.mass * svaj.a + np.asarray(inertial)) * design_speed**2 + train.damping * svaj.v * design_speed)
+    need = need - train.load - np.asarray(static)
+    preload = max(float(np.max(need - spring.rate * svaj.s)), 0.0)
+    low = svaj.s <= 1e-12 * max(stroke, 1e-300)
+    if np.any(need[low] > spring.preload):
+        return float("inf"), preload
+    up = ~low
+    rate = max(float(np.max((need[up] - spring.preload) / svaj.s[up])), 0.0) if np.any(up) else 0.0
+    return rate, preload
+
+
+def _jump_intervals(phi: np.ndarray, windows) -> np.ndarray:
+    """True for each interval between the evenly spaced cam angles ``phi`` that holds a window's edge."""
+    m = phi.size
+    h = 2.0 * np.pi / m
+    out = np.zeros(m, dtype=bool)
+    for start, end in windows:
+        if end - start >= 2.0 * np.pi:
+            continue
+        for edge in (start, end):
+            u = (edge % (2.0 * np.pi)) / h
+            k = int(np.floor(u)) % m
+            out[k] = True
+            if abs(u - round(u)) < 1e-9:
+                out[(k - 1) % m] = True
+    return out
+
+
+def with_linkage(machine: EquivalentMachine, mech: Mechanism, program: Program, follower: Follower,
+                 clockwise: bool, positions: int) -> EquivalentMachine:
+    """The cam's reduced machine with the linkage's reduced inertia, potential and load moment added at the
+    camshaft, node by node with their exact slopes (module docstring); the cam's damping kept."""
+    if int(positions) != positions or positions < 16:
+        raise InputError(f"The number of cam positions must be an integer >= 16; got {positions!r}.")
+    phi = np.arange(int(positions)) * (2.0 * np.pi / int(positions))
+    period = 2.0 * np.pi
+    drive = arm_drive(program, follower, clockwise, phi)
+    forces = kinetostatics(mech, kinematics_result=linkage_motion(mech, drive, 1.0))
+    en = energy(mech, forces=forces)
+    kinetic = np.asarray(en.kinetic_total, dtype=float)
+    d_kinetic = np.asarray(en.energy_rate + en.conservative_power, dtype=float)  # dT/dphi at unit cam speed
+
+    def add(curve, values, slopes):
+        return PeriodicCurve.hermite(phi, np.asarray(curve(phi)) + values,
+                                     np.asarray(curve.derivative(phi)) + slopes, period)
+
+    inertia = add(machine.inertia, 2.0 * kinetic, 2.0 * d_kinetic)
+    potential = add(machine.potential, np.asarray(en.potential, dtype=float),
+                    -np.asarray(en.conservative_power, dtype=float))
+    load = np.asarray(machine.moment(phi)) + np.asarray(en.load_power, dtype=float)
+    windows = [f.active for f in mech.forces if f.active is not None]
+    windows += [t.active for t in mech.torques if t.active is not None]
+    jumps = _jump_intervals(phi, windows)
+    moment: Any
+    if jumps.any():
+        moment = PeriodicCurve.smooth_with_jumps(phi, load, period, jumps)
+    else:
+        fourier = FourierCurve.from_samples(load, period)
+        moment = fourier if fourier.resolved else PeriodicCurve.spline(phi, load, period)
+    return EquivalentMachine(inertia, potential, moment, machine.damping, machine.forces, machine.mechanism,
+                             machine.speed_loads, machine.single)
