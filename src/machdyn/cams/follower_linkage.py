@@ -49,6 +49,7 @@ from ..linkage.kinematics import Kinematics, angle_ranges, format_ranges, kinema
 from ..linkage.kinetostatics import Forces, kinetostatics
 from ..linkage.model import Mechanism
 from ..problem.build import build_mechanism
+from ..problem.errors import did_you_mean
 from ..problem.schema import BodySpec, CustomSpec, DriverSpec, DriveSpec, LinkageProblem, LoadsSpec
 from .dynamics import FollowerTrain, Spring
 from .followers import Follower
@@ -112,6 +113,13 @@ def linkage_mechanism(table: FollowerLinkageTable, follower: Follower, clockwise
         if b.name == ARM:
             problems.append((f"{TABLE}.bodies[{i}].name", "'arm' is the follower's arm, the linkage's crank; "
                                                           "give the body another name"))
+    names = [ARM, *(b.name for b in table.bodies)]
+    for i, d in enumerate(table.dyads):
+        for attr in ("a", "b"):
+            body = getattr(d, attr)
+            if body not in names:
+                problems.append((f"{TABLE}.dyads[{i}].{attr}", f"unknown body '{body}'{did_you_mean(body, names)} "
+                                                              f"(bodies: {', '.join(names)})"))
     if problems:
         raise ProblemFileError(problems)
     arm = BodySpec.model_construct(name=ARM, points={PIVOT: (0.0, 0.0), ROLLER: (float(follower.arm_length), 0.0),

@@ -1,0 +1,185 @@
+"""``[follower_linkage]``: a linkage driven by an oscillating follower's arm, on the cam-driven rocker feeder example.
+
+The checks are laws the result must obey, each computed independently of the quantity it checks:
+
+* power balance (Norton, *Design of Machinery*, 5th ed., ch. 11; Uicker, Pennock & Shigley, *Theory of Machines and
+  Mechanisms*, 4th ed., ch. 17): the camshaft torque the linkage adds times the cam speed equals the rate of change
+  of the linkage's kinetic and potential energy (central differences of the energies over the cam angle) less the
+  power of its external loads, at every position;
+* a massless linkage without loads takes no torque;
+* the output's velocity is the derivative of its position over the cam angle times the cam speed;
+* over a turn the camshaft does the work of the linkage's loads: the feed resistance F over the slide's stroke.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+from typer.testing import CliRunner
+
+from machdyn.cams.follower_linkage import arm_drive, linkage_load, linkage_mechanism
+from machdyn.cams.schema import FollowerLinkageLoads
+from machdyn.cams.stage import build
+from machdyn.cli import app
+from machdyn.reading import load_problem
+
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLE = ROOT / "examples" / "cam_rocker_linkage.toml"
+runner = CliRunner()
+
+
+def _setup(table=None, positions=720):
+    problem = load_problem(EXAMPLE)
+    model, problems = build(problem)
+    assert problems == []
+    table = table or problem.follower_linkage
+    mech = linkage_mechanism(table, model.follower, problem.cam.rotation == "cw")
+    phi = np.arange(positions) * (2 * np.pi / positions)
+    return problem, model, mech, phi
+
+
+def _load(problem, model, mech, phi):
+    return linkage_load(mech, arm_drive(model.program, model.follower, False, phi), float(problem.cam.speed))
+
+
+def test_the_shipped_copy_of_the_example_is_the_same():
+    assert (ROOT / "src" / "machdyn" / "data" / "examples" / EXAMPLE.name).read_text() == EXAMPLE.read_text()
+
+
+def test_camshaft_power_of_the_linkage_is_its_energy_rate_less_its_loads_power_at_every_position():
+    """T_cam Omega = d(T + V)/dphi Omega - P_loads, the energy derivative by central differences (step 1e-6 rad,
+    truncation error ~1e-12 of the terms); tolerance 1e-6 of the peak power, for the differences' rounding."""
+    problem, model, mech, phi = _setup(positions=360)
+    omega = float(problem.cam.speed)
+    here = _load(problem, model, mech, phi)
+    h = 1e-6
+    ahead = _load(problem, model, mech, phi + h).energy.total
+    behind = _load(problem, model, mech, phi - h).energy.total
+    rate = (ahead - behind) / (2 * h) * omega
+    power = here.camshaft_torque * omega
+    scale = float(np.max(np.abs(power)))
+    assert scale > 1.0  # the example's linkage takes a real torque
+    np.testing.assert_allclose(power, rate - here.energy.load_power, atol=1e-6 * scale)
+
+
+def test_a_massless_linkage_without_loads_adds_no_camshaft_torque():
+    problem = load_problem(EXAMPLE)
+    table = problem.follower_linkage
+    bare = table.model_copy(update={
+        "bodies": [b.model_copy(update={"mass": 0.0, "inertia": 0.0}) for b in table.bodies],
+        "loads": FollowerLinkageLoads(gravity="off")})
+    problem, model, mech, phi = _setup(bare)
+    load = _load(problem, model, mech, phi)
+    assert np.max(np.abs(load.camshaft_torque)) == pytest.approx(0.0, abs=1e-12)
+    assert np.max(np.abs(load.moment)) == pytest.approx(0.0, abs=1e-12)
+
+
+def test_the_output_velocity_is_the_derivative_of_its_position_times_the_cam_speed():
+    """Central differences of the slide's travel over the cam angle (step 1e-6 rad); tolerance 1e-7 of the peak
+    velocity."""
+    problem, model, mech, phi = _setup(positions=360)
+    omega = float(problem.cam.speed)
+    h = 1e-6
+
+    def travel(angles):
+        return _load(problem, model, mech, angles).forces.kinematics.slide("slide")
+
+    here = travel(phi)
+    slope = (travel(phi + h).s - travel(phi - h).s) / (2 * h)
+    peak = float(np.max(np.abs(here.v)))
+    assert peak > 0.1
+    np.testing.assert_allclose(here.v, slope * omega, atol=1e-7 * peak)
+
+
+def test_over_a_turn_the_camshaft_does_the_work_of_the_feed_resistance_over_the_stroke():
+    """The feed resistance F = 150 N acts over the cam's rise (0-100 deg), the whole forward stroke of the slide;
+    gravity and the links' inertia give back what they take. Work of the added camshaft torque per turn =
+    F x stroke; the rectangle rule over 720 positions (the power vanishes at the window's edges, in the dwells);
+    tolerance 1e-5."""
+    problem, model, mech, phi = _setup()
+    load = _load(problem, model, mech, phi)
+    work = float(np.mean(load.camshaft_torque)) * 2 * np.pi
+    slide = load.forces.kinematics.slide("slide").s
+    stroke = float(np.ptp(slide))
+    assert stroke == pytest.approx(0.052, rel=0.01)  # 2 x 150 mm x sin(10 deg)
+    assert work == pytest.approx(150.0 * stroke, rel=1e-5)
+    omega = float(problem.cam.speed)
+    load_work = float(np.mean(load.energy.load_power)) * 2 * np.pi / omega
+    assert work == pytest.approx(-load_work, rel=1e-9)
+
+
+def _variant(tmp_path: Path, old: str, new: str) -> Path:
+    """The example with ``old`` replaced by ``new`` (several pairs separated by '|', each replaced once)."""
+    text = EXAMPLE.read_text()
+    for a, b in zip(old.split("|"), new.split("|"), strict=True):
+        assert a in text
+        text = text.replace(a, b, 1)
+    path = tmp_path / "variant.toml"
+    path.write_text(text)
+    return path
+
+
+@pytest.mark.parametrize("old, new, field", [
+    ('a = "rod"', 'a = "rdo"', "follower_linkage.dyads[0].a"),
+    ('point = "slide.B"', 'point = "slider.B"', "follower_linkage.loads.forces[0].point"),
+    ('output = "slide"', 'output = "ram"', "follower_linkage.output"),
+    # the guide 248 mm above the pin's mid position: the 250 mm rod reaches it only near mid-swing
+    ('G = ["370 mm", "150 mm"]', 'G = ["370 mm", "398 mm"]', "follower_linkage.dyads"),
+    # a translating follower (lifts in mm) cannot drive the linkage: it has no arm
+    ('motion = "oscillating"|swing = "20 deg"|swing = "20 deg"', 'motion = "translating"|lift = "20 mm"|lift = "20 mm"',
+     "cam.follower.motion"),
+])
+def test_a_bad_table_is_refused_by_check_and_run_naming_the_field(tmp_path, old, new, field):
+    path = _variant(tmp_path, old, new)
+    checked = runner.invoke(app, ["check", str(path)])
+    ran = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "o"), "-q"])
+    assert checked.exit_code == 2, checked.output
+    assert ran.exit_code == 2, ran.output
+    assert field in checked.output and field in ran.output
+    assert "Traceback" not in ran.output
+
+
+def test_the_linkage_that_cannot_close_is_named_with_the_cam_angles(tmp_path):
+    path = _variant(tmp_path, 'G = ["370 mm", "150 mm"]', 'G = ["370 mm", "398 mm"]')
+    checked = runner.invoke(app, ["check", str(path)])
+    assert "cannot be assembled at cam angles" in checked.output
+
+
+def test_the_example_runs_from_the_command_line(tmp_path):
+    """The camshaft's mean power with the linkage is the feed resistance's work per turn times the turns per
+    second, F x stroke x n; the flywheel stage sees the same machine (its drive's mean power, from the steady
+    state at the real speed, agrees to 1 %)."""
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["run", str(EXAMPLE), "--out", str(out), "-q"])
+    assert result.exit_code == 0, result.output
+    scalars = json.loads((out / "results.json").read_text())["scalars"]
+    for key in ("follower_linkage.camshaft_torque.max", "follower_linkage.output_stroke",
+                "follower_linkage.joint_force.max", "follower_linkage.jump_speed", "follower_linkage.arm_torque.max"):
+        assert key in scalars, key
+    stroke = scalars["follower_linkage.output_stroke"]["value"] / 1e3  # shown in mm
+    assert scalars["follower_linkage.mean_power"]["value"] == pytest.approx(150.0 * stroke * 2.0, rel=1e-4)
+    assert scalars["flywheel.mean_power"]["value"] == pytest.approx(
+        scalars["follower_linkage.mean_power"]["value"], rel=0.01)
+    assert scalars["follower_linkage.camshaft_torque.max"]["value"] > scalars["cam.peak_torque"]["value"]
+    series = pd.read_csv(out / "follower_linkage.csv")
+    np.testing.assert_allclose(series["camshaft_torque [N*m]"],
+                               series["cam_torque [N*m]"] + series["linkage_torque [N*m]"], atol=1e-9)
+    assert "Camshaft torque with the linkage" in (out / "report.html").read_text()
+
+
+def test_a_spring_too_weak_for_the_linkage_fails_the_design_with_exit_3(tmp_path):
+    path = _variant(tmp_path, 'preload = "150 N"', 'preload = "60 N"')
+    result = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "o"), "-q"])
+    assert result.exit_code == 3, result.output
+    assert "follower jump with the linkage" in result.output
+
+
+def test_the_example_round_trips_through_the_dumper():
+    from machdyn.problem import dump_problem
+
+    problem = load_problem(EXAMPLE)
+    assert load_problem(dump_problem(problem)) == problem
