@@ -172,7 +172,7 @@ def test_the_example_runs_from_the_command_line(tmp_path):
 
 
 def test_a_spring_too_weak_for_the_linkage_fails_the_design_with_exit_3(tmp_path):
-    path = _variant(tmp_path, 'preload = "150 N"', 'preload = "60 N"')
+    path = _variant(tmp_path, 'preload = "130 N"', 'preload = "60 N"')
     result = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "o"), "-q"])
     assert result.exit_code == 3, result.output
     assert "follower jump with the linkage" in result.output

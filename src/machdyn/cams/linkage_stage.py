@@ -61,11 +61,15 @@ LABELS: dict[str, Label] = {
     P + "jump_speed": Label("Follower jump with the linkage: lowest cam speed at which contact is lost", "rad/s",
                             "rpm"),
     P + "jump_speed_ratio": Label("Follower jump speed with the linkage / running speed", ""),
+    P + "spring_rate_needed": Label("Return spring with the linkage: least rate at the spring's preload", "N/m",
+                                    "N/mm"),
+    P + "spring_preload_needed": Label("Return spring with the linkage: least preload at the spring's rate", "N"),
 }
 
 SUMMARY = tuple(P + k for k in ("output_stroke", "output_swing", "arm_torque.max", "linkage_torque.max",
                                 "camshaft_torque.max", "mean_power", "joint_force.max", "min_contact_force",
-                                "max_normal_force", "jump_speed"))
+                                "max_normal_force", "jump_speed", "spring_rate_needed",
+                                "spring_preload_needed"))
 
 
 @dataclass(frozen=True)
@@ -121,8 +125,13 @@ def _prepare(problem: CamProblem, table: FollowerLinkageTable) -> tuple[Any, Any
     try:
         mech = linkage_mechanism(table, model.follower, cam.rotation == "cw")
         output_body(table, mech)
-        drive = arm_drive(model.program, model.follower, cam.rotation == "cw", cam_angles(cam.positions))
-        linkage_motion(mech, drive, float(cam.speed))
+        grids = [cam.positions]
+        flywheel = getattr(problem, "flywheel", None)
+        if flywheel is not None:  # the flywheel's reduced machine samples the linkage at its own positions
+            grids.append(flywheel.positions)
+        for positions in grids:
+            drive = arm_drive(model.program, model.follower, cam.rotation == "cw", cam_angles(positions))
+            linkage_motion(mech, drive, float(cam.speed))
     except ProblemFileError as exc:
         return None, None, list(exc.problems)
     except InputError as exc:
@@ -191,9 +200,11 @@ def run(ctx: StageContext) -> Outcome:
     failed: list[str] = []
     margin = problem.cam.spring.margin
     design = speed * (1.0 + margin)
+    rate, preload = spring_needed(f.svaj, train, spring, load.inertial, load.static, design, model.program.stroke)
+    if np.isfinite(rate):
+        values[P + "spring_rate_needed"] = rate / arm**2
+    values[P + "spring_preload_needed"] = preload / arm
     if jump < design * (1 - 1e-9):
-        rate, preload = spring_needed(f.svaj, train, spring, load.inertial, load.static, design,
-                                      model.program.stroke)
         rpm = 30.0 / np.pi
         fix = (f"a rate of {rate / arm**2 / 1e3:.4g} N/mm at the preload of {spring.preload / arm:.4g} N"
                if np.isfinite(rate) else "a larger preload")
