@@ -171,6 +171,20 @@ def test_the_example_runs_from_the_command_line(tmp_path):
     assert "Camshaft torque with the linkage" in (out / "report.html").read_text()
 
 
+def test_an_output_that_turns_reports_its_swing_in_degrees(tmp_path):
+    """With the rod as the output, output_stroke is its swing: the range of its angle over the turn."""
+    path = _variant(tmp_path, 'output = "slide"', 'output = "rod"')
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["run", str(path), "--out", str(out), "-q"])
+    assert result.exit_code == 0, result.output
+    swing = json.loads((out / "results.json").read_text())["scalars"]["follower_linkage.output_stroke"]
+    assert swing["unit"] == "deg"
+    problem, model, mech, phi = _setup()
+    angle = _load(problem, model, mech, phi).forces.kinematics.body("rod").angle
+    assert swing["value"] == pytest.approx(np.degrees(np.ptp(np.unwrap(angle))), rel=1e-9)
+    assert 0.0 < swing["value"] < 20.0  # less than the arm's swing: the rod stays nearly along the guide
+
+
 def test_a_spring_too_weak_for_the_linkage_fails_the_design_with_exit_3(tmp_path):
     path = _variant(tmp_path, 'preload = "130 N"', 'preload = "60 N"')
     result = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "o"), "-q"])

@@ -51,9 +51,7 @@ LABELS: dict[str, Label] = {
     P + "mean_power": Label("Camshaft with the linkage: mean power", "W", zero_below=P + "peak_power"),
     P + "peak_power": Label("Camshaft with the linkage: peak power |T omega|", "W"),
     P + "output_stroke": Label("Linkage output: stroke of the slider", "m", "mm"),
-    P + "output_swing": Label("Linkage output: swing of the output body", "rad", "deg"),
     P + "output_velocity.max": Label("Linkage output: peak |velocity| of the slider", "m/s"),
-    P + "output_angular_velocity.max": Label("Linkage output: peak |angular velocity|", "rad/s"),
     P + "joint_force.max": Label("Linkage: peak joint force", "N"),
     P + "min_contact_force": Label("Contact force with the linkage, along the follower's path: minimum", "N"),
     P + "max_contact_force": Label("Contact force with the linkage, along the follower's path: maximum", "N"),
@@ -66,7 +64,11 @@ LABELS: dict[str, Label] = {
     P + "spring_preload_needed": Label("Return spring with the linkage: least preload at the spring's rate", "N"),
 }
 
-SUMMARY = tuple(P + k for k in ("output_stroke", "output_swing", "arm_torque.max", "linkage_torque.max",
+#: an output that turns (not a slider): its swing and angular velocity under the same keys
+TURNING = {P + "output_stroke": Label("Linkage output: swing of the output body", "rad", "deg"),
+           P + "output_velocity.max": Label("Linkage output: peak |angular velocity| of the output body", "rad/s")}
+
+SUMMARY = tuple(P + k for k in ("output_stroke", "arm_torque.max", "linkage_torque.max",
                                 "camshaft_torque.max", "mean_power", "joint_force.max", "min_contact_force",
                                 "max_normal_force", "jump_speed", "spring_rate_needed",
                                 "spring_preload_needed"))
@@ -187,8 +189,8 @@ def run(ctx: StageContext) -> Outcome:
         P + "work_per_cycle": float(np.mean(load.camshaft_torque) * 2.0 * np.pi),
         P + "mean_power": float(np.mean(total)) * speed,
         P + "peak_power": float(np.max(np.abs(total))) * speed,
-        P + ("output_stroke" if slider else "output_swing"): float(np.ptp(position)),
-        P + ("output_velocity.max" if slider else "output_angular_velocity.max"): float(np.max(np.abs(velocity))),
+        P + "output_stroke": float(np.ptp(position)),
+        P + "output_velocity.max": float(np.max(np.abs(velocity))),
         P + "joint_force.max": peak_joint,
         P + "min_contact_force": float(np.min(contact)),
         P + "max_contact_force": float(np.max(contact)),
@@ -221,8 +223,8 @@ def run(ctx: StageContext) -> Outcome:
         "linkage_torque": (load.camshaft_torque, "N*m"), "camshaft_torque": (total, "N*m"),
         "contact_force": (contact, "N"), "output_position": (position, unit[0]),
         "output_velocity": (velocity, unit[1])}}
-    return Outcome(results=result, scalars=values, series=series, summary=tuple(k for k in SUMMARY if k in values),
-                   failed_checks=tuple(failed))
+    return Outcome(results=result, scalars=values, labels={} if slider else TURNING, series=series,
+                   summary=tuple(k for k in SUMMARY if k in values), failed_checks=tuple(failed))
 
 
 CAPABILITY = Capability(
