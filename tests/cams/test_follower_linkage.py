@@ -21,7 +21,7 @@ import pandas as pd
 import pytest
 from typer.testing import CliRunner
 
-from machdyn.cams.follower_linkage import arm_drive, linkage_load, linkage_mechanism
+from machdyn.cams.follower_linkage import follower_drive, linkage_load, linkage_mechanism
 from machdyn.cams.schema import FollowerLinkageLoads
 from machdyn.cams.stage import build
 from machdyn.cli import app
@@ -32,28 +32,64 @@ EXAMPLE = ROOT / "examples" / "cam_rocker_linkage.toml"
 runner = CliRunner()
 
 
-def _setup(table=None, positions=720):
-    problem = load_problem(EXAMPLE)
+#: a translating follower (the press feeder cam) lifting a slide through a rod: its pitch point is 56.8 mm above the
+#: cam centre at rest, 5 mm right of it; the rod's pin 50 mm above the roller, the slide's guide level 120 mm up
+TRANSLATING = (ROOT / "examples" / "feeder_cam.toml").read_text() + """
+[follower_linkage]
+follower_points = { A = ["50 mm", "0 mm"] }
+ground = { G = ["150 mm", "120 mm"] }
+
+[[follower_linkage.bodies]]
+name = "rod"
+points = { A = ["0 mm", "0 mm"], B = ["150 mm", "0 mm"] }
+mass = "0.5 kg"
+inertia = "0.001 kg*m^2"
+com = ["75 mm", "0 mm"]
+
+[[follower_linkage.bodies]]
+name = "slide"
+points = { B = ["0 mm", "0 mm"] }
+mass = "2 kg"
+
+[[follower_linkage.dyads]]
+type = "RRP"
+a = "rod"
+b = "slide"
+pin_a = "follower.A"
+inner = "B"
+guide = { point = "ground.G", angle = "0 deg" }
+
+[[follower_linkage.loads.forces]]
+point = "slide.B"
+fx = "-80 N"
+active = ["0 deg", "110 deg"]
+"""
+
+
+def _setup(table=None, positions=720, text=None):
+    problem = load_problem(text if text is not None else EXAMPLE)
     model, problems = build(problem)
     assert problems == []
     table = table or problem.follower_linkage
-    mech = linkage_mechanism(table, model.follower, problem.cam.rotation == "cw")
+    mech = linkage_mechanism(table, model.follower, problem.cam.rotation == "cw", model.program)
     phi = np.arange(positions) * (2 * np.pi / positions)
     return problem, model, mech, phi
 
 
 def _load(problem, model, mech, phi):
-    return linkage_load(mech, arm_drive(model.program, model.follower, False, phi), float(problem.cam.speed))
+    drive = follower_drive(model.program, model.follower, problem.cam.rotation == "cw", phi)
+    return linkage_load(mech, drive, float(problem.cam.speed))
 
 
 def test_the_shipped_copy_of_the_example_is_the_same():
     assert (ROOT / "src" / "machdyn" / "data" / "examples" / EXAMPLE.name).read_text() == EXAMPLE.read_text()
 
 
-def test_camshaft_power_of_the_linkage_is_its_energy_rate_less_its_loads_power_at_every_position():
+@pytest.mark.parametrize("text", [None, TRANSLATING], ids=["oscillating", "translating"])
+def test_camshaft_power_of_the_linkage_is_its_energy_rate_less_its_loads_power_at_every_position(text):
     """T_cam Omega = d(T + V)/dphi Omega - P_loads, the energy derivative by central differences (step 1e-6 rad,
     truncation error ~1e-12 of the terms); tolerance 1e-6 of the peak power, for the differences' rounding."""
-    problem, model, mech, phi = _setup(positions=360)
+    problem, model, mech, phi = _setup(positions=360, text=text)
     omega = float(problem.cam.speed)
     here = _load(problem, model, mech, phi)
     h = 1e-6
@@ -66,22 +102,25 @@ def test_camshaft_power_of_the_linkage_is_its_energy_rate_less_its_loads_power_a
     np.testing.assert_allclose(power, rate - here.energy.load_power, atol=1e-6 * scale)
 
 
-def test_a_massless_linkage_without_loads_adds_no_camshaft_torque():
-    problem = load_problem(EXAMPLE)
+@pytest.mark.parametrize("text", [None, TRANSLATING], ids=["oscillating", "translating"])
+def test_a_massless_linkage_without_loads_adds_no_camshaft_torque(text):
+    problem = load_problem(text if text is not None else EXAMPLE)
     table = problem.follower_linkage
     bare = table.model_copy(update={
         "bodies": [b.model_copy(update={"mass": 0.0, "inertia": 0.0}) for b in table.bodies],
         "loads": FollowerLinkageLoads(gravity="off")})
-    problem, model, mech, phi = _setup(bare)
+    problem, model, mech, phi = _setup(bare, text=text)
     load = _load(problem, model, mech, phi)
     assert np.max(np.abs(load.camshaft_torque)) == pytest.approx(0.0, abs=1e-12)
     assert np.max(np.abs(load.moment)) == pytest.approx(0.0, abs=1e-12)
 
 
-def test_the_output_velocity_is_the_derivative_of_its_position_times_the_cam_speed():
+@pytest.mark.parametrize("text", [None, TRANSLATING], ids=["oscillating", "translating"])
+def test_the_output_velocity_is_the_derivative_of_its_position_times_the_cam_speed(text):
     """Central differences of the slide's travel over the cam angle (step 1e-6 rad); tolerance 1e-7 of the peak
-    velocity."""
-    problem, model, mech, phi = _setup(positions=360)
+    velocity. For the translating follower, the rod's pin also moves exactly with the follower: its height is the
+    roller's, 56.78 mm + s, plus 50 mm."""
+    problem, model, mech, phi = _setup(positions=360, text=text)
     omega = float(problem.cam.speed)
     h = 1e-6
 
@@ -91,8 +130,13 @@ def test_the_output_velocity_is_the_derivative_of_its_position_times_the_cam_spe
     here = travel(phi)
     slope = (travel(phi + h).s - travel(phi - h).s) / (2 * h)
     peak = float(np.max(np.abs(here.v)))
-    assert peak > 0.1
+    assert peak > 0.01
     np.testing.assert_allclose(here.v, slope * omega, atol=1e-7 * peak)
+    if text is not None:
+        pin = _load(problem, model, mech, phi).forces.kinematics.point("follower.A")
+        s = model.program.svaj(phi).s
+        np.testing.assert_allclose(pin.y, np.sqrt(0.057**2 - 0.005**2) + s + 0.05, atol=1e-12)
+        np.testing.assert_allclose(pin.x, 0.005, atol=1e-12)
 
 
 def test_over_a_turn_the_camshaft_does_the_work_of_the_feed_resistance_over_the_stroke():
@@ -112,6 +156,39 @@ def test_over_a_turn_the_camshaft_does_the_work_of_the_feed_resistance_over_the_
     assert work == pytest.approx(-load_work, rel=1e-9)
 
 
+def test_a_clockwise_cam_with_the_mirrored_linkage_takes_the_same_torque():
+    """A clockwise cam is the mirror image of the counter-clockwise one about the y axis (the follower's pivot at
+    (-120 mm, 0)); the linkage mirrored with it (its points' y in the arm's frame, the guide and the load's x
+    reversed) moves the same way and, gravity along -y being symmetric, takes the same camshaft torque."""
+    text = EXAMPLE.read_text()
+    for a, b in (('rotation = "ccw"', 'rotation = "cw"'), ('"-109.7 mm"', '"109.7 mm"'),
+                 ('G = ["370 mm"', 'G = ["-370 mm"'), ('angle = "0 deg" }', 'angle = "180 deg" }'),
+                 ('fx = "-150 N"', 'fx = "150 N"')):
+        assert a in text
+        text = text.replace(a, b)
+    mirrored = _load(*_setup(text=text))
+    original = _load(*_setup())
+    scale = float(np.max(np.abs(original.camshaft_torque)))
+    np.testing.assert_allclose(mirrored.camshaft_torque, original.camshaft_torque, atol=1e-12 * scale)
+    np.testing.assert_allclose(mirrored.forces.kinematics.point("slide.B").x,
+                               -original.forces.kinematics.point("slide.B").x, atol=1e-12)
+
+
+def test_the_translating_follower_runs_from_the_command_line(tmp_path):
+    path = tmp_path / "translating.toml"
+    path.write_text(TRANSLATING)
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["run", str(path), "--out", str(out), "-q"])
+    assert result.exit_code in (0, 3), result.output
+    scalars = json.loads((out / "results.json").read_text())["scalars"]
+    assert scalars["follower_linkage.camshaft_torque.max"]["value"] > 0
+    # the follower's load at the roller is a force along its path: the linkage's part of the contact force
+    forces = pd.read_csv(out / "cam_forces.csv")
+    series = pd.read_csv(out / "follower_linkage.csv")
+    np.testing.assert_allclose(series["contact_force [N]"],
+                               forces["contact_force [N]"] + series["follower_load [N]"], atol=1e-9)
+
+
 def _variant(tmp_path: Path, old: str, new: str) -> Path:
     """The example with ``old`` replaced by ``new`` (several pairs separated by '|', each replaced once)."""
     text = EXAMPLE.read_text()
@@ -129,9 +206,9 @@ def _variant(tmp_path: Path, old: str, new: str) -> Path:
     ('output = "slide"', 'output = "ram"', "follower_linkage.output"),
     # the guide 248 mm above the pin's mid position: the 250 mm rod reaches it only near mid-swing
     ('G = ["370 mm", "150 mm"]', 'G = ["370 mm", "398 mm"]', "follower_linkage.dyads"),
-    # a translating follower (lifts in mm) cannot drive the linkage: it has no arm
-    ('motion = "oscillating"|swing = "20 deg"|swing = "20 deg"', 'motion = "translating"|lift = "20 mm"|lift = "20 mm"',
-     "cam.follower.motion"),
+    ('name = "slide"', 'name = "follower"', "follower_linkage.bodies[1].name"),
+    ('G = ["370 mm", "150 mm"] }', 'G = ["370 mm", "150 mm"], pivot = ["0 mm", "0 mm"] }',
+     "follower_linkage.ground.pivot"),
 ])
 def test_a_bad_table_is_refused_by_check_and_run_naming_the_field(tmp_path, old, new, field):
     path = _variant(tmp_path, old, new)
@@ -157,8 +234,8 @@ def test_the_example_runs_from_the_command_line(tmp_path):
     result = runner.invoke(app, ["run", str(EXAMPLE), "--out", str(out), "-q"])
     assert result.exit_code == 0, result.output
     scalars = json.loads((out / "results.json").read_text())["scalars"]
-    for key in ("follower_linkage.camshaft_torque.max", "follower_linkage.output_stroke",
-                "follower_linkage.joint_force.max", "follower_linkage.jump_speed", "follower_linkage.arm_torque.max"):
+    for key in ("follower_linkage.camshaft_torque.max", "follower_linkage.output_stroke", "follower_linkage.jump_speed",
+                "follower_linkage.joint_force.max", "follower_linkage.follower_load.max"):
         assert key in scalars, key
     stroke = scalars["follower_linkage.output_stroke"]["value"] / 1e3  # shown in mm
     assert scalars["follower_linkage.mean_power"]["value"] == pytest.approx(150.0 * stroke * 2.0, rel=1e-4)

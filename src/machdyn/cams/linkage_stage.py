@@ -1,9 +1,9 @@
-"""The ``[follower_linkage]`` capability of a cam file: a linkage driven by the oscillating follower's arm.
+"""The ``[follower_linkage]`` capability of a cam file: a linkage driven by the cam's follower.
 
-The cam is analysed by its own kind (``[cam]``); this stage builds the linkage the arm drives (a dyad chain, as a
-linkage file's custom ``[mechanism]``), moves it with the arm over the cam angles and computes, by the relations
-of :mod:`machdyn.cams.follower_linkage`: the torque at the arm's pivot, the camshaft torque it adds
-(T_cam = T_arm dtheta/dphi, power balance), the total camshaft torque, the contact force with the linkage's load
+The cam is analysed by its own kind (``[cam]``); this stage builds the linkage the follower drives (a dyad chain,
+as a linkage file's custom ``[mechanism]``), moves it with the follower over the cam angles and computes, by the
+relations of :mod:`machdyn.cams.follower_linkage`: the linkage's load on the follower, the camshaft torque it adds
+(T_cam = T_crank dtheta/dphi, power balance), the total camshaft torque, the contact force with the linkage's load
 and the jump speed with it, the output's stroke and the peak joint force. A ``[flywheel]`` in the same file sizes
 the camshaft's flywheel and drive for the cam and the linkage together.
 
@@ -23,9 +23,11 @@ from ..errors import InputError, ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext
 from ..results.labels import Label
 from .follower_linkage import (
+    FOLLOWER,
     TABLE,
+    VIRTUAL,
     LinkageLoad,
-    arm_drive,
+    follower_drive,
     jump_speed_with_linkage,
     linkage_load,
     linkage_mechanism,
@@ -45,7 +47,8 @@ LABELS: dict[str, Label] = {
     P + "camshaft_torque.max": Label("Camshaft torque with the linkage: peak |T|", "N*m"),
     P + "camshaft_torque.rms": Label("Camshaft torque with the linkage: RMS over the turn", "N*m"),
     P + "linkage_torque.max": Label("Camshaft torque the linkage adds: peak |T|", "N*m"),
-    P + "arm_torque.max": Label("Torque at the arm's pivot driving the linkage: peak |T|", "N*m"),
+    P + "follower_load.max": Label("The linkage's load on the follower, at the roller along its path: peak |F|",
+                                   "N"),
     P + "work_per_cycle": Label("Camshaft work per turn the linkage adds (its loads' work)", "J",
                                 zero_below=P + "linkage_torque.max"),
     P + "mean_power": Label("Camshaft with the linkage: mean power", "W", zero_below=P + "peak_power"),
@@ -68,7 +71,7 @@ LABELS: dict[str, Label] = {
 TURNING = {P + "output_stroke": Label("Linkage output: swing of the output body", "rad", "deg"),
            P + "output_velocity.max": Label("Linkage output: peak |angular velocity| of the output body", "rad/s")}
 
-SUMMARY = tuple(P + k for k in ("output_stroke", "arm_torque.max", "linkage_torque.max",
+SUMMARY = tuple(P + k for k in ("output_stroke", "follower_load.max", "linkage_torque.max",
                                 "camshaft_torque.max", "mean_power", "joint_force.max", "min_contact_force",
                                 "max_normal_force", "jump_speed", "spring_rate_needed",
                                 "spring_preload_needed"))
@@ -113,9 +116,6 @@ def _prepare(problem: CamProblem, table: FollowerLinkageTable) -> tuple[Any, Any
     """The cam model and the linkage's mechanism, or the problems found (each with its field)."""
     cam = problem.cam
     found: list[tuple[str, str]] = []
-    if cam.follower.motion != "oscillating":
-        found.append(("cam.follower.motion", "a linkage driven by the follower needs an oscillating follower (its arm "
-                                             "is the linkage's crank); a translating follower cannot drive one"))
     if cam.dynamics is None:
         found.append(("cam.dynamics", "a follower that drives a linkage carries its load: give the follower train "
                                       "(mass ...)"))
@@ -125,14 +125,14 @@ def _prepare(problem: CamProblem, table: FollowerLinkageTable) -> tuple[Any, Any
     if model is None or problems:  # the cam's own problems are the kind's to report
         return None, None, []
     try:
-        mech = linkage_mechanism(table, model.follower, cam.rotation == "cw")
+        mech = linkage_mechanism(table, model.follower, cam.rotation == "cw", model.program)
         output_body(table, mech)
         grids = [cam.positions]
         flywheel = getattr(problem, "flywheel", None)
         if flywheel is not None:  # the flywheel's reduced machine samples the linkage at its own positions
             grids.append(flywheel.positions)
         for positions in grids:
-            drive = arm_drive(model.program, model.follower, cam.rotation == "cw", cam_angles(positions))
+            drive = follower_drive(model.program, model.follower, cam.rotation == "cw", cam_angles(positions))
             linkage_motion(mech, drive, float(cam.speed))
     except ProblemFileError as exc:
         return None, None, list(exc.problems)
@@ -158,6 +158,13 @@ def _output(load: LinkageLoad, body: str) -> tuple[np.ndarray, np.ndarray, bool]
     return np.unwrap(np.asarray(st.angle, dtype=float)), np.asarray(st.omega, dtype=float), False
 
 
+def _linkage_joints(load: LinkageLoad) -> list[Any]:
+    """The joints of the linkage itself: not those of the follower's massless drive, nor the follower's own
+    pivot or guide (which also carry the cam's contact force, not computed here)."""
+    return [j for j in load.forces.joints if not {j.body_1, j.body_2} & set(VIRTUAL)
+            and not (j.body_1 == "ground" and j.body_2 == FOLLOWER)]
+
+
 def run(ctx: StageContext) -> Outcome:
     """The stage (module docstring)."""
     problem: CamProblem = ctx.problem
@@ -167,7 +174,7 @@ def run(ctx: StageContext) -> Outcome:
     if problems or cam is None or cam.forces is None or model is None:
         raise ProblemFileError(problems or [(TABLE, "the cam's analysis gave no forces")], ctx.source)
     speed = float(cam.speed)
-    drive = arm_drive(model.program, model.follower, cam.clockwise, cam.model.profile.svaj.theta)
+    drive = follower_drive(model.program, model.follower, cam.clockwise, cam.model.profile.svaj.theta)
     load = linkage_load(mech, drive, speed)
     arm = cam.model.arm
     f = cam.forces
@@ -179,13 +186,12 @@ def run(ctx: StageContext) -> Outcome:
     jump = jump_speed_with_linkage(f.svaj, train, spring, load.inertial, load.static)
     body = output_body(table, mech)
     position, velocity, slider = _output(load, body)
-    joints = load.forces.reactions
-    peak_joint = max(float(np.max(r.magnitude)) for r in joints.values())
+    peak_joint = max(float(np.max(load.forces.joint(j.name).magnitude)) for j in _linkage_joints(load))
     values: dict[str, Any] = {
         P + "camshaft_torque.max": float(np.max(np.abs(total))),
         P + "camshaft_torque.rms": float(np.sqrt(np.mean(total**2))),
         P + "linkage_torque.max": float(np.max(np.abs(load.camshaft_torque))),
-        P + "arm_torque.max": float(np.max(np.abs(load.arm_torque))),
+        P + "follower_load.max": float(np.max(np.abs(load.moment))) / arm,
         P + "work_per_cycle": float(np.mean(load.camshaft_torque) * 2.0 * np.pi),
         P + "mean_power": float(np.mean(total)) * speed,
         P + "peak_power": float(np.max(np.abs(total))) * speed,
@@ -218,8 +224,7 @@ def run(ctx: StageContext) -> Outcome:
                                    slider)
     unit = ("m", "m/s") if slider else ("rad", "rad/s")
     series = {"follower_linkage": {
-        "cam_angle": (drive.phi, "rad"), "arm_angle": (drive.theta, "rad"),
-        "arm_torque": (load.arm_torque, "N*m"), "cam_torque": (f.torque, "N*m"),
+        "cam_angle": (drive.phi, "rad"), "follower_load": (load.moment / arm, "N"), "cam_torque": (f.torque, "N*m"),
         "linkage_torque": (load.camshaft_torque, "N*m"), "camshaft_torque": (total, "N*m"),
         "contact_force": (contact, "N"), "output_position": (position, unit[0]),
         "output_velocity": (velocity, unit[1])}}

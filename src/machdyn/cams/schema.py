@@ -161,18 +161,19 @@ class FollowerLinkageLoads(Spec):
 
 
 class FollowerLinkageTable(Spec):
-    """``[follower_linkage]``: a linkage driven by an oscillating follower's arm, written as the dyad chain of a
-    linkage file's custom ``[mechanism]`` (bodies, dyads, ground points, loads, counterweights).
+    """``[follower_linkage]``: a linkage driven by the cam's follower, written as the dyad chain of a linkage
+    file's custom ``[mechanism]`` (bodies, dyads, ground points, loads, counterweights).
 
-    The arm is the linkage's crank: body ``arm`` with the points ``pivot`` (on the ground point ``ground.pivot``,
-    the follower's pivot) and ``roller`` (the roller centre), in its frame with x from the pivot to the roller;
-    ``arm_points`` adds points to it. Ground points are in the cam's frame (cam centre at the origin, the
-    follower's pivot at (pivot_distance, 0), mirrored for a clockwise cam). The arm carries no mass here: its
-    inertia is ``[cam.dynamics] mass`` lumped at the roller."""
+    The follower is the body ``follower``: an oscillating follower's arm, with the points ``pivot`` (on the ground
+    point ``ground.pivot``) and ``roller`` (the roller centre) in its frame with x from the pivot to the roller; a
+    translating follower's slide, with the point ``roller`` (its pitch point) at the origin of its frame, x along
+    its path away from the cam. ``follower_points`` adds points to it. Ground points are in the cam's frame (cam
+    centre at the origin, mirrored for a clockwise cam). The follower carries no mass here: its inertia is
+    ``[cam.dynamics] mass``. ``output``: the body whose travel is reported (default: the last dyad's second)."""
 
     name: Name | None = None
     ground: dict[Name, Point] = {}
-    arm_points: dict[Name, Point] = {}
+    follower_points: dict[Name, Point] = {}
     bodies: list[BodySpec] = Field(min_length=1, max_length=130)
     dyads: list[Annotated[DyadSpec, Field(discriminator="type")]] = Field(min_length=1, max_length=64)
     loads: FollowerLinkageLoads = FollowerLinkageLoads()

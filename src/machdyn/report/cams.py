@@ -192,7 +192,7 @@ def plot_follower_linkage_torque(ax: Any, r: Any) -> Any:
     ax.plot(deg, r.cam_torque, color=PALETTE[0], linewidth=1.0, linestyle="--", label="cam alone")
     ax.plot(deg, r.total_torque, color=PALETTE[1], linewidth=1.4, label="cam and linkage")
     ax.plot(deg, r.load.camshaft_torque, color=PALETTE[2], linewidth=0.8, linestyle=":",
-            label="added by the linkage, T_arm dθ/dφ")
+            label="added by the linkage, T_crank dθ/dφ")
     ax.set_ylabel("camshaft torque [N·m]")
     _cam_axis(ax)
     ax.set_xlabel("cam angle φ [deg]")
@@ -204,13 +204,14 @@ def follower_linkage_sections(outcome: Any) -> list[tuple[str, str]]:
     r = outcome.results
     s = outcome.scalars
     fig = _render("follower-linkage-torque", "Camshaft torque with the linkage", "The camshaft torque of the cam "
-                  "and its follower alone, with the linkage the follower's arm drives, and the linkage's part by "
-                  "power balance (the torque at the arm's pivot times the arm's angular velocity ratio).",
+                  "and its follower alone, with the linkage the follower drives, and the linkage's part by power "
+                  "balance (the torque driving the linkage's crank times the crank's angular velocity ratio).",
                   (8.0, 3.6), lambda f: plot_follower_linkage_torque(f.subplots(), r), margins=(0.8, 0.3, 0.5, 0.35))
     travel = "stroke" if r.slider else "swing"
     shown = (np.ptp(r.position) * 1e3, "mm") if r.slider else (np.degrees(np.ptp(r.position)), "deg")
     rows = [["output", f"{r.output} ({travel} {format_value(shown[0])} {shown[1]})"],
-            ["peak |torque| at the arm's pivot", f"{format_value(float(np.max(np.abs(r.load.arm_torque))))} N·m"],
+            ["peak |load| of the linkage on the follower (at the roller)",
+             f"{format_value(float(np.max(np.abs(r.load.moment))) / r.cam.model.arm)} N"],
             ["peak |camshaft torque|, cam alone", f"{format_value(float(np.max(np.abs(r.cam_torque))))} N·m"],
             ["peak |camshaft torque|, with the linkage",
              f"{format_value(float(np.max(np.abs(r.total_torque))))} N·m"],
@@ -218,7 +219,8 @@ def follower_linkage_sections(outcome: Any) -> list[tuple[str, str]]:
     if "follower_linkage.jump_speed" in s:
         rows.append(["follower jump speed with the linkage",
                      f"{format_value(float(s['follower_linkage.jump_speed']) * 30 / np.pi)} rpm"])
-    intro = ("<p>The follower's arm is the crank of the linkage; its angle, speed and acceleration follow the cam's "
-             "motion program. The camshaft supplies the linkage's driving torque through the follower, "
-             "T_cam = T_arm dθ/dφ (power balance), and the contact force carries it too.</p>")
+    intro = ("<p>The follower moves the linkage's crank (an oscillating follower's arm is the crank); its angle, speed "
+             "and acceleration follow the cam's motion program. The camshaft supplies the linkage's driving torque "
+             "through the follower, T_cam = T_crank dθ/dφ (power balance), and the contact force carries it "
+             "too.</p>")
     return [("Linkage driven by the follower", intro + rows_html(rows, ("quantity", "value")) + figures_html([fig]))]
