@@ -217,9 +217,11 @@ def output_body(table: FollowerLinkageTable, mech: Mechanism) -> str:
     """The body whose travel is the linkage's output: ``output``, else the second body of the last dyad."""
     if table.output is None:
         return mech.dyads[-1].b
-    if table.output not in {b.name for b in mech.bodies}:
-        raise ProblemFileError([(f"{TABLE}.output", f"unknown body '{table.output}' (bodies: "
-                                                    f"{', '.join(b.name for b in mech.bodies)})")])
+    names = [FOLLOWER, *(b.name for b in table.bodies)]
+    if table.output not in names:
+        hint = did_you_mean(table.output, names)
+        raise ProblemFileError([(f"{TABLE}.output", f"unknown body '{table.output}'{hint} (bodies: "
+                                                    f"{', '.join(names)})")])
     return table.output
 
 
@@ -228,21 +230,19 @@ def linkage_motion(mech: Mechanism, drive: FollowerDrive, speed: float) -> Kinem
     angle theta, speed theta' Omega and acceleration theta'' Omega^2. The result's ``crank_angle`` is the cam
     angle, so that a load's ``active`` window reads the cam angle. Raises
     :class:`~machdyn.errors.ProblemFileError` (field ``follower_linkage.dyads``) where the linkage does not close
-    or is at a dead position over the follower's swing."""
+    or is at a dead position over the follower's motion."""
     kin = kinematics(mech, drive.theta, drive.d1 * speed, drive.d2 * speed**2, on_fail="mask")
     where = f"{TABLE}.dyads"
-    swing = (f"the follower's crank turns from {np.degrees(np.min(drive.theta)):.4g} to "
-             f"{np.degrees(np.max(drive.theta)):.4g} deg from the x axis")
     fails = ~np.asarray(kin.assembled, dtype=bool)
     if np.any(fails):
         at = format_ranges(angle_ranges(drive.phi, fails))
-        raise ProblemFileError([(where, f"the linkage cannot be assembled at cam angles {at} ({swing}): the links "
-                                        "are too short or too long to close over the follower's swing")])
+        raise ProblemFileError([(where, f"the linkage cannot be assembled at cam angles {at}: the links are too "
+                                        "short or too long to close over the follower's motion")])
     dead = singular(kin.dyad_reports, kin.shape)
     if np.any(dead):
         at = format_ranges(angle_ranges(drive.phi, dead))
-        raise ProblemFileError([(where, f"the linkage passes a dead (toggle) position at cam angles {at} ({swing}):"
-                                        " the follower cannot drive it there; change the geometry")])
+        raise ProblemFileError([(where, f"the linkage passes a dead (toggle) position at cam angles {at}: the "
+                                        "follower cannot drive it there; change the geometry")])
     return replace(kin, crank_angle=drive.phi)
 
 

@@ -142,8 +142,9 @@ def _prepare(problem: CamProblem, table: FollowerLinkageTable) -> tuple[Any, Any
 
 
 def check(problem: Any, table: FollowerLinkageTable, source: str | None) -> list[tuple[str, str]]:
-    """The table's validations beyond its schema: an oscillating follower with its train, bodies and points that
-    exist, and a linkage that closes without a dead position over the follower's whole swing."""
+    """The table's validations beyond its schema: the follower's train, bodies and points that exist, and a linkage
+    that closes without a dead position over the follower's whole motion, at the cam's positions and the
+    flywheel's."""
     return _prepare(problem, table)[2]
 
 
