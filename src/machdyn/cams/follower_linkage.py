@@ -63,7 +63,6 @@ from ..problem.schema import (
     CustomSpec,
     DriverSpec,
     DriveSpec,
-    GuideSpec,
     LinkageProblem,
     LoadsSpec,
 )
@@ -159,11 +158,10 @@ def _drive(table: FollowerLinkageTable, follower: Follower, clockwise: bool, pro
         return [body], {PIVOT: pivot_point(follower, clockwise)}, (FOLLOWER, PIVOT), []
     x, y = path_point(follower, clockwise)
     centre = (x - lever(program), y + 0.5 * float(program.stroke))
-    guide = GuideSpec
-    prp = DYAD_SPECS["PRP"].model_construct(
-        type="PRP", a=BLOCK, b=FOLLOWER, inner=ROLLER,
-        guide_a=guide.model_construct(point=f"{DRIVE}.{DRIVE}", angle=0.0),
-        guide_b=guide.model_construct(point=f"ground.{PATH}", angle=0.5 * np.pi))
+    prp = DYAD_SPECS["PRP"].model_validate({
+        "type": "PRP", "a": BLOCK, "b": FOLLOWER, "inner": ROLLER,
+        "guide_a": {"point": f"{DRIVE}.{DRIVE}", "angle": "0 deg"},  # the slot, along the drive crank
+        "guide_b": {"point": f"ground.{PATH}", "angle": "90 deg"}})  # the follower's path, +y away from the cam
     bodies = [_body(DRIVE, {DRIVE: (0.0, 0.0)}), _body(BLOCK, {ROLLER: (0.0, 0.0)}),
               _body(FOLLOWER, {ROLLER: (0.0, 0.0), **table.follower_points})]
     return bodies, {DRIVE: centre, PATH: (x, 0.0)}, (DRIVE, DRIVE), [prp]
