@@ -156,6 +156,31 @@ def test_over_a_turn_the_camshaft_does_the_work_of_the_feed_resistance_over_the_
     assert work == pytest.approx(-load_work, rel=1e-9)
 
 
+def test_the_flywheel_sees_the_linkage_reduced_inertia_and_the_work_of_its_loads():
+    """The camshaft's reduced machine with the linkage (for [flywheel]) adds J = 2 T / Omega^2 of the linkage
+    (its kinetic energy at the running speed), with the slope of central differences of it, and a reduced moment
+    whose work per turn is the feed resistance's, -F x stroke (rectangle rule over 360 nodes, tolerance 1e-5)."""
+    from machdyn.runner import run_problem
+
+    text = EXAMPLE.read_text().replace("positions = 720", "positions = 360")
+    result = run_problem(load_problem(text)).outcomes["follower_linkage"].results
+    base = result.cam.machine(360)
+    machine = result.machine(base, 360)
+    problem, model, mech, phi = _setup(positions=360)
+    omega = float(problem.cam.speed)
+    here = _load(problem, model, mech, phi)
+    j = 2 * here.energy.kinetic_total / omega**2
+    np.testing.assert_allclose(machine.inertia(phi) - base.inertia(phi), j, rtol=1e-9, atol=1e-15)
+    h = 1e-6
+    ahead = 2 * _load(problem, model, mech, phi + h).energy.kinetic_total / omega**2
+    behind = 2 * _load(problem, model, mech, phi - h).energy.kinetic_total / omega**2
+    slope = machine.inertia.derivative(phi) - base.inertia.derivative(phi)
+    np.testing.assert_allclose(slope, (ahead - behind) / (2 * h), atol=1e-6 * float(np.max(np.abs(slope))))
+    work = float(np.mean(machine.position_moment(phi) - base.position_moment(phi))) * 2 * np.pi
+    stroke = float(np.ptp(here.forces.kinematics.slide("slide").s))
+    assert work == pytest.approx(-150.0 * stroke, rel=1e-5)
+
+
 def test_a_clockwise_cam_with_the_mirrored_linkage_takes_the_same_torque():
     """A clockwise cam is the mirror image of the counter-clockwise one about the y axis (the follower's pivot at
     (-120 mm, 0)); the linkage mirrored with it (its points' y in the arm's frame, the guide and the load's x
