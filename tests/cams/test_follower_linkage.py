@@ -25,7 +25,9 @@ from machdyn.cams.follower_linkage import follower_drive, linkage_load, linkage_
 from machdyn.cams.schema import FollowerLinkageLoads
 from machdyn.cams.stage import build
 from machdyn.cli import app
+from machdyn.problem import dump_problem
 from machdyn.reading import load_problem
+from machdyn.runner import run_problem
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "examples" / "cam_rocker_linkage.toml"
@@ -160,8 +162,6 @@ def test_the_flywheel_sees_the_linkage_reduced_inertia_and_the_work_of_its_loads
     """The camshaft's reduced machine with the linkage (for [flywheel]) adds J = 2 T / Omega^2 of the linkage
     (its kinetic energy at the running speed), with the slope of central differences of it, and a reduced moment
     whose work per turn is the feed resistance's, -F x stroke (rectangle rule over 360 nodes, tolerance 1e-5)."""
-    from machdyn.runner import run_problem
-
     text = EXAMPLE.read_text().replace("positions = 720", "positions = 360")
     result = run_problem(load_problem(text)).outcomes["follower_linkage"].results
     base = result.cam.machine(360)
@@ -295,7 +295,5 @@ def test_a_spring_too_weak_for_the_linkage_fails_the_design_with_exit_3(tmp_path
 
 
 def test_the_example_round_trips_through_the_dumper():
-    from machdyn.problem import dump_problem
-
     problem = load_problem(EXAMPLE)
     assert load_problem(dump_problem(problem)) == problem
