@@ -13,8 +13,9 @@ from typing import Any, Literal
 import numpy as np
 from pydantic import Field, model_validator
 
+from ..cams.shaft import with_shaft_cam
 from ..cams.stage import CamResult
-from ..errors import InputError
+from ..errors import InputError, ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext
 from ..problem.fields import (
     AngularVelocity,
@@ -33,6 +34,13 @@ from ..problem.fields import VolumeFlow as Flow
 from ..problem.schema import Spec
 from ..results.labels import Label
 from .drive_choice import choose_drive, duty_of, overloaded
+from .drives import InductionMotor
+from .equivalent import LinearDamper, RotaryDamper, equivalent_machine
+from .flywheel import disc_flywheel, rim_flywheel, rim_speed_limit, size_flywheel
+from .motion import start_up
+from .motor_flywheel import flywheel_for_drive
+from .realspeed import forces_at_speed
+from .simulate import NotSettledError, steady_state
 
 
 class MotorTable(Spec):
@@ -176,8 +184,6 @@ SUMMARY = ("flywheel.inertia", "flywheel.inertia_constant_torque", "flywheel.mot
 
 
 def speed_loads(table: FlywheelTable) -> tuple:
-    from .equivalent import LinearDamper, RotaryDamper
-
     out: list[Any] = []
     for d in table.dampers:
         if d.body is not None:
@@ -190,8 +196,6 @@ def speed_loads(table: FlywheelTable) -> tuple:
 def check_flywheel(problem: Any, table: FlywheelTable, source: str | None = None) -> list[tuple[str, str]]:
     """The validations of ``[flywheel]`` that need more than its schema, so that ``check`` and ``run`` agree: a
     crank turning forwards, and a motor whose data describe a real induction motor (its drive object builds)."""
-    from .drives import InductionMotor
-
     found: list[tuple[str, str]] = []
     drive = getattr(problem, "drive", None)  # a cam file turns its camshaft at the cam's own speed
     speed = float(drive.speed) if drive is not None else 1.0
@@ -233,13 +237,6 @@ def _off_speed(steady, nominal: float) -> list[str]:
 
 def run_flywheel(ctx: StageContext) -> Outcome:
     """The stage: size or take the flywheel, choose or take the drive, steady state, start-up, real-speed forces."""
-    from ..errors import ProblemFileError
-    from .equivalent import equivalent_machine
-    from .flywheel import disc_flywheel, rim_flywheel, rim_speed_limit, size_flywheel
-    from .motion import start_up
-    from .realspeed import forces_at_speed
-    from .simulate import NotSettledError, steady_state
-
     table: FlywheelTable = ctx.table
     mech = ctx.mechanism
     cam = ctx.result_of("cam", CamResult)
@@ -254,8 +251,6 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         machine = equivalent_machine(mech, table.positions, speed_loads=speed_loads(table))
         shaft_cam = ctx.result_of("shaft_cam", CamResult)
         if shaft_cam is not None:  # a cam on the crank shaft: its reduced quantities add to the linkage's
-            from ..cams.shaft import with_shaft_cam
-
             machine = with_shaft_cam(machine, shaft_cam, ctx.problem.shaft_cam.phase,
                                      table.positions)
     target = table.delta if table.delta is not None else 0.02
@@ -270,8 +265,6 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         drive = choose_drive(table.motor, machine, flywheel, speed, mean_torque)
         for_motor = None
         if table.delta is not None and table.size_for == "motor" and table.motor.kind != "constant_torque":
-            from .motor_flywheel import flywheel_for_drive
-
             try:
                 for_motor = flywheel_for_drive(machine, drive, table.delta, flywheel)
                 flywheel = for_motor.inertia

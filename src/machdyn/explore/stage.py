@@ -3,6 +3,7 @@ exploration of several quantities written to Parquet, with its best designs in t
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -10,10 +11,13 @@ import numpy as np
 from ..errors import ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext
 from ..pipelines import sweep as one_quantity
+from ..pipelines.design_views import MAX_VIEWS, views_of
 from ..problem.sweep import SweepSpec
 from ..results.catalogue import find, label
 from ..results.labels import Label
-from .run import Exploration
+from .execution import workers_error
+from .run import Exploration, explore, plan_exploration, store_in_file
+from .sampling import is_power_of_two
 
 LABELS = dict(one_quantity.LABELS) | {
     "sweep.assembled_count": Label("Sweep: designs that assemble at every crank angle"),
@@ -26,9 +30,6 @@ def check(problem: Any, table: Any, source: str | None = None) -> list[tuple[str
     that cannot be built, the objective."""
     if not table.is_exploration:
         return one_quantity.check(problem, table)
-    from .execution import workers_error
-    from .run import plan_exploration, store_in_file
-
     problems: list[tuple[str, str]] = []
     if table.workers is not None and workers_error(table.workers):
         problems.append(("sweep.workers", str(workers_error(table.workers))))
@@ -48,16 +49,11 @@ def run(ctx: StageContext) -> Outcome:
     with the execution settings in force (``--workers``, ``--scheduler``, the output folder)."""
     if not ctx.table.is_exploration:
         return one_quantity.run(ctx)
-    from .run import explore
-
     return outcome(played(explore(ctx.problem, source=ctx.source)))
 
 
 def played(done: Any) -> Any:
     """The exploration with its nominal design and its best designs analysed one by one for playback."""
-    from dataclasses import replace
-
-    from ..pipelines.design_views import MAX_VIEWS, views_of
 
     best = done.digest.best
     count = min(MAX_VIEWS - 1, len(best.get("design", [])))
@@ -70,8 +66,6 @@ def played(done: Any) -> Any:
 def outcome(done: Any) -> Outcome:
     """The results of an exploration: counts, the best design's objective and quantities, the best designs as a
     table (``sweep_best.csv``); every design is in the Parquet folder ``done.store``."""
-    from .sampling import is_power_of_two
-
     plan, digest = done.plan, done.digest
     goal = plan.objective
     unit_of = {k: u for k, (u, _) in done.units.items()}

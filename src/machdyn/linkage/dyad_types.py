@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from . import dyads as dy
+from .fused_dyads import prp_code, rpr_code, rrp_code, rrr_code
 from .refs import GROUND, Number, column, local_point, split_ref
 
 if TYPE_CHECKING:
@@ -182,8 +183,6 @@ class RRR(DyadType):
         ctx.transmit(_body(self.pin_b), Q.x, Q.y, *fq)
 
     def emit_fused(self, gen):
-        from .fused_dyads import rrr_code
-
         rrr_code(gen, self)
 
 
@@ -258,8 +257,6 @@ class RRP(DyadType):
         ctx.couple_back(gb, couple)
 
     def emit_fused(self, gen):
-        from .fused_dyads import rrp_code
-
         rrp_code(gen, self)
 
 
@@ -326,8 +323,6 @@ class RPR(DyadType):
         ctx.transmit(_body(self.pin_b), Q.x, Q.y, *fq)
 
     def emit_fused(self, gen):
-        from .fused_dyads import rpr_code
-
         rpr_code(gen, self)
 
 
@@ -397,8 +392,6 @@ class PRP(DyadType):
         ctx.couple_back(g2, cb)
 
     def emit_fused(self, gen):
-        from .fused_dyads import prp_code
-
         prp_code(gen, self)
 
 

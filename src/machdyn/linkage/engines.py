@@ -7,6 +7,7 @@ import importlib.util
 import numpy as np
 
 from ..errors import InputError
+from .fused_source import Unsupported, generate
 
 ENGINES = ("auto", "fused", "numpy")
 
@@ -38,8 +39,6 @@ def use_fused(engine: str, mech, phi, positions: int) -> bool:
         return True
     if positions < AUTO_MIN_POSITIONS or np.ndim(phi) != 1 or not available():
         return False
-    from .fused_source import Unsupported, generate
-
     try:
         generate(mech, phi)
     except Unsupported:

@@ -6,8 +6,12 @@ bodies. The forms are the NumPy engine's too: both engines compute one text, so 
 
 from __future__ import annotations
 
-from .fused_source import Generator
+from typing import TYPE_CHECKING
+
 from .refs import split_ref
+
+if TYPE_CHECKING:  # the generator calls the codes; they only use it
+    from .fused_source import Generator
 
 
 def _motion(point: dict[str, str]) -> list[str]:

@@ -12,6 +12,7 @@ No numba here: the text is compiled by :mod:`machdyn.linkage.fused`.
 
 from __future__ import annotations
 
+import hashlib
 import re
 from dataclasses import dataclass, field
 from typing import Any
@@ -20,7 +21,7 @@ import numpy as np
 
 from .dyad_forms import forms_version
 from .loads import window
-from .model import joints
+from .model import joints, output_bodies
 from .refs import GROUND, split_ref
 
 #: The fields of a body state, in the order of the series output.
@@ -66,8 +67,6 @@ class Generated:
 
     def key(self, mode: str) -> str:
         """The kernel's name: a hash of its text and of the dyad forms it calls."""
-        import hashlib
-
         return hashlib.sha1((forms_version() + self.source(mode)).encode()).hexdigest()[:16]
 
 
@@ -411,8 +410,6 @@ def _population_sections(gen: Generator) -> dict[str, list]:
     machdyn.linkage.loads.mass_elements), the inertial shaking moment sum (r - z) x (-m a) - I alpha about
     z = (zx, zy), the kinetic energy T = sum m v^2/2 + I w^2/2 and its rate dT/dt = sum m v.a + I w alpha
     (machdyn.linkage.energy)."""
-    from .diagnostics import output_bodies
-
     out = {"transmission": list(gen.transmissions), "outputs": [], "inertial": [], "angles": []}
     for body, kind in output_bodies(gen.mech):
         if kind == "slide":
