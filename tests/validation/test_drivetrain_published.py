@@ -1,11 +1,15 @@
-"""Parts sizing against published worked examples with printed answers."""
+"""Parts sizing, clutch engagement, braking and motor duty against published worked examples with printed
+answers."""
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from machdyn.drivetrain.bearings import catalogue_rating, mean_effective_load, weibull_reliability
+from machdyn.drivetrain.clutch import engage
 from machdyn.drivetrain.strength import goodman_safety
+from machdyn.dynamics.duty import equivalent_torque, rated_torque_for_duty, rms_torque
 
 
 def test_shigley_problem_11_1_ball_bearing_rating_and_reliability():
@@ -43,3 +47,53 @@ def test_marks_calculations_goodman_safety_factor_on_a_proportional_load_line():
     printed = 229.1 / (202.3 * (0.385 + 0.398))
     sigma_max, sigma_min = 202.3e6 + 80.6e6, 202.3e6 - 80.6e6
     assert goodman_safety(sigma_max, sigma_min, 229.1e6, 595e6) == pytest.approx(printed, rel=1e-3)
+
+
+# --- clutch, brake and motor duty ------------------------------------------------------------------------------
+
+RPM = np.pi / 30.0   # [rad/s] per rev/min
+HP = 745.7           # [W] per mechanical horsepower
+
+
+@pytest.mark.parametrize("slip_torque", [5.0, 500.0])
+def test_openstax_example_11_7_coupled_flywheels(slip_torque):
+    """W. Moebs, S. J. Ling, J. Sanny, *University Physics Volume 1*, OpenStax 2016, §11.3, Example 11.7
+    "Coupled Flywheels": a flywheel at 600 rev/min and a second one at rest with three times its moment of
+    inertia are brought to one speed by friction; printed: omega = 1/4 omega0 = 150 rev/min = 15.7 rad/s, and
+    "3/4 of the initial kinetic energy is lost to the coupling". The example gives no friction torque: the
+    common speed and the loss do not depend on it (two torques are tried). 150 rev/min and 3/4 are exact; 15.7
+    rad/s is printed to 3 digits (tolerance half a unit of its last digit)."""
+    j0 = 1.3   # [kg m^2], any value: the example states only the ratio
+    e = engage(j0, 600 * RPM, 3 * j0, 0.0, slip_torque)
+    assert e.common_speed / RPM == pytest.approx(150.0, rel=1e-12)
+    assert e.common_speed == pytest.approx(15.7, abs=0.05)
+    assert e.dissipated / (0.5 * j0 * (600 * RPM) ** 2) == pytest.approx(0.75, rel=1e-12)
+
+
+def test_ge_technical_reference_rms_horsepower_of_a_varying_duty_cycle():
+    """GE Industrial Motors catalogue, Section TR "Technical Reference Guide", varying duty cycle, Table 15
+    (gemotors.cld.bz/wm9HNat/189): eight parts of 15, 40, 30, 5, 148, 200, 12 and 70 s at 32, 74, 27, 32, 66,
+    27, 32 and 27 hp; printed sum of (hp)^2 t = 1,115,196 over 520 s and RMS Hp = 46.3 (so required 46.3 x 1.10
+    = 50.9 hp). At the constant speed of an induction motor the power is proportional to the torque, so the RMS
+    torque at any speed gives the RMS power. Tolerance half a unit of the printed last digit."""
+    times = [15.0, 40.0, 30.0, 5.0, 148.0, 200.0, 12.0, 70.0]
+    power = np.array([32.0, 74.0, 27.0, 32.0, 66.0, 27.0, 32.0, 27.0]) * HP
+    assert sum(times) == 520.0
+    assert float(np.sum((power / HP) ** 2 * times)) == pytest.approx(1_115_196.0, rel=1e-12)
+    speed = 1780 * RPM   # any constant speed: it cancels
+    rms_hp = rms_torque(power / speed, times) * speed / HP
+    assert rms_hp == pytest.approx(46.3, abs=0.05)
+    assert 1.10 * rms_hp == pytest.approx(50.9, abs=0.05)
+
+
+def test_h2w_torque_at_a_ten_percent_duty_cycle():
+    """H2W Technologies, "Rotary Motion Calculator" (h2wtech.com/page/rotary-motion-calculator), duty-cycle
+    example: "Torque at 10% Duty Cycle = 1 N-m X (1/10%)^1/2 = 1 N-m X 3.16 = 3.16 N-m" (stated there for DC
+    motors: the intermittent S3 rule with rest at zero torque), and "Duty Cycle = 1 sec on, 3 sec off = 25%".
+    Printed to 3 digits: tolerance half a unit of the last digit. The inverse, the equivalent continuous torque
+    of 3.16 N m at 10 %, is the 1 N m rating."""
+    assert rated_torque_for_duty(1.0, "S3", 0.10) == pytest.approx(3.16, abs=0.005)
+    assert equivalent_torque(rated_torque_for_duty(1.0, "S3", 0.10), "S3", 0.10) == pytest.approx(1.0, rel=1e-12)
+    cdf = 1.0 / (1.0 + 3.0)
+    assert cdf == 0.25
+    assert rms_torque([2.0, 0.0], [1.0, 3.0]) == pytest.approx(equivalent_torque(2.0, "S3", cdf), rel=1e-12)
