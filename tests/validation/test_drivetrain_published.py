@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from machdyn.drivetrain.bearings import catalogue_rating, mean_effective_load, weibull_reliability
-from machdyn.drivetrain.clutch import engage
+from machdyn.drivetrain.clutch import engage, stop_constant
 from machdyn.drivetrain.strength import goodman_safety
 from machdyn.dynamics.duty import equivalent_torque, rated_torque_for_duty, rms_torque
 
@@ -68,6 +68,23 @@ def test_openstax_example_11_7_coupled_flywheels(slip_torque):
     assert e.common_speed / RPM == pytest.approx(150.0, rel=1e-12)
     assert e.common_speed == pytest.approx(15.7, abs=0.05)
     assert e.dissipated / (0.5 * j0 * (600 * RPM) ** 2) == pytest.approx(0.75, rel=1e-12)
+
+
+def test_openstax_college_physics_10_1_problem_3_grindstone_stopped_by_an_axe():
+    """P. P. Urone, R. Hinrichs et al., *College Physics*, OpenStax 2012, §10.1, Problems & Exercises 3
+    (Integrated Concepts): a grindstone (a disk) of 90.0 kg and 0.340 m radius turning at 90.0 rpm, a steel axe
+    pressed against it with a radial force of 20.0 N, kinetic friction coefficient 0.20. Printed answers:
+    (a) -0.26 rad/s^2, (b) 27 rev before it comes to rest. The axe is a brake of torque mu N r = 1.36 N m on a
+    disk of J = m r^2/2; the deceleration is omega0 over the stopping time. Tolerances: half a unit of the last
+    printed digit (0.005 rad/s^2, 0.5 rev)."""
+    inertia = 0.5 * 90.0 * 0.340**2
+    brake = 0.20 * 20.0 * 0.340
+    omega0 = 90.0 * RPM
+    stop = stop_constant(inertia, omega0, brake)
+    assert -omega0 / stop.time == pytest.approx(-0.26, abs=0.005)
+    assert stop.angle / (2 * np.pi) == pytest.approx(27.0, abs=0.5)
+    # the brake's work over the stop is the kinetic energy it takes away
+    assert brake * stop.angle == pytest.approx(0.5 * inertia * omega0**2, rel=1e-12)
 
 
 def test_ge_technical_reference_rms_horsepower_of_a_varying_duty_cycle():
