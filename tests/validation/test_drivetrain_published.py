@@ -70,6 +70,52 @@ def test_openstax_example_11_7_coupled_flywheels(slip_torque):
     assert e.dissipated / (0.5 * j0 * (600 * RPM) ** 2) == pytest.approx(0.75, rel=1e-12)
 
 
+def test_fossee_764_example_11_14_clutch_engagement_time_and_heat():
+    """Friction clutches, Example 11.14 of the textbook worked in FOSSEE Scilab Textbook Companion no. 764
+    (FOSSEE/Scilab-TBC-Uploads, 764/CH11/EX11.14: data11_14.sci, result11_14.txt): a single-plate clutch transmits
+    10 kW at 2000 rpm; input shaft 20 kg with radius of gyration 75 mm, output shaft 35 kg with 125 mm, the
+    output shaft at rest. Printed results: time t1 = 0.409285 s, heat generated E = 2046.422713 J (the
+    companion's figures for the book's example; the book's own printout was not available here). The clutch
+    torque is the rated torque P/omega. Tolerance one unit of the sixth printed decimal."""
+    j1, j2 = 20.0 * 0.075**2, 35.0 * 0.125**2
+    w1 = 2000 * RPM
+    e = engage(j1, w1, j2, 0.0, 10e3 / w1)
+    assert e.slip_time == pytest.approx(0.409285, abs=1e-6)
+    assert e.dissipated == pytest.approx(2046.422713, abs=1e-6)
+    # both shafts turn at the common speed of conserved angular momentum when the slip ends
+    assert e.common_speed == pytest.approx(j1 * w1 / (j1 + j2), rel=1e-12)
+
+
+def test_fossee_764_example_12_1_flywheel_disk_braked_to_rest():
+    """Brakes, Example 12.1 of the textbook worked in FOSSEE Scilab Textbook Companion no. 764
+    (764/CH12/EX12.1: solution12_1.sce, result12_1.txt): a solid disk 1 m in diameter and 0.2 m thick
+    (density 7200 kg/m^3) used as a flywheel at 350 rpm is brought to rest in 1.5 s by a brake. Printed results:
+    energy absorbed E = 94956.722333 J, brake torque Mt = 3454.361540 N m. With that torque machdyn's stop
+    takes the printed 1.5 s and the brake's work over the stop is the printed energy. Tolerances: the printed
+    torque is rounded to 1e-6 N m (relative 3e-10), hence 1e-8 relative on the time and the work."""
+    mass = np.pi / 4 * 1.0**2 * 0.2 * 7200.0
+    inertia = mass * 1.0**2 / 8   # k = D / sqrt(8) for a solid disk
+    stop = stop_constant(inertia, 350 * RPM, 3454.361540)
+    assert stop.time == pytest.approx(1.5, rel=1e-8)
+    assert 3454.361540 * stop.angle == pytest.approx(94956.722333, rel=1e-8)
+
+
+def test_fossee_764_example_12_3_hoist_drum_braked_with_a_descending_load():
+    """Brakes, Example 12.3 of the textbook worked in FOSSEE Scilab Textbook Companion no. 764
+    (764/CH12/EX12.3: solution12_3.sce, result12_3.txt): a 2500 kg mass descending at 1.5 m/s on a drum of
+    0.75 m radius (drum 50 kg, radius of gyration 0.7 m) is brought to rest in 0.5 m. Printed results: energy
+    absorbed E = 15124 J (kinetic energy of the mass and the drum plus the mass's potential energy, g = 9.81),
+    brake torque Mt = 22686 N m. In machdyn the weight is a driving load (resisting torque -m g R) and the mass
+    is reflected to the drum (m R^2): with the printed torque the drum stops after h/R, i.e. the mass after
+    0.5 m, and the brake's work is the printed energy. The printed values are exact in the data: tolerance
+    1e-9 relative."""
+    m, r, g = 2500.0, 0.75, 9.81
+    inertia = 50.0 * 0.7**2 + m * r**2
+    stop = stop_constant(inertia, 1.5 / r, 22686.0, resisting_torque=-m * g * r)
+    assert stop.angle * r == pytest.approx(0.5, rel=1e-9)
+    assert 22686.0 * stop.angle == pytest.approx(15124.0, rel=1e-9)
+
+
 def test_openstax_college_physics_10_1_problem_3_grindstone_stopped_by_an_axe():
     """P. P. Urone, R. Hinrichs et al., *College Physics*, OpenStax 2012, §10.1, Problems & Exercises 3
     (Integrated Concepts): a grindstone (a disk) of 90.0 kg and 0.340 m radius turning at 90.0 rpm, a steel axe
