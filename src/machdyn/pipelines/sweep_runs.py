@@ -128,7 +128,7 @@ def _some(known: list[str]) -> str:
 
 def _first(problems: list[tuple[str, str]]) -> str:
     path, message = problems[0]
-    return f"{path}: {message}" if path else message
+    return message if not path or message.startswith(path) else f"{path}: {message}"
 
 
 def _run_one(problem: Any, path: str, value: float, run_design: Any, asked: tuple[str, ...],
