@@ -174,3 +174,19 @@ def test_a_shaft_line_sweeps_a_crank_phase():
     alone = run_problem(text.replace('phase = "180 deg"', 'phase = "90 deg"', 1))
     assert done.columns["shaft.engine.primary_couple"][2] == pytest.approx(
         alone.results["shaft.engine.primary_couple"], rel=1e-12)
+
+
+def test_the_sweep_reports_its_progress_and_estimates_its_time(monkeypatch):
+    """The command line's progress bar moves with each variant, and a long sweep is announced with an estimate
+    from its first variant's time (announced here however short, the threshold set to 0 s)."""
+    import importlib
+
+    ex = importlib.import_module("machdyn.explore.execution")
+    monkeypatch.setattr(ex, "ANNOUNCE_AFTER", 0.0)
+    moved: list[tuple[int, int]] = []
+    said: list[str] = []
+    with ex.execution(progress=lambda done, total: moved.append((done, total)), estimate=said.append):
+        run_problem(_with_sweep('parameter = "cam.speed"\nvalues = ["100 rpm", "200 rpm", "300 rpm"]\n'
+                                'columns = ["cam.jump_speed"]\n'))
+    assert moved == [(1, 3), (2, 3), (3, 3)]
+    assert len(said) == 1 and said[0].startswith("3 variants of cam.speed, each run whole: about ")

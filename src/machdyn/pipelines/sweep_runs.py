@@ -156,6 +156,9 @@ def _run_one(problem: Any, path: str, value: float, run_design: Any, asked: tupl
 def run_sweep(problem: Any, run_design: Any) -> RunSweep:
     """The variants of ``problem``'s ``[sweep]``, each run by ``run_design`` (a validated problem -> its results
     by key, SI): the columns asked for (NaN where a variant has no value), ``regular`` and ``status``."""
+    import time
+
+    from ..explore.execution import announce_estimate, current
     from ..optimise.per_design import unit_of
     from ..problem.sweep import expand_sweep
 
@@ -166,11 +169,17 @@ def run_sweep(problem: Any, run_design: Any) -> RunSweep:
     n = len(plan.problems)
     columns: dict[str, np.ndarray] = {key: np.full(n, math.nan) for key in asked}
     status = []
+    progress = current().progress
+    started = time.perf_counter()
     for i, value in enumerate(plan.values_si):
         row: dict[str, float] = {}
         status.append(_run_one(problem, plan.parameter, float(value), run_design, asked, row))
         for key, v in row.items():
             columns[key][i] = v
+        if i == 0:  # the first variant's time, for the whole sweep
+            announce_estimate((time.perf_counter() - started) * n, f"{n} variants of {plan.parameter}, each run whole")
+        if progress is not None:
+            progress(i + 1, n)
     units = {key: unit_of(key, problem) or "" for key in asked}
     columns["regular"] = np.array([s == REGULAR for s in status], dtype=bool)
     columns["status"] = np.array(status, dtype=object)
