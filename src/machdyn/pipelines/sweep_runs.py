@@ -100,25 +100,6 @@ def check(problem: Any, table: Any) -> list[tuple[str, str]]:
             hint = did_you_mean(key, known) or f"; a {kind} file's results are {_some(known)}"
             problems.append((f"sweep.columns[{i}]", f"'{key}' is not a result of this {kind} file{hint}"))
     return problems
-    count = len(table.values) if table.values is not None else int(table.count or 0)
-    if count > MAX_VARIANTS:
-        where = "sweep.values" if table.values is not None else "sweep.count"
-        problems.append((where, f"a {kind} file's sweep runs each variant whole, at most {MAX_VARIANTS} of them; "
-                                f"got {count}"))
-    else:
-        try:
-            expand_sweep(problem)
-        except ProblemFileError as exc:
-            problems += exc.problems
-    known = _known(problem)
-    if not table.columns:
-        problems.append(("sweep.columns", f"name the results to tabulate for each variant, such as columns = "
-                                          f"[\"{known[0]}\"]; this {kind} file reports {_some(known)}"))
-    for i, key in enumerate(table.extra_columns):
-        if key not in known:
-            hint = did_you_mean(key, known) or f"; this {kind} file reports {_some(known)}"
-            problems.append((f"sweep.columns[{i}]", f"'{key}' is not a result of this {kind} file{hint}"))
-    return problems
 
 
 def _some(known: list[str]) -> str:
