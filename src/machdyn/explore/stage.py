@@ -27,7 +27,12 @@ LABELS = dict(one_quantity.LABELS) | {
 
 def check(problem: Any, table: Any, source: str | None = None) -> list[tuple[str, str]]:
     """Every mistake of the table that its schema cannot see: paths, units and signs of the values, designs
-    that cannot be built, the objective."""
+    that cannot be built, the objective; in a file with no linkage (a cam, a shaft line), the checks of a sweep
+    run variant by variant (:mod:`machdyn.pipelines.sweep_runs`)."""
+    if _by_runs(problem):
+        from ..pipelines import sweep_runs
+
+        return sweep_runs.check(problem, table)
     if not table.is_exploration:
         return one_quantity.check(problem, table)
     problems: list[tuple[str, str]] = []
@@ -46,10 +51,20 @@ def check(problem: Any, table: Any, source: str | None = None) -> list[tuple[str
 
 def run(ctx: StageContext) -> Outcome:
     """The sweep of ``ctx.problem``: one quantity as before, or an exploration (:func:`machdyn.explore.explore`)
-    with the execution settings in force (``--workers``, ``--scheduler``, the output folder)."""
+    with the execution settings in force (``--workers``, ``--scheduler``, the output folder); in a file with no
+    linkage (a cam, a shaft line), each variant run whole through the file's stages."""
+    if _by_runs(ctx.problem):
+        from ..pipelines import sweep_runs
+
+        return sweep_runs.run(ctx)
     if not ctx.table.is_exploration:
         return one_quantity.run(ctx)
     return outcome(played(explore(ctx.problem, source=ctx.source)))
+
+
+def _by_runs(problem: Any) -> bool:
+    """True for a file with no linkage population (a cam, a shaft line): its variants are run one by one."""
+    return getattr(problem, "mechanism", None) is None
 
 
 def played(done: Any) -> Any:
@@ -120,6 +135,7 @@ CAPABILITY = Capability(
     step="design sweep",
     labels=LABELS,
     report="machdyn.report.explore:sections",
+    kinds=("mechanism", "cam", "shaft_line"),
     check=check,
     result_type=(one_quantity.SweepRun, Exploration),
 )
