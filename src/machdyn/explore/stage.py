@@ -11,6 +11,7 @@ import numpy as np
 from ..errors import ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext
 from ..pipelines import sweep as one_quantity
+from ..pipelines import sweep_runs
 from ..pipelines.design_views import MAX_VIEWS, views_of
 from ..problem.sweep import SweepSpec
 from ..results.catalogue import find, label
@@ -30,8 +31,6 @@ def check(problem: Any, table: Any, source: str | None = None) -> list[tuple[str
     that cannot be built, the objective; in a file with no linkage (a cam, a shaft line), the checks of a sweep
     run variant by variant (:mod:`machdyn.pipelines.sweep_runs`)."""
     if _by_runs(problem):
-        from ..pipelines import sweep_runs
-
         return sweep_runs.check(problem, table)
     if not table.is_exploration:
         return one_quantity.check(problem, table)
@@ -54,8 +53,6 @@ def run(ctx: StageContext) -> Outcome:
     with the execution settings in force (``--workers``, ``--scheduler``, the output folder); in a file with no
     linkage (a cam, a shaft line), each variant run whole through the file's stages."""
     if _by_runs(ctx.problem):
-        from ..pipelines import sweep_runs
-
         return sweep_runs.run(ctx)
     if not ctx.table.is_exploration:
         return one_quantity.run(ctx)

@@ -22,13 +22,21 @@ per variant.
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from ..errors import MachdynError, ProblemFileError
+from ..explore.execution import announce_estimate, current
+from ..kinds import KINDS
+from ..optimise.per_design import KnownResults, capability_results, unit_of
 from ..pipeline import Outcome, StageContext
+from ..problem.errors import did_you_mean
+from ..problem.paths import design_problem
+from ..problem.sweep import expand_sweep
+from ..results.catalogue import catalogue, find
 from ..results.labels import Label
 from .sweep import SweepRun
 
@@ -56,15 +64,11 @@ class RunSweep(SweepRun):
 
 def kind_name(problem: Any) -> str:
     """The main table of a validated problem (``cam``, ``shaft_line``), for messages."""
-    from ..kinds import KINDS
-
     fields = getattr(type(problem), "model_fields", {})
     return next((t for t in fields if t in KINDS and getattr(problem, t, None) is not None), "problem")
 
 
 def _known(problem: Any) -> Any:
-    from ..optimise.per_design import KnownResults, capability_results, unit_of
-
     return KnownResults(sorted(capability_results(problem)), lambda key: unit_of(key, problem) is not None)
 
 
@@ -72,9 +76,6 @@ def check(problem: Any, table: Any) -> list[tuple[str, str]]:
     """Every mistake of a ``[sweep]`` run variant by variant, each with its path: keys of a linkage's sweep,
     the parameter and its values (unit, sign), too many variants, and columns that no table of the file
     reports."""
-    from ..problem.errors import did_you_mean
-    from ..problem.sweep import expand_sweep
-
     kind = kind_name(problem).replace("_", "-")
     problems: list[tuple[str, str]] = []
     for key, why in LINKAGE_ONLY.items():
@@ -115,8 +116,6 @@ def _first(problems: list[tuple[str, str]]) -> str:
 def _run_one(problem: Any, path: str, value: float, run_design: Any, asked: tuple[str, ...],
              row: dict[str, float]) -> str:
     """Run one variant, filling ``row`` with the values it reports; returns its status."""
-    from ..problem.paths import design_problem
-
     try:
         design = design_problem(problem, {path: value})
         values = run_design(design)
@@ -137,12 +136,6 @@ def _run_one(problem: Any, path: str, value: float, run_design: Any, asked: tupl
 def run_sweep(problem: Any, run_design: Any) -> RunSweep:
     """The variants of ``problem``'s ``[sweep]``, each run by ``run_design`` (a validated problem -> its results
     by key, SI): the columns asked for (NaN where a variant has no value), ``regular`` and ``status``."""
-    import time
-
-    from ..explore.execution import announce_estimate, current
-    from ..optimise.per_design import unit_of
-    from ..problem.sweep import expand_sweep
-
     if run_design is None:
         raise RuntimeError("a sweep run variant by variant needs a way to run a design (StageContext.run_design)")
     plan = expand_sweep(problem)
@@ -169,8 +162,6 @@ def run_sweep(problem: Any, run_design: Any) -> RunSweep:
 
 def column_label(key: str, unit: str) -> Label:
     """The catalogue's label of a result a file's table declares (``cam.max_pressure_angle``), in ``unit``."""
-    from ..results.catalogue import catalogue, find
-
     found = find(key, catalogue())
     if found is None:
         return Label(key, unit)

@@ -7,6 +7,7 @@ from typing import Any
 import numpy as np
 from markupsafe import escape
 
+from ..pipelines.sweep_runs import column_label
 from ..results.catalogue import label
 from ..results.labels import display_factor
 from . import plots
@@ -41,8 +42,6 @@ def _panel(key: str, columns: dict, units: dict) -> tuple[str, str, np.ndarray]:
     """(label, display unit, values in it) of a per-design result."""
     lab = label(key, units.get(key))
     if lab is None and units.get(key) is not None:  # a result a kind's or a capability's table declares
-        from ..pipelines.sweep_runs import column_label
-
         lab = column_label(key, units[key])
     text = lab.text if lab is not None else key
     unit = lab.shown_unit if lab is not None else units.get(key, "")
