@@ -16,6 +16,7 @@ from __future__ import annotations
 import json
 import math
 import os
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -195,12 +196,21 @@ def check_problem(problem: Any) -> list[str]:
     return kind(loaded.kind).check(loaded.spec, loaded.model)
 
 
-def design_results(problem: Any) -> dict[str, Any]:
+class DesignResults(dict):
+    """The results (SI, by key) of one design of a study, and the design checks its run failed."""
+
+    def __init__(self, values: Mapping[str, Any], failed_checks: tuple[str, ...] = ()) -> None:
+        super().__init__(values)
+        self.failed_checks = failed_checks
+
+
+def design_results(problem: Any) -> DesignResults:
     """The results (SI, by key) of one design of a study: its validated problem run as ``machdyn run`` would run
     it, but without the file's studies (``[sweep]``, ``[optimise]``), which would otherwise start again."""
     studies = {t: None for t in ("sweep", "optimise") if getattr(problem, t, None) is not None}
     plain = problem.model_copy(update=studies) if studies else problem
-    return dict(run_problem(plain).results.values)
+    done = run_problem(plain)
+    return DesignResults(done.results.values, tuple(done.failed_checks))
 
 
 def run_problem(problem: Any, *, text: str | None = None, step: Step = no_step) -> RunResult:

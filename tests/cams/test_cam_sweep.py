@@ -43,16 +43,21 @@ def test_each_column_of_the_sweep_is_what_a_run_of_that_variant_alone_reports(sw
     done = swept.outcomes["sweep"].results
     assert done.plan.parameter == "cam.base_radius"
     np.testing.assert_allclose(done.plan.values_display, np.linspace(20.0, 60.0, 9))
-    assert list(done.columns["status"]) == ["regular"] * 9
+    assert list(done.columns["regular"]) == [True] * 9
     nominal = NOMINAL.read_text(encoding="utf-8")
     for i, radius in enumerate(done.plan.values_display):
         alone = run_problem(nominal.replace('base_radius = "45 mm"', f'base_radius = "{radius:g} mm"'))
         assert alone.results["cam.base_radius"] == pytest.approx(radius * 1e-3, rel=1e-12)
+        # a variant whose run fails a design check says which, as its own run does; the others are regular
+        status = done.columns["status"][i]
+        assert status == (f"failed check: {alone.failed_checks[0]}" if alone.failed_checks else "regular")
         for key in COLUMNS:
             assert done.columns[key][i] == pytest.approx(alone.results[key], rel=1e-12), (radius, key)
     assert np.all(np.diff(done.columns["cam.max_pressure_angle"]) < 0)
     assert np.all(np.diff(done.columns["cam.max_normal_force"]) < 0)
     assert np.all(np.diff(done.columns["cam.min_pitch_curvature_radius"]) > 0)
+    # the pressure-angle limit of 30 deg is exceeded below a base radius of ~31 mm: the first three variants
+    assert [s.startswith("failed check: pressure angle") for s in done.columns["status"]] == [True] * 3 + [False] * 6
     # the nominal 45 mm cam is the sixth variant: the file's own run and its variant agree
     assert done.columns["cam.max_pressure_angle"][5] == pytest.approx(swept.results["cam.max_pressure_angle"],
                                                                       rel=1e-12)
@@ -134,7 +139,8 @@ def test_the_command_line_runs_the_example_and_writes_the_table(tmp_path):
                                    "cam.min_pitch_curvature_radius [m]", "cam.max_normal_force [N]", "regular",
                                    "status"]
     np.testing.assert_allclose(table["cam.base_radius [mm]"], np.linspace(20.0, 60.0, 9))
-    assert list(table["status"]) == ["regular"] * 9
+    assert list(table["regular"]) == [True] * 9
+    assert list(table["status"])[3:] == ["regular"] * 6 and table["status"][0].startswith("failed check")
     scalars = json.loads((out / "results.json").read_text())["scalars"]
     assert scalars["sweep.cam.max_pressure_angle"]["unit"] == "deg"
     np.testing.assert_allclose(scalars["sweep.cam.max_pressure_angle"]["value"],

@@ -45,6 +45,14 @@ MAX_VARIANTS = 1000
 
 #: The status of a variant that was built, ran and reported every column asked for.
 REGULAR = "regular"
+#: The status of a variant that ran whole and reported every column but failed one of its design checks (a
+#: motor overloaded, a pressure angle over its limit): its values are sound, the design is not acceptable.
+FAILED_CHECK = "failed check"
+
+
+def is_regular(status: str) -> bool:
+    """Whether a variant's values are sound: it was built, ran and reported every column (its checks aside)."""
+    return status == REGULAR or status.startswith(FAILED_CHECK)
 
 #: Keys of ``[sweep]`` that only a linkage's sweep understands, and why.
 LINKAGE_ONLY = {
@@ -130,7 +138,10 @@ def _run_one(problem: Any, path: str, value: float, run_design: Any, asked: tupl
             row[key] = float(v)
         else:
             missing.append(key)
-    return REGULAR if not missing else f"not reported: {', '.join(missing)}"
+    if missing:
+        return f"not reported: {', '.join(missing)}"
+    failed = getattr(values, "failed_checks", ())
+    return f"{FAILED_CHECK}: {failed[0]}" if failed else REGULAR
 
 
 def run_sweep(problem: Any, run_design: Any) -> RunSweep:
@@ -155,7 +166,7 @@ def run_sweep(problem: Any, run_design: Any) -> RunSweep:
         if progress is not None:
             progress(i + 1, n)
     units = {key: unit_of(key, problem) or "" for key in asked}
-    columns["regular"] = np.array([s == REGULAR for s in status], dtype=bool)
+    columns["regular"] = np.array([is_regular(s) for s in status], dtype=bool)
     columns["status"] = np.array(status, dtype=object)
     return RunSweep(plan, columns, units, asked=asked)
 
