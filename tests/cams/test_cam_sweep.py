@@ -196,3 +196,10 @@ def test_the_sweep_reports_its_progress_and_estimates_its_time(monkeypatch):
                                 'columns = ["cam.jump_speed"]\n'))
     assert moved == [(1, 3), (2, 3), (3, 3)]
     assert len(said) == 1 and said[0].startswith("3 variants of cam.speed, each run whole: about ")
+
+
+def test_workers_asked_for_a_sweep_run_variant_by_variant_are_said_to_be_unused(tmp_path):
+    """--workers spreads a linkage exploration; a cam sweep runs its variants in this process, and says so."""
+    ran = runner.invoke(app, ["run", str(EXAMPLE), "--out", str(tmp_path / "out"), "--workers", "2"])
+    assert ran.exit_code == 0, ran.output
+    assert "ran one after another in this process" in ran.output

@@ -214,6 +214,10 @@ def run(ctx: StageContext) -> Outcome:
     summary = ["sweep.designs", "sweep.regular_count"] + (listed if regular.size <= SUMMARY_VARIANTS else [])
     warnings = [f"sweep variant {i + 1} ({plan.parameter} = {plan.values_display[i]:.6g} {unit}) {status}"
                 for i, status in enumerate(values["sweep.status"]) if status != REGULAR]
+    settings = current()
+    if settings.workers is not None or settings.scheduler is not None:
+        warnings.append("--workers and --scheduler spread a linkage exploration's designs; the variants of this "
+                        f"sweep of {plan.parameter} ran one after another in this process.")
     if not regular.any():
         warnings.append(f"No variant of the sweep of {plan.parameter} was built, ran and reported every column "
                         "(see sweep.status).")
