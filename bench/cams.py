@@ -2,15 +2,15 @@
 ``Cam`` on the same cam, and designs per second for a population of cams.
 
 The cam: a cycloidal rise of 20 mm over 120 deg, a dwell to 180 deg, a cycloidal fall to 300 deg and a dwell, on a
-40 mm base circle with a radial knife edge (pylinkage's profile is the knife-edge radius R_b + s; its pressure
-angle is that of the cam surface r(theta)). Both compute the follower displacement and the pressure angle at 360
-cam angles; agreement is the largest difference of each. ``mechanism``'s ``Cam`` (PyPI ``mechanism``) computes
-S, V, A and J of its three laws at once at a constant speed (here 1 rev/s) and the knife-edge profile
-(R_b + s) e^(i theta); agreement is the largest difference of S, V, A and of the profile's radius. machdyn
-computes the profile, both radii of curvature and the checks besides. The population: N cams with random base
-radius, lift and rise angle, each analysed in full (profile, pressure angle, curvature, smallest base circles), one after the other; and N cams of one program shape
-with random base radius, roller, offset and lift analysed at once as arrays (``machdyn.cams.population``:
-pressure angle, curvature, smallest base circle).
+40 mm base circle with a radial knife edge (pylinkage's profile is the knife-edge radius R_b + s; its pressure angle
+is that of the cam surface r(theta)). Both compute the follower displacement and the pressure angle at 360 cam
+angles; agreement is the largest difference of each. ``mechanism``'s ``Cam`` (PyPI ``mechanism``) computes S, V, A
+and J of its three laws at once at a constant speed (here 1 rev/s) and the knife-edge profile (R_b + s) e^(i theta);
+agreement is the largest difference of S, V, A and of the profile's radius. machdyn computes the profile, both radii
+of curvature and the checks besides. The population: N cams with random base radius, lift and rise angle, each
+analysed in full (profile, pressure angle, curvature, smallest base circles), one after the other; and N cams of one
+program shape with random base radius, roller, offset and lift analysed at once as arrays
+(``machdyn.cams.population``: pressure angle, curvature, smallest base circle).
 
 Usage: ``python bench/cams.py [--quick] [--repeats N]``. The last line printed is one JSON object.
 """
