@@ -7,7 +7,8 @@ import importlib.util
 import numpy as np
 
 from ..errors import InputError
-from .fused_source import Unsupported, generate
+from .fused_generator import Unsupported
+from .fused_source import generate
 
 ENGINES = ("auto", "fused", "numpy")
 

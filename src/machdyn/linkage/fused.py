@@ -29,7 +29,8 @@ from ..errors import InputError, check_finite
 from .averages import angle_weights
 from .dyad_forms import scalar_forms
 from .engines import use_fused
-from .fused_source import KERNEL_BODY_FIELDS, SUMMARY_FIELDS, Generated, Unsupported, generate
+from .fused_generator import Unsupported
+from .fused_source import KERNEL_BODY_FIELDS, SUMMARY_FIELDS, Generated, generate
 from .model import joints
 from .motion import DyadReport, Kinematics, SlideMotion, kinematics_result
 from .reactions import Forces, Joint, Reaction

@@ -6,12 +6,8 @@ bodies. The forms are the NumPy engine's too: both engines compute one text, so 
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
+from .fused_generator import Generator
 from .refs import split_ref
-
-if TYPE_CHECKING:  # the generator calls the codes; they only use it
-    from .fused_source import Generator
 
 
 def _motion(point: dict[str, str]) -> list[str]:
@@ -203,3 +199,7 @@ def prp_code(gen: Generator, d) -> None:
         gen.couple_back(b2, f"{f}cb")
 
     gen.force_solvers.append(forces)
+
+
+#: Each dyad type's code, by its kind (``DyadType.kind``): the fused engine's half of a dyad's declaration.
+EMITTERS = {"RRR": rrr_code, "RRP": rrp_code, "RPR": rpr_code, "PRP": prp_code}

@@ -56,28 +56,28 @@ def sweep_section(parameter: str, unit: str, values: Any, columns: dict, units: 
     drawn, so the axes scale to them; the others are marked on the axis and their status is in the table.
     ``intro`` replaces the linkage sweep's opening paragraph."""
     regular = np.asarray(columns["regular"], dtype=bool)
-    panels = [_panel(k, columns, units) for k in panels if k in columns]
+    drawn = [_panel(k, columns, units) for k in panels if k in columns]
 
     def draw(fig):
-        rows = (len(panels) + 1) // 2
+        rows = (len(drawn) + 1) // 2
         axes = np.atleast_1d(fig.subplots(rows, 2)).ravel()
-        for ax, (name, u, data) in zip(axes, panels, strict=False):
+        for ax, (name, u, data) in zip(axes, drawn, strict=False):
             plots.plot_sweep(ax, values, data, parameter=parameter, parameter_unit=unit, quantity=name, unit=u,
                              regular=regular)
-        for ax in axes[len(panels):]:
+        for ax in axes[len(drawn):]:
             ax.set_visible(False)
 
     plot = ""
-    if panels:
-        figure = _render("sweep", "Design sweep", "", (9.0, 3.2 * ((len(panels) + 1) // 2)), draw,
+    if drawn:
+        figure = _render("sweep", "Design sweep", "", (9.0, 3.2 * ((len(drawn) + 1) // 2)), draw,
                          margins=(0.85, 0.25, 0.6, 0.4), wspace=0.35, hspace=0.55)
         plot = f"<figure class=\"plot\">{figure.svg}</figure>"
     head = "".join(f"<th>{escape(h)}</th>" for h in
-                   [f"{parameter} [{unit}]", "status"] + [f"{n} [{u}]" for n, u, _ in panels])
+                   [f"{parameter} [{unit}]", "status"] + [f"{n} [{u}]" for n, u, _ in drawn])
     rows = []
     for i, v in enumerate(np.asarray(values, dtype=float)):
         cells = [format_value(float(v)), str(columns["status"][i])]
-        cells += [format_value(float(data[i])) if np.isfinite(data[i]) else "–" for _, _, data in panels]
+        cells += [format_value(float(data[i])) if np.isfinite(data[i]) else "–" for _, _, data in drawn]
         rows.append("<tr>" + "".join(f"<td>{escape(c)}</td>" for c in cells) + "</tr>")
     shown = rows[:200]
     note = (f"<p>First 200 of {len(rows)} designs; all are in sweep.csv.</p>" if len(rows) > 200 else "")
