@@ -34,6 +34,7 @@ bench: $(BENCH_STAMP)
 	$(BIN)/python bench/synthesis.py
 	$(BIN)/python bench/cli.py
 	$(BIN)/python bench/cams.py
+	$(BIN)/python bench/walk.py
 
 lint: $(STAMP)
 	$(BIN)/ruff check src tests bench

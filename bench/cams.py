@@ -1,14 +1,16 @@
-"""Benchmark: cam analysis of 360 positions, machdyn against pylinkage's cam module on the same cam, and designs per
-second for a population of cams.
+"""Benchmark: cam analysis of 360 positions, machdyn against pylinkage's cam module and the ``mechanism`` package's
+``Cam`` on the same cam, and designs per second for a population of cams.
 
 The cam: a cycloidal rise of 20 mm over 120 deg, a dwell to 180 deg, a cycloidal fall to 300 deg and a dwell, on a
-40 mm base circle with a radial knife edge (pylinkage's profile is the knife-edge radius R_b + s; its pressure
-angle is that of the cam surface r(theta)). Both compute the follower displacement and the pressure angle at 360
-cam angles; agreement is the largest difference of each. machdyn computes the profile, both radii of curvature
-and the checks besides. The population: N cams with random base radius, lift and rise angle, each analysed in full
-(profile, pressure angle, curvature, smallest base circles), one after the other; and N cams of one program shape
-with random base radius, roller, offset and lift analysed at once as arrays (``machdyn.cams.population``:
-pressure angle, curvature, smallest base circle).
+40 mm base circle with a radial knife edge (pylinkage's profile is the knife-edge radius R_b + s; its pressure angle
+is that of the cam surface r(theta)). Both compute the follower displacement and the pressure angle at 360 cam
+angles; agreement is the largest difference of each. ``mechanism``'s ``Cam`` (PyPI ``mechanism``) computes S, V, A
+and J of its three laws at once at a constant speed (here 1 rev/s) and the knife-edge profile (R_b + s) e^(i theta);
+agreement is the largest difference of S, V, A and of the profile's radius. machdyn computes the profile, both radii
+of curvature and the checks besides. The population: N cams with random base radius, lift and rise angle, each
+analysed in full (profile, pressure angle, curvature, smallest base circles), one after the other; and N cams of one
+program shape with random base radius, roller, offset and lift analysed at once as arrays
+(``machdyn.cams.population``: pressure angle, curvature, smallest base circle).
 
 Usage: ``python bench/cams.py [--quick] [--repeats N]``. The last line printed is one JSON object.
 """
@@ -51,6 +53,18 @@ def _pylinkage(theta):
     s = np.array([cam.evaluate(float(t)) - BASE for t in theta])
     phi = np.array([cam.pressure_angle(float(t)) for t in theta])
     return s, phi
+
+
+def _mechanism(theta):
+    from mechanism import Cam
+
+    motion = [("rise", LIFT, math.degrees(RISE)), ("dwell", math.degrees(DWELL_END - RISE)),
+              ("fall", LIFT, math.degrees(FALL_END - DWELL_END)), ("dwell", math.degrees(2 * math.pi - FALL_END))]
+    cam = Cam(motion=motion, degrees=True, omega=2 * math.pi, h=theta[1] - theta[0])
+    motion = cam.cycloidal
+    x, y = motion.get_profile(BASE, cam.thetas_r)
+    n = theta.size  # np.arange(0, 2 pi, h) may hold one sample more than theta
+    return motion.S[:n], motion.V[:n], motion.A[:n], np.hypot(x, y)[:n]
 
 
 def _time(fn, repeats):
@@ -112,6 +126,18 @@ def main() -> None:
                                                                              - np.abs(ours.pressure_angle)))))}
     except ImportError:
         result["pylinkage"] = "not installed"
+    try:
+        (s_m, v_m, a_m, r_m), t_m = _time(lambda: _mechanism(theta), repeats)
+        v_ours, a_ours, _ = ours.svaj.per_second(2 * math.pi)
+        result |= {"mechanism_s": statistics.median(t_m),
+                   "mechanism_speed_ratio": statistics.median(t_m) / statistics.median(t_ours),
+                   "mechanism_displacement_agreement_m": float(np.max(np.abs(s_m - ours.svaj.s))),
+                   "mechanism_velocity_agreement_m_s": float(np.max(np.abs(v_m - v_ours))),
+                   "mechanism_acceleration_agreement_m_s2": float(np.max(np.abs(a_m - a_ours))),
+                   "mechanism_profile_radius_agreement_m": float(np.max(np.abs(
+                       r_m - np.hypot(ours.surface[0], ours.surface[1]))))}
+    except ImportError:
+        result["mechanism"] = "not installed"
     n = 50 if args.quick else 400
     rng = np.random.default_rng(1)
     t0 = time.perf_counter()

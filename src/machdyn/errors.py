@@ -18,6 +18,8 @@ The tree::
 
 from __future__ import annotations
 
+import numpy as np
+
 
 class MachdynError(Exception):
     """Base class of every error machdyn raises on purpose."""
@@ -69,8 +71,6 @@ class MachdynWarning(UserWarning):
 
 def check_finite(name: str, value, unit: str = "") -> None:
     """Raise :class:`InputError` if ``value`` (scalar or array) holds NaN or infinity."""
-    import numpy as np
-
     arr = np.asarray(value, dtype=float)
     if not np.all(np.isfinite(arr)):
         bad = arr[~np.isfinite(arr)].ravel()[0] if arr.ndim else arr
@@ -79,8 +79,6 @@ def check_finite(name: str, value, unit: str = "") -> None:
 
 def check_positive(name: str, value, unit: str = "", *, allow_zero: bool = False) -> None:
     """Raise :class:`InputError` unless every element of ``value`` is finite and > 0 (or >= 0)."""
-    import numpy as np
-
     check_finite(name, value, unit)
     arr = np.asarray(value, dtype=float)
     bad = arr < 0 if allow_zero else arr <= 0

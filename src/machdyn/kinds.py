@@ -11,6 +11,8 @@ from __future__ import annotations
 from functools import cache
 from typing import Any
 
+from pydantic import create_model
+
 from .pipeline import Capability, ProblemKind, import_object
 
 #: main table -> the :class:`~machdyn.pipeline.ProblemKind`
@@ -72,8 +74,6 @@ def capabilities_for(kind_name: str) -> tuple[Capability, ...]:
 @cache
 def problem_model(kind_name: str) -> Any:
     """The pydantic model of a whole file of the kind: its own tables plus an optional field per capability."""
-    from pydantic import create_model
-
     base = kind(kind_name).schema
     extra: dict[str, Any] = {c.table: (c.schema | None, None) for c in capabilities_for(kind_name)}
     if base is None or not extra:

@@ -7,13 +7,17 @@ journal and a lock, so that old and new files never mix.
 
 from __future__ import annotations
 
+import fcntl
 import json
 import math
 import os
+import shutil
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
 from typing import IO, Any
+
+from .errors import OperationalError
 
 
 def atomic_write(path: str | os.PathLike, write: Callable[[IO[str]], object], *, encoding: str = "utf-8") -> Path:
@@ -87,9 +91,6 @@ def acquire_lock(path: str | os.PathLike, what: str) -> None:
     """Hold the lock file ``path`` (created if missing) for this process; a second process asking for it gets
     :class:`~machdyn.errors.OperationalError` at once, naming the process that holds it. Re-entrant within a
     process (each acquire needs a :func:`release_lock`)."""
-    import fcntl
-
-    from .errors import OperationalError
 
     key = str(Path(path).resolve())
     if key in _HELD:
@@ -263,6 +264,4 @@ def _apply(out: Path, stage: Path) -> None:
 
 
 def _remove_tree(path: Path) -> None:
-    import shutil
-
     shutil.rmtree(path, ignore_errors=True)

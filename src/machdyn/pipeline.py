@@ -13,11 +13,13 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Any, TypeVar
+from importlib import import_module
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from pydantic import BaseModel
 
-from .results.labels import Label
+if TYPE_CHECKING:  # the results package reads the registry, which reads this module
+    from .results.labels import Label
 
 #: The type of an earlier stage's result that a capability reads (see :meth:`StageContext.result_of`).
 R = TypeVar("R")
@@ -167,7 +169,5 @@ class ProblemKind:
 
 def import_object(path: str) -> Any:
     """The object named by ``"package.module:name"``."""
-    from importlib import import_module
-
     module, _, name = path.partition(":")
     return getattr(import_module(module), name)

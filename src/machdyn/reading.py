@@ -16,6 +16,7 @@ from typing import Any
 from pydantic import ValidationError
 
 from .errors import ProblemFileError
+from .kinds import CAPABILITIES, KINDS, capabilities_for, kind, problem_model
 from .problem.errors import did_you_mean, problems_from
 from .problem.loader import parse_toml, read_text, top_level_problems
 
@@ -37,8 +38,6 @@ class LoadedProblem:
 def kind_of(data: dict[str, Any], source: str | None = None) -> str:
     """The kind of a parsed file: the one registered main table it has. A main table that is also a capability
     table (``[signals]``: records judged alone) names the kind only when no other main table is there."""
-    from .kinds import CAPABILITIES, KINDS
-
     found = [k for k in KINDS if k in data]
     if len(found) > 1:
         found = [k for k in found if k not in CAPABILITIES] or found
@@ -67,8 +66,6 @@ def kind_of(data: dict[str, Any], source: str | None = None) -> str:
 
 def validate(data: dict[str, Any], kind_name: str, source: str | None = None) -> tuple[Any, Any]:
     """(problem, model) of parsed tables of the given kind, or one ProblemFileError with every mistake."""
-    from .kinds import capabilities_for, kind, problem_model
-
     k = kind(kind_name)
     if k.validate is not None:
         spec = k.validate(data, source)

@@ -14,13 +14,19 @@ in SI with its label (:mod:`machdyn.results`), and write the outputs (:mod:`mach
 from __future__ import annotations
 
 import json
+import math
 import os
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from .errors import AssemblyError, InputError, ProblemFileError, SingularPositionError
+from . import __version__
+from .errors import AnalysisError, AssemblyError, InputError, ProblemFileError, SingularPositionError
+from .kinds import KINDS, capabilities_for, capability, kind
+from .outputs import OutputSet
 from .pipeline import Outcome, StageContext, Step, import_object, no_step
+from .problem.dumper import dump_problem
 from .reading import LoadedProblem, load_problem, read_problem
 from .results import Results, Summary, collect, summarise
 
@@ -99,8 +105,6 @@ class RunResult:
     def results_json(self) -> dict[str, Any]:
         """The content of results.json: the problem's name and kind, every scalar with its unit, the warnings
         and the failed design checks."""
-        from . import __version__
-
         return {
             "machdyn_version": __version__,
             "problem": self.title,
@@ -112,8 +116,6 @@ class RunResult:
 
     def report_sections(self) -> list[tuple[str, str]]:
         """(heading, html) of every stage's report sections, in the order the stages ran."""
-        from .kinds import capability, kind
-
         out: list[tuple[str, str]] = []
         for name, outcome in self.outcomes.items():
             stage = kind(self.kind) if name == self.kind else capability(name)
@@ -139,8 +141,6 @@ class RunResult:
         run leaves the previous set whole. With a ``watch_stamp`` (``machdyn watch``) the set also holds
         ``report.stamp.js``, which an open report polls to re-load itself. ``folders``: (new, target) folders
         swapped in with the set (an exploration's Parquet store). Returns the paths written."""
-        from .outputs import OutputSet
-
         outputs = OutputSet(out_dir)
         try:
             outputs.json("results.json", self.results_json())
@@ -167,8 +167,6 @@ def _loaded(problem: Any, text: str | None) -> LoadedProblem:
     if isinstance(problem, str | os.PathLike):
         loaded = read_problem(problem)
         return loaded if text is None else LoadedProblem(loaded.kind, loaded.spec, text, loaded.source, loaded.model)
-    from .kinds import KINDS, kind
-
     for name in KINDS:
         k = kind(name)
         if k.owns(problem):
@@ -182,14 +180,10 @@ def _loaded(problem: Any, text: str | None) -> LoadedProblem:
 
 
 def _dump(problem: Any) -> str:
-    from .problem.dumper import dump_problem
-
     return dump_problem(problem)
 
 
 def _tables(loaded: LoadedProblem) -> list[Any]:
-    from .kinds import capabilities_for
-
     return [c for c in capabilities_for(loaded.kind) if getattr(loaded.spec, c.table, None) is not None]
 
 
@@ -198,18 +192,25 @@ def check_problem(problem: Any) -> list[str]:
     for and each capability table's own checks pass. Returns warnings; raises
     :class:`~machdyn.errors.ProblemFileError` for bad input and the engine's errors for a linkage that cannot
     close or passes a dead position."""
-    from .kinds import kind
-
     loaded = _loaded(problem, None)
     return kind(loaded.kind).check(loaded.spec, loaded.model)
 
 
-def design_results(problem: Any) -> dict[str, Any]:
+class DesignResults(dict):
+    """The results (SI, by key) of one design of a study, and the design checks its run failed."""
+
+    def __init__(self, values: Mapping[str, Any], failed_checks: tuple[str, ...] = ()) -> None:
+        super().__init__(values)
+        self.failed_checks = failed_checks
+
+
+def design_results(problem: Any) -> DesignResults:
     """The results (SI, by key) of one design of a study: its validated problem run as ``machdyn run`` would run
     it, but without the file's studies (``[sweep]``, ``[optimise]``), which would otherwise start again."""
     studies = {t: None for t in ("sweep", "optimise") if getattr(problem, t, None) is not None}
     plain = problem.model_copy(update=studies) if studies else problem
-    return dict(run_problem(plain).results.values)
+    done = run_problem(plain)
+    return DesignResults(done.results.values, tuple(done.failed_checks))
 
 
 def run_problem(problem: Any, *, text: str | None = None, step: Step = no_step) -> RunResult:
@@ -217,8 +218,6 @@ def run_problem(problem: Any, *, text: str | None = None, step: Step = no_step) 
     :func:`~machdyn.reading.load_problem`. ``text`` is the problem file echoed in the report (by default the
     problem written back as TOML). Raises :class:`~machdyn.errors.ProblemFileError` for bad input and the
     engine's errors (:class:`~machdyn.errors.AssemblyError`, ...) when the linkage cannot close."""
-    from .kinds import capabilities_for, kind
-
     loaded = _loaded(problem, text)
     k = kind(loaded.kind)
     step("model")
@@ -266,8 +265,6 @@ def run_problem(problem: Any, *, text: str | None = None, step: Step = no_step) 
 def _refuse_non_finite(values: dict[str, Any]) -> None:
     """Never a silent NaN or infinity: an infinite result anywhere, or NaN where one value is expected (a list
     over design variants may hold NaN for a design that does not assemble), fails the run naming the results."""
-    import math
-
     bad = []
     for key, value in values.items():
         items = value if isinstance(value, list) else [value]
@@ -276,8 +273,6 @@ def _refuse_non_finite(values: dict[str, Any]) -> None:
                 bad.append(key)
                 break
     if bad:
-        from .errors import AnalysisError
-
         shown = ", ".join(bad[:6]) + (f" and {len(bad) - 6} more" if len(bad) > 6 else "")
         raise AnalysisError(f"the analysis produced non-finite results ({shown}): an input is far outside the "
                             "range of a real machine, or the mechanism is singular at a sampled position")

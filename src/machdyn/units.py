@@ -6,12 +6,14 @@ Units live at the boundary only: problem files and the command line say ``"45 mm
 
 from __future__ import annotations
 
+import unicodedata
 from functools import lru_cache
 from typing import Any
 
 import pint
 
 from .errors import InputError
+from .quantity_text import QuantitySyntaxError, parse
 
 ureg: pint.UnitRegistry = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
 ureg.formatter.default_format = "~P"
@@ -56,8 +58,6 @@ MAX_MAGNITUDE = 1e12
 def _invisible(text: str) -> str | None:
     """The first control or formatting character of ``text`` (a right-to-left override, a zero-width
     space ...) written as U+XXXX, or None: such characters make a value read differently from what it is."""
-    import unicodedata
-
     for ch in text:
         if unicodedata.category(ch) in ("Cc", "Cf") and ch not in " \t":
             return f"U+{ord(ch):04X}"
@@ -169,8 +169,6 @@ def quantity_of_text(text: str, *, field: str = "value") -> pint.Quantity:
         ...
     machdyn.errors.InputError: The value is not a quantity with a unit; got '10**6 N' (a number may not be ...
     """
-    from .quantity_text import QuantitySyntaxError, parse
-
     try:
         magnitude, factors = parse(text)
     except QuantitySyntaxError as exc:
@@ -198,8 +196,6 @@ def unit_of_text(text: str, *, field: str = "unit") -> pint.Unit:
     >>> unit_of_text("kg*m^2") == ureg.kilogram * ureg.metre**2
     True
     """
-    from .quantity_text import QuantitySyntaxError, parse
-
     try:
         magnitude, factors = parse(text) if text.strip() else (1.0, ())
     except QuantitySyntaxError as exc:

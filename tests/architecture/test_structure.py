@@ -15,48 +15,60 @@ def _module_name(path: Path) -> str:
     return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
 
 
-#: Modules that are loaded inside a function on purpose: the compiled engine, which needs numba and is imported
-#: only when asked for; the dispatch to it from the NumPy engine is not a dependency of substance.
-OPTIONAL_BACKENDS = ("machdyn.linkage.fused",)
+MODULES = {_module_name(p): p for p in SRC.rglob("*.py")}
 
 
-def _imports(path: Path) -> set[str]:
-    """The machdyn modules a module imports, at any level (inside functions too), except for type checking and
-    the lazy loading of an optional backend."""
+def _targets(node: ast.ImportFrom | ast.Import, package: str) -> set[str]:
+    """The machdyn modules an import statement loads: ``from .pkg import mod`` is the module ``pkg.mod`` (its
+    package is already being imported), ``from .mod import name`` the module ``mod``."""
+    if isinstance(node, ast.Import):
+        return {a.name for a in node.names if a.name.startswith("machdyn")}
+    if node.level:
+        base = package.split(".")
+        base = base[: len(base) - (node.level - 1)]
+        target = ".".join(base + ([node.module] if node.module else []))
+    else:
+        target = node.module or ""
+    if not target.startswith("machdyn"):
+        return set()
+    modules = {f"{target}.{a.name}" for a in node.names if f"{target}.{a.name}" in MODULES}
+    names = [a for a in node.names if f"{target}.{a.name}" not in MODULES]
+    return modules | ({target} if names else set())
+
+
+def _import_nodes(path: Path):
+    """(import node, made at module level?) of every import outside ``if TYPE_CHECKING:`` blocks."""
     tree = ast.parse(path.read_text(encoding="utf-8"))
-    package = _module_name(path) if path.name == "__init__.py" else _module_name(path).rsplit(".", 1)[0]
-    found: set[str] = set()
     skip: set[int] = set()
     for node in ast.walk(tree):
         if isinstance(node, ast.If) and "TYPE_CHECKING" in ast.unparse(node.test):
             skip.update(id(n) for n in ast.walk(node))
     top = {id(n) for n in tree.body}
     for node in ast.walk(tree):
-        if id(node) in skip:
-            continue
-        if isinstance(node, ast.Import):
-            found.update(a.name for a in node.names if a.name.startswith("machdyn"))
-        elif isinstance(node, ast.ImportFrom):
-            if node.level:
-                base = package.split(".")
-                base = base[: len(base) - (node.level - 1)]
-                target = ".".join(base + ([node.module] if node.module else []))
-            else:
-                target = node.module or ""
-            if id(node) not in top and target.startswith(OPTIONAL_BACKENDS):
-                continue
-            if target.startswith("machdyn"):
-                found.add(target)
-                found.update(f"{target}.{a.name}" for a in node.names)
-    return found
+        if isinstance(node, ast.Import | ast.ImportFrom) and id(node) not in skip:
+            yield node, id(node) in top
+
+
+def _package(name: str, path: Path) -> str:
+    return name if path.name == "__init__.py" else name.rsplit(".", 1)[0]
+
+
+def _imports(path: Path) -> set[str]:
+    """The machdyn modules a module imports, at any level (inside functions too), except for type checking."""
+    name = _module_name(path)
+    return {t for node, _ in _import_nodes(path) for t in _targets(node, _package(name, path))}
+
+
+def _with_packages(target: str, importer: str) -> set[str]:
+    """A module and the packages whose ``__init__`` runs before it, except the importer's own (already running)."""
+    parts = target.split(".")
+    found = {".".join(parts[:i]) for i in range(2, len(parts) + 1)}
+    return {m for m in found if m == target or not importer.startswith(m + ".")}
 
 
 def _graph() -> dict[str, set[str]]:
-    modules = {_module_name(p): p for p in SRC.rglob("*.py")}
-    graph = {}
-    for name, path in modules.items():
-        graph[name] = {m for m in _imports(path) if m in modules and m != name}
-    return graph
+    return {name: {m for t in _imports(path) for m in _with_packages(t, name) if m in MODULES and m != name}
+            for name, path in MODULES.items()}
 
 
 def _cycles(graph: dict[str, set[str]]) -> list[list[str]]:
@@ -97,13 +109,8 @@ def _cycles(graph: dict[str, set[str]]) -> list[list[str]]:
 
 
 def test_no_import_cycles():
-    graph = _graph()
-    # A package's __init__ re-exports its modules; a module importing a sibling through the package is the
-    # same edge, so edges into a package's own __init__ from inside it are not cycles of substance.
-    for name in graph:
-        graph[name] = {m for m in graph[name] if not (name.startswith(m + ".") and (SRC.parent / Path(
-            *m.split("."))).is_dir())}
-    assert _cycles(graph) == []
+    """Counting the imports made inside functions: no module reaches itself, packages included."""
+    assert _cycles(_graph()) == []
 
 
 def test_modules_are_small():
@@ -124,3 +131,65 @@ def test_only_the_report_imports_matplotlib():
             continue
         text = path.read_text(encoding="utf-8")
         assert "import matplotlib" not in text and "from matplotlib" not in text, path
+
+
+#: The libraries, by exact module name, that a module may import inside a function: optional or heavy ones that
+#: only some runs need (numba compiles, Dask distributes, pymoo searches several objectives, scipy solves,
+#: matplotlib draws, pandas and pyarrow write tables). Everything else is imported at the top of a module.
+LAZY_LIBRARIES = frozenset({
+    "numba", "dask", "distributed", "distributed.comm", "distributed.comm.core", "distributed.scheduler",
+    "pymoo.algorithms.moo.nsga2", "pymoo.core.callback", "pymoo.core.problem", "pymoo.indicators.hv",
+    "pymoo.optimize", "scipy.integrate", "scipy.interpolate", "scipy.linalg", "scipy.optimize", "scipy.signal",
+    "scipy.stats", "matplotlib.figure", "matplotlib.pyplot", "matplotlib.ticker", "pandas", "pyarrow",
+    "pyarrow.parquet",
+})
+#: machdyn's own modules that load one of those libraries when imported: the report (matplotlib, pandas),
+#: loaded inside the function that writes one so that ``machdyn check`` never draws.
+LAZY_MODULES = frozenset({"machdyn.report", "machdyn.report.tables"})
+#: Modules that defer their imports for start-up: the command line (``machdyn --version`` loads neither numpy
+#: nor the analyses) and the package's lazy re-exports.
+START_UP = frozenset({"machdyn", "machdyn.cli"})
+HEAVY = ("numba", "dask", "distributed", "pymoo", "scipy", "matplotlib", "pandas", "pyarrow")
+
+
+def _loads_heavy_library(module: str, seen: set[str]) -> bool:
+    """Whether importing ``module`` imports a heavy library, through its module-level imports."""
+    if module in seen:
+        return False
+    seen.add(module)
+    path = MODULES[module]
+    for node, top in _import_nodes(path):
+        if not top:
+            continue
+        names = [a.name for a in node.names] if isinstance(node, ast.Import) else [node.module or ""]
+        if node.__class__ is ast.ImportFrom and node.level == 0 and names[0].split(".")[0] in HEAVY:
+            return True
+        if isinstance(node, ast.Import) and any(n.split(".")[0] in HEAVY for n in names):
+            return True
+        inner = {m for t in _targets(node, _package(module, path)) for m in _with_packages(t, module)}
+        if any(_loads_heavy_library(m, seen) for m in inner if m in MODULES):
+            return True
+    return False
+
+
+def test_imports_inside_functions_only_for_heavy_libraries():
+    found: dict[str, set[str]] = {}
+    for name, path in MODULES.items():
+        if name in START_UP:
+            continue
+        for node, top in _import_nodes(path):
+            if top:
+                continue
+            if isinstance(node, ast.Import):
+                targets = {a.name for a in node.names}
+            elif node.level == 0 and not (node.module or "").startswith("machdyn"):
+                targets = {node.module or ""}
+            else:
+                targets = _targets(node, _package(name, path))
+            for target in targets - LAZY_LIBRARIES - LAZY_MODULES:
+                found.setdefault(name, set()).add(target)
+    assert found == {}, "import these at the top of the module (or list a heavy library by name)"
+
+
+def test_lazily_loaded_modules_do_load_a_heavy_library():
+    assert {m for m in LAZY_MODULES if not _loads_heavy_library(m, set())} == set()

@@ -15,7 +15,8 @@ from typer.testing import CliRunner
 
 from machdyn.cli import app
 from machdyn.drivetrain.clutch import engage
-from machdyn.drivetrain.single_stroke import single_stroke
+from machdyn.drivetrain.single_stroke import single_stroke, single_stroke_duty
+from machdyn.dynamics.drives import InductionMotor
 from machdyn.errors import InputError
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "crank_press_drive.toml"
@@ -114,7 +115,7 @@ def test_the_press_example_reports_its_single_stroke_and_writes_its_time_history
 
     history = pd.read_csv(tmp_path / "single_stroke.csv")
     assert [c.split(" [")[0] for c in history.columns] == ["time", "crank_angle", "crank_speed", "drive_side_speed",
-                                                            "clutch_torque"]
+                                                            "clutch_torque", "motor_torque"]
     assert history["time [s]"].is_monotonic_increasing
     assert history["clutch_torque [N*m]"].abs().max() > 0
 
@@ -126,3 +127,72 @@ def test_a_stroke_rate_the_drive_cannot_reach_is_a_failed_check(tmp_path):
     result = CliRunner().invoke(app, ["run", str(path), "--out", str(tmp_path / "out")])
     assert result.exit_code == 3, result.output
     assert "strokes a minute" in result.output and "clutch.strokes_per_minute = 45" in result.output
+
+
+def _pressing(motor, speed=24.0, drive_inertia=30.0):
+    return single_stroke(_Machine(1.2, a=0.3, load=800.0, window=(4.0, 4.6)), motor, drive_inertia=drive_inertia,
+                         driven_inertia=0.2, speed=speed, slip_torque=900.0, brake_torque=600.0, start_angle=0.0)
+
+
+def test_the_motor_rms_of_a_constant_torque_drive_is_that_torque():
+    k = _pressing(lambda _w: 55.0)
+    assert k.motor_rms() == pytest.approx(55.0, rel=1e-12)
+    assert k.motor_rms(3 * (k.stroke_time + k.recovery_time)) == pytest.approx(55.0, rel=1e-12)
+
+
+def test_the_motor_rms_over_a_period_is_the_mean_square_of_the_stroke_and_the_idling():
+    """RMS over the stroke and recovery, checked on the time history resampled at 1 ms (trapezoid, second order:
+    1e-3), and for a longer period the identity rms(P)^2 P = rms(busy)^2 busy + T_idle^2 (P - busy) exactly."""
+    k = _pressing(lambda w: 60.0 * (25.0 - w))
+    busy = k.stroke_time + k.recovery_time
+    grid = np.linspace(0.0, busy, int(busy / 1e-3) + 1)
+    torque = np.interp(grid, k.t, k.motor_torque)
+    assert k.motor_rms() == pytest.approx(np.sqrt(np.trapezoid(torque**2, grid) / busy), rel=1e-3)
+    assert k.idle_torque == pytest.approx(60.0, rel=1e-12)
+    period = 2.5 * busy
+    assert k.motor_rms(period) ** 2 * period == pytest.approx(k.motor_rms() ** 2 * busy + 60.0**2 * (period - busy),
+                                                              rel=1e-9)
+    with pytest.raises(InputError, match="shorter"):
+        k.motor_rms(0.5 * busy)
+
+
+def test_the_motor_torque_history_carries_the_motor_work():
+    """The motor's work over the stroke is the integral of its torque times the driving side's speed (the
+    history's own columns, same trapezoid)."""
+    k = _pressing(lambda w: 60.0 * (25.0 - w))
+    upto = k.t <= k.stroke_time
+    assert np.trapezoid((k.motor_torque * k.omega_drive)[upto], k.t[upto]) == pytest.approx(k.motor_work, rel=1e-12)
+
+
+def test_a_motor_too_small_for_repeated_strokes_is_overloaded_by_name():
+    """The same stroke, an induction motor of 0.2 kW at 1440/1500 rpm through a 6.5:1 drive: its rated torque at
+    the crank, 0.2e3/(1440 rpm) x 6.5 = 8.6 N*m, against the RMS over strokes back to back. A flywheel of 8 kg*m^2
+    gives up 480 J per stroke at a speed drop of ~25 %, far past the motor's 4 % rated slip: it recovers near its
+    breakdown torque, overloaded."""
+    motor = InductionMotor(rated_power=200.0, rated_speed=1440 * np.pi / 30, synchronous_speed=1500 * np.pi / 30,
+                           ratio=6.5)
+    rated = 200.0 / (1440 * np.pi / 30) * 6.5
+    k = _pressing(lambda w: np.ravel(motor.torque_at(w))[0], speed=1500 * np.pi / 30 / 6.5, drive_inertia=8.0)
+    duty = single_stroke_duty(k, motor, strokes_per_minute=None)
+    assert duty.rated == pytest.approx(rated, rel=1e-12)
+    assert duty.load_rms == pytest.approx(k.motor_rms(), rel=1e-12)
+    assert duty.load_ratio > 1.0
+    assert "overloaded" in duty.overload()[0]
+    # slower strokes leave the motor idling between them: a lower RMS
+    slow = single_stroke_duty(k, motor, strokes_per_minute=0.25 * 60.0 / (k.stroke_time + k.recovery_time))
+    assert slow.load_rms < duty.load_rms
+
+
+def test_the_press_example_reports_the_motor_duty_of_its_single_strokes(tmp_path):
+    result = CliRunner().invoke(app, ["run", str(EXAMPLE), "--out", str(tmp_path)])
+    assert result.exit_code == 0, result.output
+    import json
+
+    scalars = json.loads((tmp_path / "results.json").read_text())["scalars"]
+    load = scalars["single_stroke.motor_load"]["value"]
+    assert 0.0 < load < 1.0
+    # the example's motor runs in S1, where the torque allowed while loaded is the rated torque
+    rated = scalars["flywheel.motor_duty_rated_torque"]["value"]
+    assert scalars["single_stroke.motor_rms_torque"]["value"] == pytest.approx(load * rated, rel=1e-9)
+    # strokes at 20 a minute leave the motor idling: less loaded than running the press continuously
+    assert load < scalars["flywheel.motor_rms_load"]["value"]

@@ -31,7 +31,7 @@ from machdyn.linkage import (
     sweep,
 )
 from machdyn.linkage.engines import available
-from machdyn.linkage.kinematics import singular
+from machdyn.linkage.motion import singular
 
 from .test_properties import SETTINGS, base_mechanisms, good_angles, mechanisms
 

@@ -31,6 +31,9 @@ import numpy as np
 
 from ..errors import AnalysisError, InputError, ProblemFileError
 from ..linkage import Mechanism, kinematics
+from ..problem.build import build_mechanism
+from ..problem.fields import FieldError, to_si
+from ..problem.paths import assign, quantity_unit
 from .berkof_lowen import berkof_lowen, four_bar_masses
 from .counterweights import crank_counterweight, slider_crank_masses, tradeoff_curve
 from .frame import cycle
@@ -73,9 +76,6 @@ def slots(table: Any) -> list[Any]:
 
 def state_problems(problem: Any, table: Any) -> list[tuple[Any, Any]]:
     """(state spec, varied problem) for each ``[[balance.states]]``; every mistake at once with its path."""
-    from ..problem.fields import FieldError, to_si
-    from ..problem.paths import assign, quantity_unit
-
     out, problems = [], []
     for i, state in enumerate(table.states):
         varied = problem
@@ -94,8 +94,6 @@ def state_problems(problem: Any, table: Any) -> list[tuple[Any, Any]]:
 
 def operating_states(problem: Any, table: Any) -> list[OperatingState]:
     """The operating states of ``[[balance.states]]``, each mechanism built; every mistake at once."""
-    from ..problem.build import build_mechanism
-
     states, problems = [], []
     for i, (spec, varied) in enumerate(state_problems(problem, table)):
         try:

@@ -26,12 +26,15 @@ import numpy as np
 from pydantic import Field, model_validator
 
 from ..errors import InputError, ProblemFileError
+from ..linkage import kinematics
 from ..pipeline import Capability, Outcome, StageContext
+from ..problem.build import build_mechanism
 from ..problem.fields import Angle, AngularVelocity, Mass, NonNegativeLength, Point, PositiveLength, Stiffness
 from ..problem.schema import Spec
 from ..results.labels import Label
 from .frame import BalanceRun, cycle
 from .methods import METHODS, balance, method_fits, operating_states
+from .robust import RobustResult
 
 __all__ = ["BalanceSpec", "BalanceRun", "run", "check", "CAPABILITY", "LABELS"]
 
@@ -162,8 +165,6 @@ def check(problem: Any, table: BalanceSpec, source: str | None = None) -> list[t
     """Validations that need the model, so that ``check`` and ``run`` agree: the method fits the linkage, the
     bodies, points and masses named exist, closed-form counterweights on pivoted bodies have a radius, a spring
     never has zero length, and every operating state builds and assembles over the whole turn."""
-    from ..problem.build import build_mechanism
-
     try:
         mech = build_mechanism(problem)
     except (ProblemFileError, InputError):
@@ -193,8 +194,6 @@ def check(problem: Any, table: BalanceSpec, source: str | None = None) -> list[t
         states = operating_states(problem, table)
     except ProblemFileError as exc:
         return found + list(exc.problems)
-    from ..linkage import kinematics
-
     for i, state in enumerate(states):
         try:
             kinematics(state.mechanism, cycle(table.positions), state.speed, 0.0, on_fail="raise")
@@ -222,8 +221,6 @@ def run(ctx: StageContext) -> Outcome:
 
 
 def _outcome(done: BalanceRun) -> Outcome:
-    from .robust import RobustResult
-
     r = done.result
     warnings = [n for n in getattr(r, "notes", ()) if "did not converge" in n]
     if isinstance(r, RobustResult):

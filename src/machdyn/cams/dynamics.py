@@ -35,7 +35,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import InputError, check_positive
+from ..dynamics.equivalent import EquivalentMachine
+from ..dynamics.tables import PeriodicCurve
+from ..errors import AnalysisError, InputError, check_positive
 from .program import SVAJ, Program
 
 
@@ -227,8 +229,6 @@ def simulate_follower(prog: Program, train: FollowerTrain, spring: Spring, speed
     sol = solve_ivp(rhs, (0.0, turns * period), np.array([s0 - static, v0]), method="RK45", t_eval=t_eval,
                     max_step=period / 1000.0, rtol=1e-7, atol=1e-10 * max(prog.stroke, 1e-6))
     if not sol.success:
-        from ..errors import AnalysisError
-
         raise AnalysisError(f"the follower simulation failed: {sol.message}")
     th = speed * sol.t
     m = prog.svaj(th)
@@ -243,9 +243,6 @@ def cam_machine(prog: Program, train: FollowerTrain, spring: Spring, positions: 
     """The cam as an :class:`~machdyn.dynamics.equivalent.EquivalentMachine` (module docstring): reduced inertia
     J_cam + m v^2, potential of the spring and load, reduced damping c v^2, each with its exact slope; over the
     shaft angle phi = theta - ``phase`` [rad] (a cam mounted ``phase`` ahead on a crank shaft)."""
-    from ..dynamics.equivalent import EquivalentMachine
-    from ..dynamics.tables import PeriodicCurve
-
     if int(positions) != positions or positions < 16:
         raise InputError(f"The number of cam positions must be an integer >= 16; got {positions!r}.")
     th = np.arange(int(positions)) * (2.0 * np.pi / int(positions))

@@ -52,9 +52,11 @@ from ..dynamics.equivalent import EquivalentMachine
 from ..dynamics.tables import FourierCurve, PeriodicCurve
 from ..errors import InputError, ProblemFileError
 from ..linkage.energy import Energy, energy
-from ..linkage.kinematics import Kinematics, angle_ranges, format_ranges, kinematics, singular
-from ..linkage.kinetostatics import Forces, kinetostatics
+from ..linkage.kinematics import kinematics
+from ..linkage.kinetostatics import kinetostatics
 from ..linkage.model import Mechanism
+from ..linkage.motion import Kinematics, angle_ranges, format_ranges, singular
+from ..linkage.reactions import Forces
 from ..problem.build import build_mechanism
 from ..problem.errors import did_you_mean
 from ..problem.schema import (

@@ -17,9 +17,12 @@ from typing import Any
 
 import numpy as np
 
+from ..dynamics.equivalent import EquivalentMachine
+from ..dynamics.tables import PeriodicCurve
 from ..errors import ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext, no_step
 from ..results.labels import Label
+from .dynamics import cam_forces, cam_machine
 from .schema import CamBody, CamProblem, CamSpec, ShaftCamTable
 from .stage import LABELS, CamResult, analyse, build
 from .stage import check as check_kind
@@ -60,8 +63,6 @@ def check(problem: Any, table: ShaftCamTable, source: str | None) -> list[tuple[
 
 
 def run(ctx: StageContext) -> Outcome:
-    from .dynamics import cam_forces
-
     table: ShaftCamTable = ctx.table
     cp, model, problems = _problems(ctx.problem, table)
     if problems:
@@ -100,10 +101,6 @@ def run(ctx: StageContext) -> Outcome:
 def with_shaft_cam(machine: Any, cam_result: CamResult, phase: float, positions: int) -> Any:
     """The linkage's equivalent machine with the shaft cam's reduced inertia, potential and damping added (module
     docstring); the linkage's external moment and speed-dependent forces kept."""
-    from ..dynamics.equivalent import EquivalentMachine
-    from ..dynamics.tables import PeriodicCurve
-    from .dynamics import cam_machine
-
     r = cam_result
     cam = cam_machine(r.model.program, r.model.train, r.spring, positions, phase=phase)
     phi = np.arange(int(positions)) * (2.0 * np.pi / int(positions))

@@ -4,7 +4,7 @@ with its labels, summary, CSV series (``cam_svaj``, ``cam_profile``, ``cam_force
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -12,6 +12,12 @@ import numpy as np
 from ..errors import InputError, ProblemFileError
 from ..pipeline import Outcome, ProblemKind, Step
 from ..results.labels import Label
+from .checks import check_cam
+from .dxf import profile_dxf
+from .dynamics import FollowerTrain, Spring, cam_forces, cam_machine, simulate_follower, size_spring
+from .followers import Follower
+from .profile import cam_angles, profile
+from .program import Segment, program
 from .schema import CamProblem
 
 #: result key -> (text, SI unit for a translating follower, display) ; oscillating followers' lengths are angles
@@ -87,8 +93,6 @@ class CamResult:
     def machine(self, positions: int = 720):
         """The cam machine reduced to the camshaft (:func:`~machdyn.cams.dynamics.cam_machine`); a camshaft of
         constant inertia (zero without ``[cam.dynamics]``) otherwise."""
-        from .dynamics import FollowerTrain, Spring, cam_machine
-
         m = self.model
         train = m.train if m.train is not None else FollowerTrain(mass=1e-300)
         spring = self.spring if self.spring is not None else Spring(0.0, 0.0)
@@ -96,8 +100,6 @@ class CamResult:
 
 
 def _segments(problem: CamProblem, problems: list[tuple[str, str]]):
-    from .program import Segment
-
     osc = problem.cam.follower.motion == "oscillating"
     out = []
     for i, s in enumerate(problem.cam.segments):
@@ -123,11 +125,6 @@ def _field(message: str, default: str) -> str:
 
 def build(problem: CamProblem) -> tuple[CamModel | None, list[tuple[str, str]]]:
     """The model, or the problems found, each with its field."""
-    from .dynamics import FollowerTrain
-    from .followers import Follower
-    from .profile import cam_angles, profile
-    from .program import program
-
     problems: list[tuple[str, str]] = []
     cam = problem.cam
     segs = _segments(problem, problems)
@@ -181,9 +178,6 @@ def build(problem: CamProblem) -> tuple[CamModel | None, list[tuple[str, str]]]:
 
 
 def _spring(problem: CamProblem, model: CamModel):
-    from dataclasses import replace
-
-    from .dynamics import size_spring
 
     s = problem.cam.spring
     arm = model.arm
@@ -205,9 +199,6 @@ def check(problem: CamProblem, model: CamModel | None) -> list[str]:
 
 
 def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
-    from .checks import check_cam
-    from .dynamics import cam_forces, simulate_follower
-
     step("profile and checks")
     cam = problem.cam
     prof = model.profile
@@ -309,8 +300,6 @@ def _series(r: CamResult, osc: bool) -> dict[str, Any]:
 def _files(problem: CamProblem, prof: Any) -> dict[str, str]:
     if not problem.cam.output.dxf:
         return {}
-    from .dxf import profile_dxf
-
     curves = {"CAM": prof.surface}
     if prof.follower.contact == "roller":
         curves["PITCH"] = prof.pitch

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from ..results.labels import display_factor
 from .core import (  # noqa: F401 - re-exported: the seed's screw-core formulas
     screw_axial_from_pressure,
     screw_axial_from_torque,
@@ -56,8 +57,6 @@ class Check:
         unit = self.display or self.unit
         if unit == self.unit:
             return self.value, self.limit, unit
-        from ..results.labels import display_factor
-
         f = display_factor(self.unit, unit)
         return self.value * f, self.limit * f, unit
 

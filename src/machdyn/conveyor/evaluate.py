@@ -7,6 +7,7 @@ base-bolt checks from :mod:`.checks`.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -18,8 +19,10 @@ from ..errors import InputError
 from . import checks as ck
 from . import power as pw
 from . import tables
+from .beam import span_bending
 from .design import ScrewDesign, design_screw, volume_capacity
 from .model import ConveyorProblem
+from .optimise import best_design
 from .screw import CHECKS, screw_states
 
 
@@ -108,8 +111,6 @@ def evaluate(problem: ConveyorProblem, *, bending: bool = True) -> ConveyorResul
     """
     p = problem
     if p.search is not None:
-        from .optimise import best_design
-
         ranking = best_design(p)
         chosen = ranking.best
         p = p.replace(diameter=chosen["diameter"], speed=chosen["speed"], pitch_ratio=chosen["pitch_ratio"],
@@ -166,8 +167,6 @@ def evaluate(problem: ConveyorProblem, *, bending: bool = True) -> ConveyorResul
                          f"inputs (lengths, throughput, speed, moduli).")
     span = None
     if bending:
-        from .beam import span_bending
-
         span = span_bending(p, st)
         scalars.update(span.scalars())
     return ConveyorResult(problem=p, design=design, powers=powers, selected_method=p.power_method, scalars=scalars,
@@ -175,8 +174,6 @@ def evaluate(problem: ConveyorProblem, *, bending: bool = True) -> ConveyorResul
 
 
 def _with(result: ConveyorResult, **changes: Any) -> ConveyorResult:
-    import dataclasses
-
     return dataclasses.replace(result, **changes)
 
 

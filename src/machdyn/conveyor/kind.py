@@ -14,7 +14,9 @@ from __future__ import annotations
 from typing import Any
 
 from ..errors import InputError, ProblemFileError
-from .labels import SUMMARY, label_of
+from ..pipeline import Outcome, ProblemKind
+from .evaluate import evaluate
+from .labels import LABELS, SUMMARY, label_of
 from .model import ConveyorProblem
 from .schema import ConveyorFile, build, validate
 
@@ -22,8 +24,6 @@ __all__ = ["check", "run", "validate"]
 
 
 def _analyse(problem: ConveyorProblem) -> Any:
-    from .evaluate import evaluate
-
     try:
         return evaluate(problem)
     except InputError as exc:
@@ -40,8 +40,6 @@ def check(problem: ConveyorProblem) -> list[str]:
 
 def run(problem: ConveyorProblem, step: Any = None) -> Any:
     """Analyse the conveyor and return the stage's :class:`~machdyn.pipeline.Outcome` (SI scalars)."""
-    from ..pipeline import Outcome
-
     if step is not None:
         step("design")
     result = _analyse(problem)
@@ -65,9 +63,6 @@ def _title(spec: ConveyorFile) -> str:
 
 
 def _kind() -> Any:
-    from ..pipeline import ProblemKind
-    from .labels import LABELS
-
     return ProblemKind(
         name="screw_conveyor", schema=ConveyorFile, build=build,
         check=lambda _spec, problem: check(problem), analyse=lambda _spec, problem, step: run(problem, step),

@@ -5,6 +5,8 @@ Made by :func:`machdyn.conveyor.schema.validate` from a problem file, or directl
 
 from __future__ import annotations
 
+import dataclasses
+import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -111,12 +113,8 @@ class ConveyorProblem:
     @property
     def lift_height(self) -> float:
         """The lift H [m]: given directly, or L·sin β."""
-        import math
-
         return self.lift if self.lift is not None else self.length * math.sin(self.inclination)
 
     def replace(self, **changes: Any) -> ConveyorProblem:
         """A copy with some fields changed."""
-        import dataclasses
-
         return dataclasses.replace(self, **changes)

@@ -6,9 +6,11 @@ New code uses :mod:`machdyn.conveyor.kind` (``validate``, ``check``, ``run``) an
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from typing import Any
 
+from ..results.labels import display_factor
 from .evaluate import ConveyorResult, evaluate
 from .labels import label_of
 from .model import ConveyorProblem
@@ -54,8 +56,6 @@ class ConveyorRun:
 
     def summary_rows(self) -> list[tuple[str, str, str]]:
         """(quantity, value, unit) rows in display units."""
-        from ..results.labels import display_factor
-
         rows = []
         for key, value in self.result.scalars.items():
             lab = label_of(key)
@@ -66,8 +66,6 @@ class ConveyorRun:
     @property
     def checks(self) -> tuple[Any, ...]:
         """The checks in their display units (kW, MPa, mm, rpm), as the first releases showed them."""
-        import dataclasses
-
         out = []
         for c in self.result.checks:
             value, limit, unit = c.shown()

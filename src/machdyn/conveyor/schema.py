@@ -22,7 +22,9 @@ from ..problem import fields as qf
 from ..problem.errors import did_you_mean
 from ..problem.fields import FieldError, Unit, to_si
 from ..problem.schema import Meta, Spec
+from ..reading import validate as validate_file
 from . import tables
+from .evaluate import choose_screw
 from .model import BaseBolts, ConveyorProblem, Coupling, DesignSearch
 from .power import ISO7119_MAX_INCLINATION, METHODS
 
@@ -359,8 +361,6 @@ def validate(data: dict[str, Any], source: str | None = None) -> ConveyorProblem
 
     Raises :class:`~machdyn.errors.ProblemFileError` listing every mistake as (path, message).
     """
-    from ..reading import validate as validate_file
-
     _spec, problem = validate_file(data, MAIN, source)
     return problem
 
@@ -411,8 +411,6 @@ def _feasible(problem: ConveyorProblem) -> list[tuple[str, str]]:
     """The screw the run will choose exists, its pipe fits, and the selected power method applies to it."""
     if problem.search is not None:
         return []  # each candidate is judged by the search itself
-    from .evaluate import choose_screw
-
     p = "screw_conveyor"
     try:
         design = choose_screw(problem)

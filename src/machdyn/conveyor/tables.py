@@ -12,6 +12,8 @@ import math
 from functools import cache
 from pathlib import Path
 
+import numpy as np
+
 from ..errors import InputError
 
 DATA = Path(__file__).with_name("data")
@@ -138,8 +140,6 @@ def cema_overload_factor(horsepower):
     The CEMA chart is a straight line on a log scale of horsepower from Fo = 3.0 at 0.2 hp to Fo = 1.0 at
     5.2 hp; Fo = 3.0 below 0.2 hp and 1.0 from 5.2 hp on. The end points are in ``cema_overload_factor.csv``.
     """
-    import numpy as np
-
     rows = read_table("cema_overload_factor")
     (h0, f0), (h1, f1) = ((float(r["horsepower"]), float(r["Fo"])) for r in rows)
     hp = np.clip(np.asarray(horsepower, dtype=float), h0, h1)
@@ -149,8 +149,6 @@ def cema_overload_factor(horsepower):
 
 def cema_diameter_factors(diameter):
     """:func:`cema_diameter_factor` of an array of diameters [m] (NaN outside the tabulated 4…24 in)."""
-    import numpy as np
-
     rows = read_table("cema_diameter_factor")
     xs = np.array([float(r["diameter_in"]) for r in rows])
     ys = np.array([float(r["Fd"]) for r in rows])
@@ -161,8 +159,6 @@ def cema_diameter_factors(diameter):
 
 def cema_flight_factors(flight_type: str, loading):
     """:func:`cema_flight_factor` of an array of loadings (NaN where the table has no value)."""
-    import numpy as np
-
     row = next((r for r in read_table("cema_flight_factor") if r["flight_type"] == flight_type), None)
     if row is None:
         cema_flight_factor(flight_type, 0.1)  # raises with the list of types

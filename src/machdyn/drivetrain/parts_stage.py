@@ -31,13 +31,17 @@ A part that fails its check is a failed design check (exit 3).
 
 from __future__ import annotations
 
+import re
 from typing import Any, Literal
 
 from pydantic import Field, model_validator
 
 from ..dynamics.stage import FlywheelRun
 from ..errors import InputError, ProblemFileError
+from ..linkage import analyse, crank_angles
+from ..linkage import model as _model
 from ..pipeline import Capability, Outcome, StageContext
+from ..problem.build import build_mechanism
 from ..problem.fields import Area, Force, PositiveLength, Pressure, PressureVelocity, SectionModulus, Stress, Time
 from ..problem.schema import Spec
 from ..results.labels import Label
@@ -108,8 +112,6 @@ def _specs(table: PartsSpec) -> dict[str, Any]:
 
 
 def _names(table: PartsSpec, mech: Any) -> list[tuple[str, str]]:
-    from ..linkage import model as _model
-
     joints = {name: kind for name, kind, _b1, _b2 in _model.joints(mech)}
     bodies = set(mech.moving_bodies)
     problems = []
@@ -131,9 +133,6 @@ def _names(table: PartsSpec, mech: Any) -> list[tuple[str, str]]:
 
 def check(problem: Any, table: PartsSpec, source: str | None = None) -> list[tuple[str, str]]:
     """The names of joints and bodies exist, and the parts can be evaluated on the model (as ``run`` does)."""
-    from ..linkage import analyse, crank_angles
-    from ..problem.build import build_mechanism
-
     try:
         mech = build_mechanism(problem)
     except ProblemFileError:
@@ -176,8 +175,6 @@ def run(ctx: StageContext) -> Outcome:
 
 
 def _slug(text: str) -> str:
-    import re
-
     return re.sub(r"[^a-z0-9]+", "_", text.lower()).strip("_")
 
 

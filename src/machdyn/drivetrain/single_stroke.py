@@ -33,6 +33,7 @@ from typing import Any
 
 import numpy as np
 
+from ..dynamics.duty import DutyCheck, motor_duty
 from ..errors import InputError
 from .clutch import Stop, stop_machine
 
@@ -43,15 +44,17 @@ RECOVERED = 1e-3
 @dataclass(frozen=True)
 class SingleStroke:
     """One single stroke (SI, crank-shaft units): time histories ``t``, crank angle ``phi``, crank speed
-    ``omega``, driving-side speed ``omega_drive`` and the torque the clutch passes ``clutch_torque`` (0 once it is
-    open), each sample's ``phase`` (``"slip"``, ``"locked"``, ``"braking"``, ``"recovery"``), and the figures a
-    press designer checks."""
+    ``omega``, driving-side speed ``omega_drive``, the torque the clutch passes ``clutch_torque`` (0 once it is
+    open) and the motor's torque ``motor_torque`` (at the crank), each sample's ``phase`` (``"slip"``,
+    ``"locked"``, ``"braking"``, ``"recovery"``), and the figures a press designer checks; ``idle_torque`` is the
+    motor's torque at the running speed, between strokes."""
 
     t: np.ndarray
     phi: np.ndarray
     omega: np.ndarray
     omega_drive: np.ndarray
     clutch_torque: np.ndarray
+    motor_torque: np.ndarray
     phase: np.ndarray
     running_speed: float
     start_angle: float
@@ -67,11 +70,30 @@ class SingleStroke:
     recovery_time: float
     motor_work: float
     load_work: float
+    idle_torque: float
 
     @property
     def overrun(self) -> float:
         """How far [rad] the crank comes to rest past the start angle one turn on (negative: short of it)."""
         return self.rest_angle - (self.start_angle + 2 * np.pi)
+
+    def motor_rms(self, period: float | None = None) -> float:
+        """The RMS [N·m, at the crank] of the motor's torque over one period [s] of repeated single strokes: the
+        stroke and the flywheel's recovery as simulated, then the motor idling at ``idle_torque`` for the rest of
+        the period (None: strokes back to back, the period is the stroke plus the recovery). The thermal load of
+        a motor with a varying load is the RMS of its torque over the cycle (IEC 60034-1:2022, 4.2.1 and Annex A;
+        the RMS-torque method of motor selection, e.g. Groschopp, *Motor sizing basics*, part 3).
+
+        Valid for a period at least the stroke plus the recovery (shorter is refused: the drive cannot make it)."""
+        busy = self.stroke_time + self.recovery_time
+        period = busy if period is None else float(period)
+        if not period >= busy * (1.0 - 1e-12) or not period > 0:
+            raise InputError(f"A single stroke and its recovery take {busy:.4g} s; a period of {period!r} s is "
+                             "shorter.")
+        upto = self.t <= busy + 1e-12
+        squared = float(np.trapezoid(self.motor_torque[upto] ** 2, self.t[upto]))
+        squared += self.idle_torque**2 * max(0.0, period - float(self.t[upto][-1]))
+        return float(np.sqrt(squared / period))
 
     @property
     def strokes_per_minute(self) -> float:
@@ -284,16 +306,31 @@ def single_stroke(machine: Any, motor_torque: Any, *, drive_inertia: float, driv
     clutch_energy = float(np.trapezoid(np.where(slip_mask, slip_torque * rel, 0.0), t_e))
     brake_energy = float(brake_torque * (stop.phi[-1] - brake_angle))
     # work of the motor on the driving side and of the machine's loads on the crank, over the stroke
-    motor_power = np.array([tm(w) * w for w in omega_drive])
+    motor = np.array([tm(w) for w in omega_drive])
+    motor_power = motor * omega_drive
     load_power = np.array([m(p, w) * w for p, w in zip(phi, omega, strict=True)])
     upto = t <= stroke_end
     motor_work = float(np.trapezoid(motor_power[upto], t[upto]))
     load_work = float(np.trapezoid(load_power[upto], t[upto]))
     return SingleStroke(
-        t=t, phi=phi, omega=omega, omega_drive=omega_drive, clutch_torque=clutch, phase=phase, running_speed=speed,
+        t=t, phi=phi, omega=omega, omega_drive=omega_drive, clutch_torque=clutch, motor_torque=motor, phase=phase,
+        running_speed=speed,
         start_angle=float(start_angle), brake_angle=float(brake_angle), rest_angle=float(stop.phi[-1]),
         slip_time=slip_time, clutch_energy=clutch_energy, brake_energy=brake_energy, stroke_time=stroke_end,
         stop_time=stop_time, stop_angle=float(stop.phi[-1] - brake_angle),
         lowest_drive_speed=float(np.min(omega_drive)), recovery_time=max(0.0, recovery_end - stroke_end),
-        motor_work=motor_work, load_work=load_work,
+        motor_work=motor_work, load_work=load_work, idle_torque=tm(speed),
     )
+
+
+def single_stroke_duty(stroke: SingleStroke, drive: Any, strokes_per_minute: float | None) -> DutyCheck:
+    """The thermal duty of the induction motor ``drive`` (:class:`~machdyn.dynamics.drives.InductionMotor`) that
+    drives a press in single-stroke mode: the RMS of its torque over one period of strokes at
+    ``strokes_per_minute`` [1/min] (None, or more than the drive can make: strokes back to back), against its
+    rated torque in continuous duty S1 — the motor runs all the time, its load varying with each stroke
+    (IEC 60034-1:2022, 4.2.1; :meth:`SingleStroke.motor_rms`, :func:`machdyn.dynamics.duty.motor_duty`)."""
+    busy = stroke.stroke_time + stroke.recovery_time
+    period = 60.0 / strokes_per_minute if strokes_per_minute else None
+    if period is not None and period < busy:
+        period = None
+    return motor_duty(drive, stroke.motor_rms(period))

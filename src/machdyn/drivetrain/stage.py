@@ -40,13 +40,17 @@ from typing import Any, Literal
 import numpy as np
 from pydantic import Field, model_validator
 
+from ..dynamics.equivalent import equivalent_machine
 from ..dynamics.stage import FlywheelRun
 from ..errors import InputError, ProblemFileError
+from ..linkage import analyse, crank_angles
 from ..pipeline import Capability, Outcome, StageContext
+from ..problem.build import build_mechanism
 from ..problem.fields import Angle, Inertia, Time, Torque
 from ..problem.schema import Spec
 from ..results.labels import Label
 from .clutch import Engagement, Stop, engage, stop_machine
+from .single_stroke import single_stroke, single_stroke_duty
 from .train import DriveTrain, Stage
 
 RPM = 30.0 / np.pi
@@ -123,6 +127,7 @@ class DriveTrainRun:
     worst_stop: Stop | None
     crank_speed: float
     single_stroke: Any = None
+    single_stroke_duty: Any = None  # the motor's duty over repeated single strokes (a DutyCheck), if rated
 
 
 def train_of(table: DriveTrainSpec) -> DriveTrain:
@@ -152,9 +157,6 @@ def _peak_at_clutch(train: DriveTrain, shaft: int, crank_torque: np.ndarray) -> 
 
 def check(problem: Any, table: DriveTrainSpec, source: str | None = None) -> list[tuple[str, str]]:
     """Validations ``run`` relies on: the clutch carries the largest torque of the cycle at its shaft."""
-    from ..linkage import analyse, crank_angles
-    from ..problem.build import build_mechanism
-
     try:
         train = train_of(table)
     except InputError as exc:
@@ -188,8 +190,6 @@ def _clutch_problems(table: DriveTrainSpec, train: DriveTrain, torque: np.ndarra
 
 def run(ctx: StageContext) -> Outcome:
     """Stage of ``[drivetrain]``."""
-    from ..dynamics.equivalent import equivalent_machine
-
     table: DriveTrainSpec = ctx.table
     train = train_of(table)
     flywheel = ctx.result_of("flywheel", FlywheelRun)  # None: no [flywheel], or no steady state
@@ -244,8 +244,12 @@ def run(ctx: StageContext) -> Outcome:
     stroke = None
     if table.single_stroke is not None:
         stroke = _single_stroke(table, train, machine, flywheel, fly_inertia, crank_speed)
+    duty = None
+    if stroke is not None and flywheel is not None and hasattr(flywheel.drive, "rated_torque"):
+        assert table.clutch is not None
+        duty = single_stroke_duty(stroke, flywheel.drive, table.clutch.strokes_per_minute)
     done = DriveTrainRun(train, np.asarray(forces.kinematics.crank_angle, dtype=float), shaft_torques, shaft,
-                         engagement, tuple(stops), worst, crank_speed, stroke)
+                         engagement, tuple(stops), worst, crank_speed, stroke, duty)
     return _outcome(done, table)
 
 
@@ -272,8 +276,6 @@ def _single_stroke(table: DriveTrainSpec, train: DriveTrain, machine: Any, flywh
                    fly_inertia: float, crank_speed: float) -> Any:
     """The single stroke of ``[drivetrain.single_stroke]``, everything reduced to the crank shaft: the motor of
     ``[flywheel.motor]`` (or the clutch table's constant ``motor_torque``) on the driving side."""
-    from .single_stroke import single_stroke
-
     assert table.clutch is not None and table.brake is not None and table.single_stroke is not None
     shaft = _clutch_shaft(table)
     ratios = train.speed_ratios
@@ -353,6 +355,11 @@ def _outcome(done: DriveTrainRun, table: DriveTrainSpec) -> Outcome:
         if table.brake is not None and table.brake.max_time is not None and k.stop_time > table.brake.max_time:
             failed.append(f"single stroke: the stop takes {k.stop_time:.3g} s, more than brake.max_time = "
                           f"{table.brake.max_time:.3g} s")
+        if done.single_stroke_duty is not None:
+            d = done.single_stroke_duty
+            scalars["single_stroke.motor_rms_torque"] = d.load_rms
+            scalars["single_stroke.motor_load"] = d.load_ratio
+            failed += [f"single stroke: {text}" for text in d.overload()]
         wanted = table.clutch.strokes_per_minute if table.clutch is not None else None
         if wanted is not None and k.strokes_per_minute < wanted:
             failed.append(f"single stroke: the drive manages {k.strokes_per_minute:.3g} strokes a minute (stroke "
@@ -363,7 +370,7 @@ def _outcome(done: DriveTrainRun, table: DriveTrainSpec) -> Outcome:
     if k is not None:
         series["single_stroke"] = {"time": (k.t, "s"), "crank_angle": (k.phi, "rad"), "crank_speed": (k.omega, "rad/s"),
                                    "drive_side_speed": (k.omega_drive, "rad/s"),
-                                   "clutch_torque": (k.clutch_torque, "N*m")}
+                                   "clutch_torque": (k.clutch_torque, "N*m"), "motor_torque": (k.motor_torque, "N*m")}
     summary = tuple(key for key in scalars if not key.startswith("drivetrain.shaft_")) + \
         ("drivetrain.shaft_0.torque.max_abs",)
     return Outcome(results=done, scalars=scalars, labels=labels, series=series, summary=summary,
@@ -396,6 +403,9 @@ LABELS = {
     "single_stroke.recovery_time": Label("Single stroke: time for the motor to bring the flywheel back after the "
                                          "stop", "s"),
     "single_stroke.strokes_per_minute": Label("Single stroke: most strokes a minute the drive can make", ""),
+    "single_stroke.motor_rms_torque": Label("Single stroke: RMS of the motor's torque (at the crank) over a period "
+                                            "of strokes at the rate asked for", "N*m"),
+    "single_stroke.motor_load": Label("Single stroke: motor's RMS torque / its rated S1 torque", ""),
 }
 
 CAPABILITY = Capability(

@@ -19,8 +19,12 @@ press's strokes and pauses, not for hour-long cycles.
 ``cdf`` and zero torque otherwise, the torque T_S1/√cdf (Parvalux, "What is an S3 duty cycle?", FAQ: "the rated
 torque is equal to the continuous torque multiplied by 1/√(x/100)" — stated there for permanent-magnet DC motors;
 the thermal argument, losses growing with the square of the torque, is the same for an induction motor near its
-rated point); it is the RMS rule with a rest at zero torque. It neglects the poorer cooling of a self-ventilated
-motor at rest (S3) — manufacturers then derate more — and so it is the upper bound of a catalogue's S3 rating. The
+rated point); it is the RMS rule with a rest at zero torque. It is neither bound of a catalogue's S3 rating: it
+neglects the poorer cooling of a self-ventilated motor at rest (manufacturers then derate more), and it also counts
+every loss as growing with the torque squared, whereas the iron and friction losses are fixed while running and
+stop at a de-energised rest — with them the torque allowed while running is higher (H2W Technologies' rotary
+motion calculator allows 1.75 times the continuous torque of an AC motor at 50 %, against 1/√0.5 = 1.41 here).
+Where the maker gives an S3 rating, it should be preferred. The
 ``rest_cooling`` factor h = heat dissipated at rest / heat dissipated running (h = 1: the rule above; a
 self-ventilated motor cools much less at rest, and h comes from its maker; the same constant "heat dissipation ratio
 (ventilated/non-ventilated motor)" that Vanhoucke's duty-cycle calculator for MEZ motors asks for) weighs the rest

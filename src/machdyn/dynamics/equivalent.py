@@ -27,6 +27,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputError, check_positive
+from ..linkage import crank_angles, energy, kinematics
+from ..linkage.loads import mass_elements
 from ..linkage.model import Mechanism, split_ref
 from .tables import Curve, FourierCurve, PeriodicCurve
 
@@ -193,9 +195,6 @@ def equivalent_machine(
     EquivalentMachine with J(phi), V(phi), the external reduced moment, the reduced damping and the
     speed-dependent forces (seed 003 eqs 18-19, see the module docstring).
     """
-    from ..linkage import crank_angles, energy, kinematics
-    from ..linkage.loads import mass_elements
-
     if int(positions) != positions or positions < 16:
         raise InputError(f"The number of crank positions of the equivalent machine must be an integer >= 16; "
                          f"got {positions!r}.")

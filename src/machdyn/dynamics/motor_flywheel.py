@@ -25,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
+from .simulate import NotSettledError, steady_state
 
 #: The search grid, relative to the constant-torque flywheel, widened outward when the target lies beyond it.
 GRIDS = ((0.4, 1.2), (1.2, 4.0), (0.12, 0.4), (4.0, 16.0), (0.03, 0.12))
@@ -45,8 +46,6 @@ class MotorFlywheel:
 
 
 def _deltas(machine: Any, drive: Any, inertias: np.ndarray) -> np.ndarray | None:
-    from .simulate import NotSettledError, steady_state
-
     try:
         return np.asarray(steady_state(machine, drive, inertias).delta, dtype=float).ravel()
     except (InputError, NotSettledError, ValueError):

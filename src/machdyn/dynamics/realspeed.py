@@ -17,8 +17,10 @@ from functools import partial
 import numpy as np
 
 from ..errors import InputError
-from ..linkage.kinetostatics import Forces
+from ..linkage import kinetostatics
+from ..linkage.kinematics import kinematics
 from ..linkage.model import GROUND, BodyTorque, PointForce, split_ref
+from ..linkage.reactions import Forces
 from .equivalent import LinearDamper, RotaryDamper, SpeedForce
 from .simulate import SteadyState
 
@@ -49,8 +51,6 @@ class RealSpeedForces:
 
 def _speed_loads_as_engine_loads(mech, loads, omega_of_phi):
     """Engine forces and torques (functions of phi) equal to the speed-dependent loads at the simulated speed."""
-    from ..linkage.kinematics import kinematics
-
     forces, torques = [], []
     for load in loads:
         if isinstance(load, SpeedForce):
@@ -90,8 +90,6 @@ def _speed_loads_as_engine_loads(mech, loads, omega_of_phi):
 
 
 def _speed_force(mech, load: SpeedForce, phi, omega_of_phi):
-    from ..linkage.kinematics import kinematics
-
     kin = kinematics(mech, phi, omega_of_phi(phi), 0.0)
     p = kin.point(load.point)
     fx, fy = load.law(phi, p.vx, p.vy)
@@ -104,8 +102,6 @@ def forces_at_speed(steady: SteadyState) -> RealSpeedForces:
 
     Raises InputError for a machine given by tables (no linkage to re-run).
     """
-    from ..linkage import kinetostatics
-
     machine = steady.machine
     mech = machine.mechanism
     if mech is None:

@@ -17,6 +17,7 @@ variants share phi and are integrated together in one call of :func:`scipy.integ
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -24,7 +25,8 @@ import numpy as np
 
 from ..errors import InputError, MachdynError
 from .drives import ConstantSpeed, ConstantTorque, InductionMotor
-from .equivalent import EquivalentMachine
+from .equivalent import EquivalentMachine, _force_moment
+from .periodic import collocation_steady
 from .tables import FourierCurve, PeriodicCurve, fine_grid
 
 RTOL = 1e-11  # the integrator's relative tolerance: periodicity and energy are checked to 1e-9
@@ -161,8 +163,6 @@ class _Model:
         td, dtd = self.drive_torque(omega)
         m, dm = td + mp - c * omega, dtd - c
         for law, ratio in self.m.forces:
-            from .equivalent import _force_moment
-
             f, df = _force_moment(law, ratio, phi, omega, self.m._speed_step)
             m, dm = m + f, dm + df
         return self._plus_added(j), dj, m, dm
@@ -388,8 +388,6 @@ def steady_state(
         k0 = 0.5 * j0 * w_bar**2
         spectral = None
         if model.fast and model.extra is None and grid.size - 1 == machine.inertia.x.size:
-            from .periodic import collocation_steady
-
             spectral = collocation_steady(model, n, grid[:-1], w_bar, tolerance)
         # LSODA: Adams steps (about half the evaluations of DOP853 at these tolerances on this smooth equation),
         # switching to BDF by itself where a steep drive characteristic makes the equation stiff
@@ -457,8 +455,6 @@ def _overload(drive, omega) -> tuple[str, ...]:
 
 def _solve(solve_ivp, rhs, span, y0, rtol, model, n, machine, drive, grid, t_eval=None, method="DOP853"):
     """One cycle of the energy equation; a speed that reaches zero (K <= 0 at a step) is a stall."""
-    import warnings
-
     atol = 1e-14 * max(1.0, float(np.max(np.abs(y0))))
     with np.errstate(over="ignore"), warnings.catch_warnings():
         # LSODA warns where it cannot continue past a stall; the stall is reported below

@@ -14,8 +14,9 @@ import numpy as np
 from pydantic import Field, model_validator
 
 from ..cams.linkage_stage import FollowerLinkageResult
+from ..cams.shaft import with_shaft_cam
 from ..cams.stage import CamResult
-from ..errors import InputError
+from ..errors import InputError, ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext
 from ..problem.fields import (
     AngularVelocity,
@@ -34,6 +35,13 @@ from ..problem.fields import VolumeFlow as Flow
 from ..problem.schema import Spec
 from ..results.labels import Label
 from .drive_choice import choose_drive, duty_of, overloaded
+from .drives import InductionMotor
+from .equivalent import LinearDamper, RotaryDamper, equivalent_machine
+from .flywheel import disc_flywheel, rim_flywheel, rim_speed_limit, size_flywheel
+from .motion import start_up
+from .motor_flywheel import flywheel_for_drive
+from .realspeed import forces_at_speed
+from .simulate import NotSettledError, steady_state
 
 
 class MotorTable(Spec):
@@ -177,8 +185,6 @@ SUMMARY = ("flywheel.inertia", "flywheel.inertia_constant_torque", "flywheel.mot
 
 
 def speed_loads(table: FlywheelTable) -> tuple:
-    from .equivalent import LinearDamper, RotaryDamper
-
     out: list[Any] = []
     for d in table.dampers:
         if d.body is not None:
@@ -191,8 +197,6 @@ def speed_loads(table: FlywheelTable) -> tuple:
 def check_flywheel(problem: Any, table: FlywheelTable, source: str | None = None) -> list[tuple[str, str]]:
     """The validations of ``[flywheel]`` that need more than its schema, so that ``check`` and ``run`` agree: a
     crank turning forwards, and a motor whose data describe a real induction motor (its drive object builds)."""
-    from .drives import InductionMotor
-
     found: list[tuple[str, str]] = []
     drive = getattr(problem, "drive", None)  # a cam file turns its camshaft at the cam's own speed
     speed = float(drive.speed) if drive is not None else 1.0
@@ -234,13 +238,6 @@ def _off_speed(steady, nominal: float) -> list[str]:
 
 def run_flywheel(ctx: StageContext) -> Outcome:
     """The stage: size or take the flywheel, choose or take the drive, steady state, start-up, real-speed forces."""
-    from ..errors import ProblemFileError
-    from .equivalent import equivalent_machine
-    from .flywheel import disc_flywheel, rim_flywheel, rim_speed_limit, size_flywheel
-    from .motion import start_up
-    from .realspeed import forces_at_speed
-    from .simulate import NotSettledError, steady_state
-
     table: FlywheelTable = ctx.table
     mech = ctx.mechanism
     cam = ctx.result_of("cam", CamResult)
@@ -258,8 +255,6 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         machine = equivalent_machine(mech, table.positions, speed_loads=speed_loads(table))
         shaft_cam = ctx.result_of("shaft_cam", CamResult)
         if shaft_cam is not None:  # a cam on the crank shaft: its reduced quantities add to the linkage's
-            from ..cams.shaft import with_shaft_cam
-
             machine = with_shaft_cam(machine, shaft_cam, ctx.problem.shaft_cam.phase,
                                      table.positions)
     target = table.delta if table.delta is not None else 0.02
@@ -274,8 +269,6 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         drive = choose_drive(table.motor, machine, flywheel, speed, mean_torque)
         for_motor = None
         if table.delta is not None and table.size_for == "motor" and table.motor.kind != "constant_torque":
-            from .motor_flywheel import flywheel_for_drive
-
             try:
                 for_motor = flywheel_for_drive(machine, drive, table.delta, flywheel)
                 flywheel = for_motor.inertia

@@ -19,8 +19,12 @@ from typing import Any
 
 import numpy as np
 
+from .. import __version__
 from ..errors import ProblemFileError
-from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
+from ..linkage import stack_designs
+from ..problem.build import build_mechanism
+from ..problem.sweep import substitute
+from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG, evaluate_population, sweep_columns
 from .sampling import DesignSpace
 
 #: Changes when the columns an exploration keeps change, so that partitions stored before are not reused.
@@ -49,8 +53,6 @@ class ExplorePlan:
     @property
     def fingerprint(self) -> str:
         """A digest of everything that decides the results (problem, space, angles), not of where they run."""
-        from .. import __version__
-
         spec = self.problem.model_dump(mode="json", exclude={"sweep", "meta"})  # a new title keeps the results
         data = {
             "version": __version__,
@@ -65,9 +67,6 @@ class ExplorePlan:
 
 
 def _single(plan: ExplorePlan, row: np.ndarray):
-    from ..problem.build import build_mechanism
-    from ..problem.sweep import substitute
-
     return build_mechanism(substitute(plan.problem, {p: float(v) for p, v in zip(plan.space.names, row,
                                                                                    strict=True)}))
 
@@ -85,10 +84,6 @@ def _with_design_axis(mech, n: int):
 def build_designs(plan: ExplorePlan, values: np.ndarray) -> tuple[Any, Any, Any]:
     """(model with a designs axis, crank speed, crank acceleration) of the designs ``values`` (n, K) in SI; the
     drive values are (n, 1) columns when explored, floats otherwise."""
-    from ..linkage import stack_designs
-    from ..problem.build import build_mechanism
-    from ..problem.sweep import substitute
-
     n = values.shape[0]
     names = plan.space.names
     model_values = {p: values[:, k] for k, p in enumerate(names) if p not in DRIVE}
@@ -112,8 +107,6 @@ def evaluate_designs(plan: ExplorePlan, values: np.ndarray) -> dict[str, np.ndar
     """The per-design results of the designs ``values`` (n, K) in SI: one array per column, quantities first
     (SI), then the status columns (``assembled``, ``regular``, ``status``...) and the results of
     :func:`~machdyn.results.population.sweep_columns` under their catalogue keys."""
-    from ..results.population import evaluate_population, sweep_columns
-
     mech, speed, accel = build_designs(plan, values)
     machine = getattr(plan.problem.mechanism, "machine", None)
     wanted = sweep_columns(mech, machine, plan.objective, plan.extra_columns)
@@ -162,8 +155,6 @@ def check_vectorised_build(plan: ExplorePlan, values: np.ndarray) -> bool:
 
     Raises :class:`~machdyn.errors.ProblemFileError` if a design cannot be built at all (a bad combination of
     values); any failure of the vectorised build alone only means the slower build is used."""
-    from ..linkage import stack_designs
-
     try:
         one_by_one = stack_designs([_single(plan, row) for row in values])
     except ProblemFileError as exc:

@@ -10,15 +10,22 @@ of designs. Workers need machdyn importable (the same version as the client); th
 
 from __future__ import annotations
 
+import asyncio
 import contextlib
+import os
 import time
 from collections.abc import Callable, Iterator
+from concurrent.futures import CancelledError, ThreadPoolExecutor
 from contextvars import ContextVar
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
-from ..errors import InputError
+from rich.console import Console
+from rich.progress import BarColumn, MofNCompleteColumn, TextColumn, TimeRemainingColumn
+from rich.progress import Progress as RichProgress
+
+from ..errors import InputError, OperationalError
 from .digest import Digest
 from .evaluate import ExplorePlan, evaluate_partition
 from .sampling import partition_designs
@@ -36,8 +43,6 @@ CONNECT_TIMEOUT = 10.0
 def worker_limit() -> int:
     """The most local worker processes a run may start: the machine's processors (``os.cpu_count()``; each
     worker computes with one thread, so more only add memory), or ``MACHDYN_MAX_WORKERS`` where it is set."""
-    import os
-
     given = os.environ.get("MACHDYN_MAX_WORKERS", "").strip()
     if given.isdigit() and int(given) >= 1:
         return int(given)
@@ -56,17 +61,13 @@ def workers_error(workers: int) -> str | None:
 def probe_scheduler(address: str, timeout: float = CONNECT_TIMEOUT) -> None:
     """Connect to ``address`` and complete Dask's handshake within ``timeout`` seconds, or raise
     :class:`~machdyn.errors.OperationalError` saying why (nothing listens there, or what answers is not Dask)."""
-    import asyncio
-
     from distributed.comm import connect
 
-    from ..errors import OperationalError
 
     async def handshake() -> None:
         comm = await connect(address, timeout=timeout)
         await comm.close()
 
-    from concurrent.futures import ThreadPoolExecutor
 
     try:
         with ThreadPoolExecutor(1) as pool:  # its own event loop, also where the caller runs one (a notebook)
@@ -149,10 +150,6 @@ def _duration(seconds: float) -> str:
 @contextlib.contextmanager
 def progress_bar(description: str) -> Iterator[Progress]:
     """A rich progress bar of designs done on the terminal (stderr), as a ``progress`` callback."""
-    from rich.console import Console
-    from rich.progress import BarColumn, MofNCompleteColumn, TextColumn, TimeRemainingColumn
-    from rich.progress import Progress as RichProgress
-
     with RichProgress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeRemainingColumn(),
                   console=Console(stderr=True), transient=True) as bar:
         task = bar.add_task(description, total=None)
@@ -233,7 +230,6 @@ def run_tasks(task: Callable, plan: Any, items: Iterator[tuple[int, Any]], finis
         return "in process"
     from distributed import Client, LocalCluster, as_completed
 
-    from ..errors import OperationalError
 
     cluster = None
     if scheduler is not None:
@@ -325,8 +321,6 @@ def run_tasks(task: Callable, plan: Any, items: Iterator[tuple[int, Any]], finis
 
 def _lost_work() -> tuple[type[BaseException], ...]:
     """What a partition's result raises when a worker went away with it (or with its designs)."""
-    from concurrent.futures import CancelledError
-
     return (*_lost_cluster(), CancelledError)
 
 

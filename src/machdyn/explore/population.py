@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
+from ..problem.build import crank_angles
 from ..problem.sweep import DEFAULT_OBJECTIVE, QuantityRange, sweep_unit
 from .evaluate import ExplorePlan, check_vectorised_build, evaluate_designs
 from .execution import run_tasks
@@ -72,8 +73,6 @@ def evaluate_population(
     ``joint.<name>.max_force`` [N]...; :mod:`machdyn.results.catalogue`); NaN results for designs that are not
     regular. Runs in chunks of ``chunk`` designs here, or on a local Dask cluster of ``workers`` processes, or
     on the Dask scheduler at ``scheduler``."""
-    from ..problem.build import crank_angles
-
     data, quantities = _checked(problem, parameters, values)
     n = data.shape[0]
     space = DesignSpace(quantities, "given", n, 0, max(1, int(chunk)))

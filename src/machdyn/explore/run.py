@@ -14,6 +14,7 @@ from __future__ import annotations
 import contextlib
 import os
 import tempfile
+import time
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 from pathlib import Path
@@ -22,10 +23,16 @@ from typing import Any
 import numpy as np
 
 from ..errors import ProblemFileError
+from ..linkage.sweep import DEFAULT_CHUNK_POSITIONS
+from ..problem.build import build_mechanism, crank_angles
 from ..problem.errors import did_you_mean
+from ..problem.sweep import MAX_DESIGNS, explore_quantities
+from ..reading import read_problem
+from ..results.catalogue import label
+from ..results.population import result_unit
 from .digest import Digest
 from .evaluate import ExplorePlan, check_vectorised_build, evaluate_designs
-from .execution import Progress, current, progress_bar, run_partitions
+from .execution import ANNOUNCE_AFTER, Progress, announce_estimate, current, progress_bar, run_partitions
 from .sampling import DEFAULT_PARTITION, DesignSpace, partition_designs
 from .store import PartitionStore, read_exploration
 
@@ -37,9 +44,6 @@ def plan_exploration(problem: Any) -> ExplorePlan:
     """The plan of a linkage problem's ``[sweep]``: quantities checked, the space sized, the vectorised build
     of the models checked against design-by-design building on a few designs. Every mistake is reported with
     its path (:class:`~machdyn.errors.ProblemFileError`)."""
-    from ..problem.build import crank_angles
-    from ..problem.sweep import MAX_DESIGNS, explore_quantities
-
     spec = problem.sweep
     quantities = explore_quantities(problem)
     space = DesignSpace(quantities, spec.sampling, spec.samples, spec.seed or 0, spec.partition or DEFAULT_PARTITION)
@@ -67,10 +71,6 @@ def plan_exploration(problem: Any) -> ExplorePlan:
 
 def column_units(plan: ExplorePlan, columns: list[str]) -> dict[str, tuple[str, str]]:
     """(SI unit, label) of each column of an exploration (the results' from the catalogue)."""
-    from ..problem.build import build_mechanism
-    from ..results.catalogue import label
-    from ..results.population import result_unit
-
     mech = build_mechanism(plan.problem)
     out: dict[str, tuple[str, str]] = {"design": ("", "Design number")}
     out |= {q.parameter: (q.si_unit, q.parameter) for q in plan.space.quantities}
@@ -174,11 +174,6 @@ def store_in_file(problem: Any, source: str | os.PathLike | None) -> Path | None
 
 def _estimate(plan: ExplorePlan, workers: int | None) -> None:
     """Announce the time and memory of a long exploration, from the time of a small batch of its designs."""
-    import time
-
-    from ..linkage.sweep import DEFAULT_CHUNK_POSITIONS
-    from .execution import ANNOUNCE_AFTER, announce_estimate, current
-
     if current().estimate is None:
         return
     batch = next(partition_designs(plan.space, [0]))[1][:32]
@@ -227,8 +222,6 @@ def explore(
     on_partition : ``on_partition(index)`` after each partition computed is written.
     """
     if isinstance(problem, str | os.PathLike):
-        from ..reading import read_problem
-
         loaded = read_problem(problem)
         problem, source = loaded.spec, loaded.source if source is None else source
     plan = plan_exploration(problem)

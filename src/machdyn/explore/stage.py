@@ -3,6 +3,7 @@ exploration of several quantities written to Parquet, with its best designs in t
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -10,10 +11,14 @@ import numpy as np
 from ..errors import ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext
 from ..pipelines import sweep as one_quantity
+from ..pipelines import sweep_runs
+from ..pipelines.design_views import MAX_VIEWS, views_of
 from ..problem.sweep import SweepSpec
 from ..results.catalogue import find, label
 from ..results.labels import Label
-from .run import Exploration
+from .execution import workers_error
+from .run import Exploration, explore, plan_exploration, store_in_file
+from .sampling import is_power_of_two
 
 LABELS = dict(one_quantity.LABELS) | {
     "sweep.assembled_count": Label("Sweep: designs that assemble at every crank angle"),
@@ -23,12 +28,12 @@ LABELS = dict(one_quantity.LABELS) | {
 
 def check(problem: Any, table: Any, source: str | None = None) -> list[tuple[str, str]]:
     """Every mistake of the table that its schema cannot see: paths, units and signs of the values, designs
-    that cannot be built, the objective."""
+    that cannot be built, the objective; in a file with no linkage (a cam, a shaft line), the checks of a sweep
+    run variant by variant (:mod:`machdyn.pipelines.sweep_runs`)."""
+    if _by_runs(problem):
+        return sweep_runs.check(problem, table)
     if not table.is_exploration:
         return one_quantity.check(problem, table)
-    from .execution import workers_error
-    from .run import plan_exploration, store_in_file
-
     problems: list[tuple[str, str]] = []
     if table.workers is not None and workers_error(table.workers):
         problems.append(("sweep.workers", str(workers_error(table.workers))))
@@ -45,19 +50,22 @@ def check(problem: Any, table: Any, source: str | None = None) -> list[tuple[str
 
 def run(ctx: StageContext) -> Outcome:
     """The sweep of ``ctx.problem``: one quantity as before, or an exploration (:func:`machdyn.explore.explore`)
-    with the execution settings in force (``--workers``, ``--scheduler``, the output folder)."""
+    with the execution settings in force (``--workers``, ``--scheduler``, the output folder); in a file with no
+    linkage (a cam, a shaft line), each variant run whole through the file's stages."""
+    if _by_runs(ctx.problem):
+        return sweep_runs.run(ctx)
     if not ctx.table.is_exploration:
         return one_quantity.run(ctx)
-    from .run import explore
-
     return outcome(played(explore(ctx.problem, source=ctx.source)))
+
+
+def _by_runs(problem: Any) -> bool:
+    """True for a file with no linkage population (a cam, a shaft line): its variants are run one by one."""
+    return getattr(problem, "mechanism", None) is None
 
 
 def played(done: Any) -> Any:
     """The exploration with its nominal design and its best designs analysed one by one for playback."""
-    from dataclasses import replace
-
-    from ..pipelines.design_views import MAX_VIEWS, views_of
 
     best = done.digest.best
     count = min(MAX_VIEWS - 1, len(best.get("design", [])))
@@ -70,8 +78,6 @@ def played(done: Any) -> Any:
 def outcome(done: Any) -> Outcome:
     """The results of an exploration: counts, the best design's objective and quantities, the best designs as a
     table (``sweep_best.csv``); every design is in the Parquet folder ``done.store``."""
-    from .sampling import is_power_of_two
-
     plan, digest = done.plan, done.digest
     goal = plan.objective
     unit_of = {k: u for k, (u, _) in done.units.items()}
@@ -126,6 +132,7 @@ CAPABILITY = Capability(
     step="design sweep",
     labels=LABELS,
     report="machdyn.report.explore:sections",
+    kinds=("mechanism", "cam", "shaft_line"),
     check=check,
     result_type=(one_quantity.SweepRun, Exploration),
 )

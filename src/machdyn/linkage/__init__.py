@@ -7,8 +7,8 @@ from .diagnostics import Diagnostics, diagnose
 from .energy import Energy, WorkBalance, energy
 from .grashof import grashof_type
 from .harmonics import Harmonics, harmonics
-from .kinematics import Kinematics, SlideMotion, angle_ranges, crank_angles, kinematics
-from .kinetostatics import Forces, Joint, Reaction, kinetostatics
+from .kinematics import kinematics
+from .kinetostatics import kinetostatics
 from .model import (
     PRP,
     RPR,
@@ -25,6 +25,8 @@ from .model import (
     joints,
     stack_designs,
 )
+from .motion import Kinematics, SlideMotion, angle_ranges, crank_angles
+from .reactions import Forces, Joint, Reaction
 from .state import BodyState, PointState
 from .sweep import SweepResult, sweep
 

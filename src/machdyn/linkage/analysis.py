@@ -9,9 +9,11 @@ import numpy as np
 
 from .diagnostics import Diagnostics, diagnose
 from .energy import Energy, WorkBalance, energy
-from .kinematics import Kinematics, is_full_turn, kinematics
-from .kinetostatics import Forces, kinetostatics
+from .kinematics import kinematics
+from .kinetostatics import kinetostatics
 from .model import Mechanism
+from .motion import Kinematics, is_full_turn
+from .reactions import Forces
 
 
 @dataclass(frozen=True)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .kinematics import Kinematics, is_full_turn
+from .motion import Kinematics, is_full_turn
 
 
 def angle_weights(crank_angle) -> np.ndarray:

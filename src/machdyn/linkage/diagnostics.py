@@ -13,8 +13,9 @@ import numpy as np
 
 from ..errors import InputError
 from .grashof import grashof_type
-from .kinematics import Kinematics, angle_ranges, crank_angles, format_ranges, is_full_turn, kinematics, singular
-from .model import Mechanism
+from .kinematics import kinematics
+from .model import Mechanism, output_bodies
+from .motion import Kinematics, angle_ranges, crank_angles, format_ranges, is_full_turn, singular
 
 #: Below this transmission angle [deg] force transmission is poor (Norton, §4.10: keep mu >= 40 deg).
 MIN_GOOD_TRANSMISSION_DEG = 40.0
@@ -308,31 +309,6 @@ def _dead_positions(phi, reports, assembled, ok, assembly_ranges) -> list[float]
         if all(abs(_angle_between(angle, u)) > 2.5 * step for u in unique):
             unique.append(angle)
     return unique
-
-
-def output_bodies(mech: Mechanism) -> list[tuple[str, str]]:
-    """The outputs of a mechanism whose limit positions, strokes and time ratios matter, in dyad order.
-
-    The one definition of an output: each dyad declares its own (``Dyad.outputs``), a slider on a ground
-    guide (its travel) or a rocker pinned to the ground (its angle).
-
-    Parameters
-    ----------
-    mech : Mechanism
-        The mechanism.
-
-    Returns
-    -------
-    list of (str, str)
-        (body, "slide" or "angle") of each output.
-
-    Examples
-    --------
-    >>> from machdyn.linkage import four_bar, slider_crank
-    >>> output_bodies(four_bar(0.02, 0.08, 0.07, 0.09)), output_bodies(slider_crank(0.1, 0.3))
-    ([('rocker', 'angle')], [('slider', 'slide')])
-    """
-    return [(out.body, out.kind) for d in mech.dyads for out in d.outputs()]
 
 
 def _outputs(mech: Mechanism, kin):

@@ -8,20 +8,17 @@ types. The closed forms themselves are written once, in :mod:`machdyn.linkage.dy
 :mod:`machdyn.linkage.dyads` (NumPy) and :mod:`machdyn.linkage.fused_dyads` (the compiled engine's kernel).
 
 Adding a dyad type: write its motion and force forms in :mod:`.dyad_forms` (one text for both engines), declare
-a dataclass here implementing every method of :class:`DyadType`, and add it to :data:`DYAD_TYPES` (see
-docs/linkage.md).
+a dataclass here implementing every method of :class:`DyadType`, add it to :data:`DYAD_TYPES`, and give the fused
+engine its code, the calls of the same forms (:data:`machdyn.linkage.fused_dyads.EMITTERS`; see docs/linkage.md).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, ClassVar
+from typing import Any, ClassVar
 
 from . import dyads as dy
-from .refs import GROUND, Number, column, local_point, split_ref
-
-if TYPE_CHECKING:
-    from .model import Mechanism
+from .refs import GROUND, Number, Points, column, local_point, split_ref
 
 #: A joint as (name, kind 'R' or 'P', earlier body, later body).
 JointDecl = tuple[str, str, str, str]
@@ -96,7 +93,7 @@ class DyadType:
     def drawing(self) -> DyadDrawing:
         raise NotImplementedError
 
-    def solve_motion(self, mech: Mechanism, states: dict) -> dy.DyadMotion:
+    def solve_motion(self, mech: Points, states: dict) -> dy.DyadMotion:
         """Position (on the dyad's branch), velocity and acceleration of both bodies from the known states."""
         raise NotImplementedError
 
@@ -105,13 +102,8 @@ class DyadType:
         known bodies (``ctx``: :class:`machdyn.linkage.kinetostatics.ForceContext`)."""
         raise NotImplementedError
 
-    def emit_fused(self, gen: Any) -> None:
-        """Straight-line scalar code of the motion (and, in ``gen.forces``, the force) solution for the fused
-        engine (``gen``: :class:`machdyn.linkage.fused_source.Generator`)."""
-        raise NotImplementedError
 
-
-def _point(mech: Mechanism, states: dict, ref: str):
+def _point(mech: Points, states: dict, ref: str):
     body, point = split_ref(ref)
     return states[body].point(*local_point(mech, body, point))
 
@@ -181,10 +173,6 @@ class RRR(DyadType):
         ctx.transmit(_body(self.pin_a), P.x, P.y, *fp)
         ctx.transmit(_body(self.pin_b), Q.x, Q.y, *fq)
 
-    def emit_fused(self, gen):
-        from .fused_dyads import rrr_code
-
-        rrr_code(gen, self)
 
 
 @dataclass(frozen=True)
@@ -257,10 +245,6 @@ class RRP(DyadType):
         ctx.transmit(gb, B.x, B.y, N * nx, N * ny)
         ctx.couple_back(gb, couple)
 
-    def emit_fused(self, gen):
-        from .fused_dyads import rrp_code
-
-        rrp_code(gen, self)
 
 
 @dataclass(frozen=True)
@@ -325,10 +309,6 @@ class RPR(DyadType):
         ctx.transmit(_body(self.pin_a), P.x, P.y, *fp)
         ctx.transmit(_body(self.pin_b), Q.x, Q.y, *fq)
 
-    def emit_fused(self, gen):
-        from .fused_dyads import rpr_code
-
-        rpr_code(gen, self)
 
 
 @dataclass(frozen=True)
@@ -396,10 +376,6 @@ class PRP(DyadType):
         ctx.couple_back(g1, ca)
         ctx.couple_back(g2, cb)
 
-    def emit_fused(self, gen):
-        from .fused_dyads import prp_code
-
-        prp_code(gen, self)
 
 
 #: Every dyad type by its name, as problem files and messages write it.

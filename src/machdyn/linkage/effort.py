@@ -29,8 +29,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from .kinetostatics import Forces
 from .model import RRP, split_ref
+from .reactions import Forces
 from .refs import column
 
 

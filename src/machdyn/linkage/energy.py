@@ -16,10 +16,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from .kinematics import Kinematics
-from .kinetostatics import Forces, kinetostatics
+from .kinetostatics import kinetostatics
 from .loads import applied_forces, applied_torques, mass_elements, spring_states
 from .model import Mechanism
+from .motion import Kinematics
+from .reactions import Forces
 from .refs import column, full
 
 

@@ -7,6 +7,8 @@ import importlib.util
 import numpy as np
 
 from ..errors import InputError
+from .fused_generator import Unsupported
+from .fused_source import generate
 
 ENGINES = ("auto", "fused", "numpy")
 
@@ -38,8 +40,6 @@ def use_fused(engine: str, mech, phi, positions: int) -> bool:
         return True
     if positions < AUTO_MIN_POSITIONS or np.ndim(phi) != 1 or not available():
         return False
-    from .fused_source import Unsupported, generate
-
     try:
         generate(mech, phi)
     except Unsupported:

@@ -18,6 +18,7 @@ import importlib.util
 import os
 import sys
 import tempfile
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -28,9 +29,11 @@ from ..errors import InputError, check_finite
 from .averages import angle_weights
 from .dyad_forms import scalar_forms
 from .engines import use_fused
-from .fused_source import KERNEL_BODY_FIELDS, SUMMARY_FIELDS, Generated, Unsupported, generate
-from .kinematics import DyadReport, Kinematics, SlideMotion, kinematics_result
+from .fused_generator import Unsupported
+from .fused_source import KERNEL_BODY_FIELDS, SUMMARY_FIELDS, Generated, generate
 from .model import joints
+from .motion import DyadReport, Kinematics, SlideMotion, kinematics_result
+from .reactions import Forces, Joint, Reaction
 from .refs import GROUND, column, full
 from .state import BodyState
 
@@ -161,6 +164,11 @@ def drive_table(value, phi: np.ndarray, designs: int | None) -> np.ndarray:
     return np.ascontiguousarray(np.broadcast_to(arr, (arr.shape[0], phi.size)))
 
 
+#: The NumPy engine (:func:`machdyn.linkage.kinematics.kinematics`), passed in by its caller: the fused engine
+#: asks it for what the kernel does not compute (the transmission angles, on demand).
+Reference = Callable[..., Kinematics]
+
+
 @dataclass(frozen=True)
 class Run:
     """What a fused pass returns: per-design summaries ``summary`` (N, 7 + joints) and, when asked for, the
@@ -207,10 +215,11 @@ def run(mech, phi, speed, acceleration, *, designs: int, about=(0.0, 0.0), serie
     return Run(generated, out, S if series else None, P, inputs)
 
 
-def fused_kinematics(mech, phi, omega, eps, shape, on_fail: str) -> Kinematics:
-    """:func:`~machdyn.linkage.kinematics.kinematics` by the fused engine (same result, to rounding)."""
-    return kinematics_from_run(mech, phi, omega, eps, shape, on_fail, _series_run(mech, phi, omega, eps, shape,
-                                                                                  forces=False))
+def fused_kinematics(mech, phi, omega, eps, shape, on_fail: str, reference: Reference) -> Kinematics:
+    """:func:`~machdyn.linkage.kinematics.kinematics` by the fused engine (same result, to rounding);
+    ``reference`` is the NumPy engine, asked for the transmission angles if they are read."""
+    return kinematics_from_run(mech, phi, omega, eps, shape, on_fail,
+                               _series_run(mech, phi, omega, eps, shape, forces=False), reference)
 
 
 def _series_run(mech, phi, omega, eps, shape, forces: bool) -> Run:
@@ -218,7 +227,7 @@ def _series_run(mech, phi, omega, eps, shape, forces: bool) -> Run:
     return run(mech, phi, omega, eps, designs=n, series=True, forces=forces)
 
 
-def kinematics_from_run(mech, phi, omega, eps, shape, on_fail: str, result: Run) -> Kinematics:
+def kinematics_from_run(mech, phi, omega, eps, shape, on_fail: str, result: Run, reference: Reference) -> Kinematics:
     """The :class:`Kinematics` held in a series run."""
     states = {}
     with np.errstate(all="ignore"):
@@ -237,19 +246,16 @@ def kinematics_from_run(mech, phi, omega, eps, shape, on_fail: str, result: Run)
                                          for f in ("s", "v", "a")))
 
         def transmission(i=i):  # computed on demand, by the reference engine
-            from .kinematics import kinematics
-
-            return kinematics(mech, phi, omega, eps, on_fail="mask").dyad_reports[i].transmission
+            return reference(mech, phi, omega, eps, on_fail="mask").dyad_reports[i].transmission
 
         reports.append(DyadReport(d.kind, (d.a, d.b), series_of(result, f"dyad.{d.a}-{d.b}.det", shape),
                                   transmission))
     return kinematics_result(mech, phi, omega, eps, shape, on_fail, states, slides, reports, failing, assembled)
 
 
-def fused_kinetostatics(mech, crank_angle, speed, acceleration, engine: str):
+def fused_kinetostatics(mech, crank_angle, speed, acceleration, engine: str, reference: Reference):
     """:func:`~machdyn.linkage.kinetostatics.kinetostatics` by the fused engine, or None when ``engine``
-    'auto' leaves the request to the NumPy engine."""
-    from .kinetostatics import Forces, Joint, Reaction
+    'auto' leaves the request to the NumPy engine; ``reference`` as for :func:`fused_kinematics`."""
 
     phi = np.asarray(crank_angle, dtype=float)
     check_finite("crank angle", phi, "rad")
@@ -264,7 +270,7 @@ def fused_kinetostatics(mech, crank_angle, speed, acceleration, engine: str):
     if not use_fused(engine, mech, phi, int(np.prod(shape))):
         return None
     result = _series_run(mech, phi, omega, eps, shape, forces=True)
-    kin = kinematics_from_run(mech, phi, omega, eps, shape, "raise", result)
+    kin = kinematics_from_run(mech, phi, omega, eps, shape, "raise", result, reference)
     joint_list = tuple(Joint(*j) for j in joints(mech))
     reactions = {}
     for j, joint in enumerate(joint_list):

@@ -6,7 +6,7 @@ bodies. The forms are the NumPy engine's too: both engines compute one text, so 
 
 from __future__ import annotations
 
-from .fused_source import Generator
+from .fused_generator import Generator
 from .refs import split_ref
 
 
@@ -199,3 +199,7 @@ def prp_code(gen: Generator, d) -> None:
         gen.couple_back(b2, f"{f}cb")
 
     gen.force_solvers.append(forces)
+
+
+#: Each dyad type's code, by its kind (``DyadType.kind``): the fused engine's half of a dyad's declaration.
+EMITTERS = {"RRR": rrr_code, "RRP": rrp_code, "RPR": rpr_code, "PRP": prp_code}

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -26,8 +27,8 @@ from ..errors import InputError
 from .averages import angle_weights
 from .fused import crank_trig, drive_table, load_kernel, prepared
 from .fused_source import SUMMARY_FIELDS, Generated, indent, position_loops, summary_reduction, summary_rows
-from .kinematics import is_full_turn
 from .loads import window
+from .motion import is_full_turn
 
 #: The text of the reductions, hashed into each kernel's text: a changed reduction is a new kernel (numba's
 #: cache does not follow a kernel's callees).
@@ -49,8 +50,6 @@ def _threads() -> int:
 
 
 def _pool():
-    from concurrent.futures import ThreadPoolExecutor
-
     if not _POOL:
         _POOL.append(ThreadPoolExecutor(max_workers=_threads(), thread_name_prefix="machdyn-fused"))
     return _POOL[0]

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from .kinematics import is_full_turn
+from .motion import is_full_turn
 
 
 @dataclass(frozen=True)

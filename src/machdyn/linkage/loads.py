@@ -8,8 +8,8 @@ from typing import Any
 
 import numpy as np
 
-from .kinematics import Kinematics
 from .model import LoadValue
+from .motion import Kinematics
 from .refs import GROUND, column, split_ref
 from .state import PointState
 

@@ -16,8 +16,8 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
-from .kinematics import Kinematics
 from .loads import mass_elements
+from .motion import Kinematics
 
 
 @dataclass(frozen=True)

@@ -372,3 +372,28 @@ def _stack(items: list, path: str):
         other = next(v for v in items if v != first)
         raise InputError(f"The design variants differ in structure at {path}: {first!r} vs {other!r}.")
     return first
+
+
+def output_bodies(mech: Mechanism) -> list[tuple[str, str]]:
+    """The outputs of a mechanism whose limit positions, strokes and time ratios matter, in dyad order.
+
+    The one definition of an output: each dyad declares its own (``Dyad.outputs``), a slider on a ground
+    guide (its travel) or a rocker pinned to the ground (its angle).
+
+    Parameters
+    ----------
+    mech : Mechanism
+        The mechanism.
+
+    Returns
+    -------
+    list of (str, str)
+        (body, "slide" or "angle") of each output.
+
+    Examples
+    --------
+    >>> from machdyn.linkage import four_bar, slider_crank
+    >>> output_bodies(four_bar(0.02, 0.08, 0.07, 0.09)), output_bodies(slider_crank(0.1, 0.3))
+    ([('rocker', 'angle')], [('slider', 'slide')])
+    """
+    return [(out.body, out.kind) for d in mech.dyads for out in d.outputs()]

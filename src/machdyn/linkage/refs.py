@@ -7,20 +7,28 @@ or arrays of N design variants; as columns (N, 1) they broadcast against M crank
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from collections.abc import Mapping
+from typing import Any, Protocol
 
 import numpy as np
 
 from ..errors import InputError
-
-if TYPE_CHECKING:
-    from .model import Mechanism
 
 GROUND = "ground"
 
 Array = np.ndarray
 Number = float | Array
 Vec = tuple[Number, Number]
+
+
+class Points(Protocol):
+    """What a point lookup reads of a mechanism (a :class:`~machdyn.linkage.model.Mechanism` is one): its ground
+    points and its bodies, each with its named points."""
+
+    @property
+    def ground(self) -> Mapping[str, Vec]: ...
+
+    def body(self, name: str) -> Any: ...
 
 
 def split_ref(ref: str) -> tuple[str, str]:
@@ -39,7 +47,7 @@ def column(value):
     return arr[:, None] if arr.ndim == 1 else arr
 
 
-def local_point(mech: Mechanism, body: str, point: str):
+def local_point(mech: Points, body: str, point: str):
     """Body-frame coordinates [m] of ``point`` of ``body`` (or of a ground point), as columns."""
     if body == GROUND:
         x, y = mech.ground[point]

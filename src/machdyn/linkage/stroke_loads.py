@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from .kinematics import kinematics
 from .model import Mechanism, PointForce
 from .refs import split_ref
 
@@ -82,8 +83,6 @@ def stroke_load(mech: Mechanism, name: str, point: str, distance: Sequence[float
     -------
     StrokeLoad
     """
-    from .kinematics import kinematics
-
     x_tab = np.asarray(distance, dtype=float)
     f_tab = np.asarray(force, dtype=float)
     if x_tab.ndim != 1 or x_tab.size < 2 or x_tab.shape != f_tab.shape:

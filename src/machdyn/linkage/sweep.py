@@ -11,9 +11,12 @@ import numpy as np
 from ..errors import InputError
 from .averages import time_mean, time_rms
 from .engines import use_fused
-from .kinematics import kinematics, singular
+from .fused import run
+from .fused_source import SUMMARY_FIELDS
+from .kinematics import kinematics
 from .kinetostatics import kinetostatics
 from .model import Mechanism
+from .motion import singular
 
 #: Positions (designs x crank angles) evaluated per chunk: large enough to amortise NumPy's per-call cost,
 #: small enough that the ~100 float64 arrays alive at once stay near 100 MB.
@@ -99,9 +102,6 @@ def sweep(
 
 
 def _fused_sweep(mech, phi, speed, acceleration, n, about, per_chunk, progress) -> SweepResult:
-    from .fused import run
-    from .fused_source import SUMMARY_FIELDS
-
     result = run(mech, phi, speed, acceleration, designs=n, about=about, forces=True, progress=progress,
                  chunk_designs=per_chunk)
     out = result.summary

@@ -24,6 +24,9 @@ import numpy as np
 
 from ..constants import DOWNWARD_GRAVITY
 from ..errors import AssemblyError, InputError, check_finite, check_positive
+from ..linkage import energy, four_bar, kinematics
+from ..linkage.extremes import refine_extreme
+from ..linkage.model import PointForce
 
 __all__ = [
     "Compactor",
@@ -485,9 +488,6 @@ class Compactor:
         Bodies ``crank`` {O, A}, ``coupler`` = the plate {A, B, Q}, ``rocker`` = the pendulum {D = C, B}; ground
         points O and D = C = (l, h). The compaction force is the point force ``Q`` at ``coupler.Q``.
         """
-        from ..linkage import four_bar
-        from ..linkage.model import PointForce
-
         plate_com = 0.5 * self.l if self.plate_com is None else self.plate_com
         pendulum_com = 0.5 * self.R if self.pendulum_com is None else self.pendulum_com
         u = self.l - self.q_from_b
@@ -509,8 +509,6 @@ class Compactor:
 
     def kinematics(self, phi):
         """Engine kinematics at crank angles phi [rad] with speed omega1."""
-        from ..linkage import kinematics
-
         return kinematics(self.mechanism(), phi, speed=self.omega1)
 
     def angles(self, phi):
@@ -526,8 +524,6 @@ class Compactor:
         "ok": gamma_max < limit, "transmission_min"/"transmission_max": range of :func:`transmission_angle`
         [rad]}. The extreme is located on a grid of ``samples`` angles and refined by re-sampling around it.
         """
-        from ..linkage.extremes import refine_extreme
-
         phi = np.linspace(0.0, 2.0 * np.pi, int(samples))
         k = self.kinematics(phi)
         th2, th3 = k.body("coupler").angle, k.body("rocker").angle
@@ -544,13 +540,9 @@ class Compactor:
     def reduced_inertia(self, phi):
         """Reduced moment of inertia [kg m^2] at crank angles phi (seed 003 eq 18) = 2 KE / omega1^2, from the
         engine's energy."""
-        from ..linkage import energy
-
         return energy(self.mechanism(), phi, speed=self.omega1).reduced_inertia
 
     def reduced_moment(self, phi):
         """Reduced moment of the loads [N m] at crank angles phi (corrected seed 003 eq 19): the power of
         gravity (G1, G2, G3) and of Q at its own point, divided by omega1, from the engine's energy."""
-        from ..linkage import energy
-
         return energy(self.mechanism(), phi, speed=self.omega1).reduced_moment

@@ -17,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from ..explore.execution import announce_estimate
 from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
 from .constraints import CLOSES, violations
 from .evaluate import evaluate
@@ -147,8 +148,6 @@ def differential_evolution(evaluator: Evaluator, *, population: int, generations
         costs = evaluator.scalar_cost(np.asarray(xt).T)
         history["feasible"].append(float(np.mean(costs < INFEASIBLE)))
         if first:  # the first generation's time, times the generations: the estimate of the whole search
-            from ..explore.execution import announce_estimate
-
             per = time.perf_counter() - began
             announce_estimate(per * (generations + 1), f"an optimisation of {generations:,} generations of "
                               f"{np.asarray(xt).shape[1]:,} designs ({per:.2g} s per generation)")

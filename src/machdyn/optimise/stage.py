@@ -3,15 +3,23 @@
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
 
 from ..errors import ProblemFileError
+from ..limits import held_values_error
 from ..pipeline import Capability, Outcome, StageContext
+from ..pipelines.design_views import analysed, design_problem
+from ..problem.build import crank_angles
+from ..results.catalogue import catalogue, find, label
 from ..results.labels import Label
-from .result import OptimiseResult
+from .evaluate import result_unit
+from .pareto import spacing
+from .result import NoFeasibleDesign, OptimiseResult
 from .schema import OptimiseSpec
+from .study import optimise, setup
 
 #: The status columns of the population evaluator: checks of the best design, not results to report.
 STATUS_KEYS = ("assembled", "regular", "assembled_fraction", "dead_point", "branch_change", "near_dead_point",
@@ -32,8 +40,6 @@ LABELS = {
 
 def _text(key: str) -> str:
     """The catalogue's text of a result, in lower case after "Best design: "."""
-    from ..results.catalogue import catalogue, find, label
-
     found = label(key)
     if found is None:  # a capability's result (optimised design by design)
         declared = find(key, catalogue())
@@ -44,10 +50,6 @@ def _text(key: str) -> str:
 
 def check(problem: Any, table: OptimiseSpec, source: str | None = None) -> list[tuple[str, str]]:
     """The table's mistakes that need the problem: unknown quantities and results, bounds in wrong units."""
-    from ..limits import held_values_error
-    from ..problem.build import crank_angles
-    from .study import setup
-
     if getattr(problem, "mechanism", None) is not None:  # a linkage population holds designs x crank angles
         too_many = held_values_error(table.population, crank_angles(problem).size)
         if too_many is not None:
@@ -63,10 +65,6 @@ def run(ctx: StageContext) -> Outcome:
     """Optimise the problem's design as its ``[optimise]`` table says; the best design's variables and results,
     the search's history (``optimise_history.csv``) and, for several objectives, the front
     (``optimise_front.csv``)."""
-    from .evaluate import result_unit
-    from .result import NoFeasibleDesign
-    from .study import optimise
-
     try:
         result = optimise(ctx.problem, ctx.table, ctx.run_design)
     except NoFeasibleDesign as exc:
@@ -116,8 +114,6 @@ def run(ctx: StageContext) -> Outcome:
     if h.hypervolume is not None:
         series["optimise_history"]["hypervolume"] = (h.hypervolume, "")
     if result.front_x is not None and result.front_f is not None:
-        from .pareto import spacing
-
         scalars["optimise.front_size"] = float(len(result.front_x))
         summary.append("optimise.front_size")
         gap = spacing(result.front_f)
@@ -148,9 +144,6 @@ def run(ctx: StageContext) -> Outcome:
 
 def with_views(problem: Any, result: Any) -> Any:
     """The result with the nominal design and the optimum analysed for playback, side by side."""
-    from dataclasses import replace
-
-    from ..pipelines.design_views import analysed, design_problem
 
     views = (analysed(design_problem(problem, {}), "nominal"),
              analysed(result.problem, "optimum", 0) if result.problem is not None else None)

@@ -9,10 +9,13 @@ from typing import Any
 import numpy as np
 
 from ..errors import ProblemFileError
+from ..problem.build import build_mechanism, crank_angles
+from ..problem.dumper import dump_problem
 from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
 from .by_runs import RunEvaluator, setup_by_runs, verify_by_runs
 from .constraints import parse_goals, violations
 from .evaluate import evaluate, result_names, result_unit
+from .pareto import hypervolume_converged, nsga2
 from .per_design import RunDesign, capability_results
 from .result import OptimiseResult
 from .schema import OptimiseSpec
@@ -46,8 +49,6 @@ def setup(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None = None)
     constraints may name the linkage's results (computed for the whole population at once) and the results of
     the file's capability tables (``flywheel.mass``, ``parts...``: each design run by ``run_design``, see
     :mod:`machdyn.optimise.per_design`)."""
-    from ..problem.build import build_mechanism, crank_angles
-
     if getattr(problem, "mechanism", None) is None:  # a shaft line, a cam: every design run whole
         return setup_by_runs(problem, spec, run_design)
     problems: list[tuple[str, str]] = []
@@ -92,8 +93,6 @@ def optimise(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None = No
     when no design meets them all. A search that stops without converging is reported in ``converged``,
     ``message`` and ``warnings``.
     """
-    from ..problem.dumper import dump_problem
-
     ev = setup(problem, spec, run_design)
     space = ev.space
     warnings: list[str] = []
@@ -105,8 +104,6 @@ def optimise(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None = No
         )
         method = "differential_evolution"
     else:
-        from .pareto import hypervolume_converged, nsga2
-
         front_x, front_f, history, seconds = nsga2(ev, population=spec.population, generations=spec.generations,
                                                    seed=spec.seed, show=_show)
         x = front_x[0]
@@ -140,8 +137,6 @@ def optimise(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None = No
 def verify(problem: Any, ev: Evaluator) -> tuple[dict[str, float], bool]:
     """The results of one design built alone from its validated problem, and whether it meets every
     constraint (and closes at every crank angle)."""
-    from ..problem.build import build_mechanism
-
     if isinstance(ev, RunEvaluator):
         return verify_by_runs(problem, ev)
     mech = build_mechanism(problem)

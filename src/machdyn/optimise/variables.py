@@ -17,8 +17,11 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError, ProblemFileError
+from ..linkage import stack_designs
+from ..problem.build import build_mechanism
 from ..problem.fields import FieldError, Unit, to_si
-from ..problem.paths import assign, quantity_unit, value_at
+from ..problem.paths import assign, design_problem, quantity_unit, value_at
+from ..units import quantity_of_text, unit_of_text, ureg
 from .formula import FORMULA_CONSTANTS, FORMULA_FUNCTIONS, Formula, compile_formula
 from .schema import OptimiseSpec
 
@@ -43,8 +46,6 @@ def _default_name(path: str) -> str:
 
 
 def _display(text: Any, meta: Unit) -> str:
-    from ..units import quantity_of_text
-
     try:
         return f"{quantity_of_text(str(text)).units:~}" or meta.unit
     except Exception:  # noqa: BLE001 - the value's own error is reported by to_si
@@ -113,16 +114,12 @@ class SearchSpace:
     def problem_at(self, x) -> Any:
         """The validated problem of one design (a vector of V values, SI): written out and read back, so
         every field's rule is checked as for a file."""
-        from ..problem.paths import design_problem
-
         values = self.values(np.asarray(x, dtype=float)[None, :])
         return design_problem(self.problem, {path: float(arr[0]) for path, arr in values.items()})
 
     def population(self, population) -> Population:
         """The stacked engine model of a population (N x V, SI): one build for the standard mechanisms, a
         build per design and :func:`~machdyn.linkage.stack_designs` otherwise."""
-        from ..problem.build import build_mechanism
-
         values = self.values(population)
         bad, reasons = self._broken(values)
         if bad.all():
@@ -144,9 +141,6 @@ class SearchSpace:
         return Population(mech, speed, accel, ~bad, tuple(reasons))
 
     def _build_each(self, values, bad, reasons):
-        from ..linkage import stack_designs
-        from ..problem.build import build_mechanism
-
         n = len(bad)
         mechs: list[Any] = [None] * n
         for i in range(n):
@@ -225,8 +219,6 @@ def search_space(problem: Any, spec: OptimiseSpec) -> SearchSpace:
 
 def _si_unit(unit: str) -> str:
     """The SI unit of a free variable's unit (``"mm"`` -> ``"m"``)."""
-    from ..units import unit_of_text, ureg
-
     try:
         q = ureg.Quantity(1.0, unit_of_text(unit)).to_base_units()
     except Exception:  # noqa: BLE001 - reported as a field error by the caller

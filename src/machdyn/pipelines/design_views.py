@@ -12,7 +12,11 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from ..errors import InputError, ProblemFileError, SingularPositionError
+from ..linkage import analyse
+from ..problem.build import build_mechanism
 from ..problem.paths import design_problem
+from .linkage_run import crank_range
 
 #: At most this many designs of a design space are analysed for playback (each adds ~100 kB to the report).
 MAX_VIEWS = 6
@@ -34,11 +38,6 @@ class DesignView:
 def analysed(problem: Any, label: str, design: int = -1) -> DesignView | None:
     """The view of a validated linkage problem, or None when it does not build or assemble over its crank
     range (such a design has no motion to show)."""
-    from ..errors import InputError, ProblemFileError, SingularPositionError
-    from ..linkage import analyse
-    from ..problem.build import build_mechanism
-    from .linkage_run import crank_range
-
     try:
         mech = build_mechanism(problem)
         angles, speed, accel = crank_range(problem)

@@ -7,24 +7,22 @@ from typing import Any
 
 import numpy as np
 
+from ..errors import InputError, SingularPositionError
+from ..linkage import analyse, diagnose, kinematics
+from ..linkage.analysis import analysed_range
 from ..pipeline import Outcome, Step
-from ..results.linkage import LINKAGE_SUMMARY, linkage_scalars
+from ..problem.build import crank_angles
+from ..results.linkage import LINKAGE_SUMMARY, full_uniform_cycle, linkage_scalars, load_powers
 
 
 def crank_range(problem: Any) -> tuple[Any, float, float]:
     """(crank angles [rad], speed [rad/s], acceleration [rad/s^2]) of a problem's ``[drive]``."""
-    from ..problem.build import crank_angles
-
     return crank_angles(problem), problem.drive.speed, problem.drive.acceleration
 
 
 def check_assembly(problem: Any, mech: Any) -> list[str]:
     """Assemble the linkage at every requested crank angle (raises the engine's error if it cannot close);
     returns the diagnostics' warnings (dead positions, ...)."""
-    from ..errors import InputError, SingularPositionError
-    from ..linkage import diagnose, kinematics
-    from ..linkage.analysis import analysed_range
-
     angles, speed, accel = crank_range(problem)
     kinematics(mech, angles, speed, accel, on_fail="raise")
     try:
@@ -35,8 +33,6 @@ def check_assembly(problem: Any, mech: Any) -> list[str]:
 
 def analyse_linkage(problem: Any, mech: Any, step: Step, warnings: list[str] | None = None) -> Outcome:
     """The constant-speed analysis of ``mech`` over the problem's crank range and its scalar results."""
-    from ..linkage import analyse
-
     angles, speed, accel = crank_range(problem)
     step("analysis")
     with _warnings.catch_warnings(record=True) as caught:
@@ -59,8 +55,6 @@ def analyse_linkage(problem: Any, mech: Any, step: Step, warnings: list[str] | N
         if str(w) not in said:
             said.append(str(w))
     if np.ndim(analysis.forces.driving_torque) == 1:
-        from ..results.linkage import full_uniform_cycle, load_powers
-
         for name, (mean, rms) in load_powers(analysis).items():
             values[f"load.{name}.mean_power"] = mean
             # Over a whole turn a process load takes work out of the machine; one that puts work in has

@@ -4,17 +4,16 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..errors import ProblemFileError
 from ..pipeline import Outcome, ProblemKind, Step
-from ..problem.schema import LinkageProblem
+from ..problem.build import build_mechanism
+from ..problem.schema import CustomSpec, LinkageProblem, LinkSpec
 from ..results.linkage import LINKAGE_LABELS
 from .linkage_run import analyse_linkage, check_assembly
 
 
 def build(problem: Any) -> tuple[Any, list[tuple[str, str]]]:
     """The engine's model of the problem, or the problems that stop it being built."""
-    from ..errors import ProblemFileError
-    from ..problem.build import build_mechanism
-
     try:
         return build_mechanism(problem), []
     except ProblemFileError as exc:
@@ -23,8 +22,6 @@ def build(problem: Any) -> tuple[Any, list[tuple[str, str]]]:
 
 def default_mass_warnings(problem: Any) -> list[str]:
     """What the file left to defaults that the user should know: bars without masses, bare custom bodies."""
-    from ..problem.schema import CustomSpec, LinkSpec
-
     spec = problem.mechanism
     if isinstance(spec, CustomSpec):
         # Custom bodies have no bar to take defaults from: a mass without inertia or centre of mass is a point

@@ -3,16 +3,24 @@ capability (:mod:`machdyn.explore.stage`) runs it for one-quantity tables and an
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
 
 from ..errors import ProblemFileError
+from ..limits import held_values_error
+from ..linkage import stack_designs
+from ..optimise.per_design import capability_results, evaluate_designs
 from ..pipeline import Outcome, StageContext
+from ..problem.build import build_mechanism, crank_angles
+from ..problem.errors import did_you_mean
+from ..problem.sweep import expand_sweep
 from ..results.catalogue import label
 from ..results.labels import Label
-from ..results.population import FAULTS
+from ..results.population import FAULTS, evaluate_population, result_names, result_unit, sweep_columns
+from .design_views import MAX_VIEWS, analysed, design_problem
+from .linkage_run import crank_range
 
 #: The per-design results a sweep ranks its designs by in the summary (the lowest of each is named).
 RANKED = ("driving_torque.max_abs", "frame_force.max")
@@ -41,9 +49,6 @@ class SweepRun:
 
 def variants(problem: Any) -> tuple[Any, list[Any]]:
     """The expanded sweep of a problem and the engine model of each variant (every variant must build)."""
-    from ..problem.build import build_mechanism
-    from ..problem.sweep import expand_sweep
-
     plan = expand_sweep(problem)
     mechs, problems = [], []
     for i, variant in enumerate(plan.problems):
@@ -57,9 +62,6 @@ def variants(problem: Any) -> tuple[Any, list[Any]]:
 
 
 def check(problem: Any, _table: Any, source: str | None = None) -> list[tuple[str, str]]:
-    from ..limits import held_values_error
-    from ..problem.build import crank_angles
-
     table = problem.sweep
     count = len(table.values) if table.values is not None else (table.count or 0)
     too_many = held_values_error(count, crank_angles(problem).size)
@@ -75,10 +77,6 @@ def check(problem: Any, _table: Any, source: str | None = None) -> list[tuple[st
 def unknown_columns(problem: Any, mech: Any) -> list[tuple[str, str]]:
     """The ``[sweep] columns`` that name no result of this mechanism or of the file's other tables (a capability's
     result, computed by a run of each variant), as (path, message)."""
-    from ..optimise.per_design import capability_results
-    from ..problem.errors import did_you_mean
-    from ..results.population import result_names
-
     known = result_names(mech, getattr(problem.mechanism, "machine", None)) + sorted(capability_results(problem))
     return [(f"sweep.columns[{i}]", f"'{key}' is not a result of this mechanism{did_you_mean(key, known)}")
             for i, key in enumerate(problem.sweep.extra_columns) if key not in known]
@@ -88,11 +86,6 @@ def run_sweep(problem: Any, run_design: Any = None) -> SweepRun:
     """The design variants of a problem's ``[sweep]``, evaluated together by the population evaluator; the
     columns that are results of the file's other tables (a capability's, :mod:`machdyn.optimise.per_design`)
     by ``run_design`` running each regular variant through the file's stages."""
-    from ..linkage import stack_designs
-    from ..optimise.per_design import capability_results, evaluate_designs
-    from ..results.population import evaluate_population, result_unit, sweep_columns
-    from .linkage_run import crank_range
-
     plan, mechs = variants(problem)
     angles, _, _ = crank_range(problem)
     speeds = np.array([v.drive.speed for v in plan.problems])
@@ -128,9 +121,6 @@ def _shown(values: np.ndarray) -> list:
 def _played(done: SweepRun) -> SweepRun:
     """The sweep with up to :data:`~machdyn.pipelines.design_views.MAX_VIEWS` regular designs, evenly spread
     over the swept values, analysed for playback."""
-    from dataclasses import replace
-
-    from .design_views import MAX_VIEWS, analysed, design_problem
 
     plan = done.plan
     regular = np.flatnonzero(np.asarray(done.columns["regular"], dtype=bool))

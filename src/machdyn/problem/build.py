@@ -15,7 +15,11 @@ import numpy as np
 
 from ..constants import DOWNWARD_GRAVITY
 from ..errors import InputError, ProblemFileError
+from ..linkage import model as m
+from ..linkage.dyad_types import DYAD_TYPES, Guide
+from ..linkage.standard import STANDARD_MECHANISMS
 from ..linkage.stroke_loads import stroke_load
+from ..results.population import compactor_plate
 from .errors import did_you_mean
 from .schema import CustomSpec, DoubleCrankSpec, LinkageProblem, LinkSpec
 
@@ -43,8 +47,6 @@ def gravity_vector(problem: LinkageProblem) -> tuple[float, float]:
 
 def _geometry(spec):
     """The mechanism from its builder (or written out for custom) and the list of (body, spec) overrides."""
-    from ..linkage.standard import STANDARD_MECHANISMS
-
     name = spec.name or spec.type
     if isinstance(spec, CustomSpec):
         return _custom(spec, name), []
@@ -52,8 +54,6 @@ def _geometry(spec):
 
 
 def _custom(spec: CustomSpec, name: str):
-    from ..linkage import model as m
-
     problems: list[tuple[str, str]] = []
     names = [b.name for b in spec.bodies]
     for i, d in enumerate(spec.dyads):
@@ -78,8 +78,6 @@ def _custom(spec: CustomSpec, name: str):
 
 def _dyad(d):
     """The engine's dyad from its problem-file table (same field names; guides and slides as tables)."""
-    from ..linkage.dyad_types import DYAD_TYPES, Guide
-
     values = {k: getattr(d, k) for k in type(d).model_fields if k != "type"}
     for key, value in values.items():
         if key.startswith("guide"):
@@ -130,8 +128,6 @@ def _machine_problems(spec, mech) -> list[tuple[str, str]]:
     and the point where the plate presses)."""
     if getattr(spec, "machine", None) != "compactor":
         return []
-    from ..results.population import compactor_plate
-
     if compactor_plate(mech) is not None:
         return []
     return [("mechanism.machine", "'compactor' needs a four-bar (type = \"four_bar\") with a coupler point "
@@ -143,8 +139,6 @@ def build_mechanism(problem: LinkageProblem):
 
     Raises :class:`~machdyn.errors.ProblemFileError` for references to unknown bodies or points and for
     every rule the engine's model check finds broken (each with its path)."""
-    from ..linkage import model as m
-
     spec = problem.mechanism
     try:
         mech, overrides = _geometry(spec)

@@ -14,6 +14,8 @@ from typing import Any
 
 from pydantic import BaseModel
 
+from ..errors import InputError
+from ..units import parse_quantity, ureg
 from .fields import PREFERRED_UNITS, Unit
 
 _BARE_KEY = re.compile(r"^[A-Za-z0-9_-]+$")
@@ -31,8 +33,6 @@ def _number_text(value: float) -> str:
 def format_quantity_exact(value: float, meta: Unit) -> str:
     """``value`` (SI) as ``"<number> <unit>"`` that parses back to exactly ``value`` (the shortest such text
     among the kind's preferred units and the SI unit)."""
-    from ..units import parse_quantity, ureg
-
     candidates = [f"{_number_text(value)} {meta.unit}".strip()]
     for unit in PREFERRED_UNITS.get(meta.kind, ()):
         if unit == meta.unit:
@@ -165,8 +165,6 @@ def dump_problem(problem: BaseModel) -> str:
     """The TOML text of a linkage or rotary-screen problem, with units; ``load_problem`` reads it back to
     an equal problem."""
     if not isinstance(problem, BaseModel):
-        from ..errors import InputError
-
         raise InputError(
             f"dump_problem writes linkage and rotary-screen problems; got a {type(problem).__name__}, whose "
             "problem file is the one it was read from."

@@ -14,6 +14,7 @@ from typing import Annotated, Any
 from pydantic import BeforeValidator
 
 from ..errors import InputError
+from ..units import parse_quantity
 
 
 @dataclass(frozen=True)
@@ -43,8 +44,6 @@ def _example(value: Any, unit: str) -> str:
 
 def to_si(value: Any, meta: Unit) -> float:
     """Convert a problem-file value to a float in ``meta.unit``; raise :class:`FieldError` saying why not."""
-    from ..units import parse_quantity
-
     if isinstance(value, bool) or not isinstance(value, str | int | float):
         raise FieldError(
             f"must be a quantity with a unit written as text, like {_example(1, _hint(meta))}; "

@@ -7,6 +7,8 @@ This module knows no kind of problem: :mod:`machdyn.reading` looks the kind of a
 from __future__ import annotations
 
 import os
+import stat
+import sys
 import tomllib
 from pathlib import Path
 from typing import Any
@@ -37,8 +39,6 @@ def _decode(raw: bytes, name: str) -> str:
 
 def _read_bounded(path: Path) -> str:
     """The text of a regular file of at most MAX_FILE_BYTES; devices, pipes and directories are refused."""
-    import stat
-
     try:
         info = path.stat()
     except FileNotFoundError:
@@ -60,8 +60,6 @@ def _read_bounded(path: Path) -> str:
 
 def read_stdin() -> str:
     """A problem file from standard input, at most MAX_FILE_BYTES."""
-    import sys
-
     stream = getattr(sys.stdin, "buffer", None)
     raw = stream.read(MAX_FILE_BYTES + 1) if stream is not None else sys.stdin.read(MAX_FILE_BYTES + 1).encode()
     return _decode(raw, "<stdin>")

@@ -5,13 +5,16 @@ value there. Used by the sweep, the exploration, the optimiser and the balance o
 from __future__ import annotations
 
 import re
+import tomllib
 import typing
 from typing import Any
 
 import numpy as np
-from pydantic import BaseModel
+from pydantic import BaseModel, ValidationError
 
-from .errors import did_you_mean
+from ..errors import ProblemFileError
+from .dumper import dump_problem
+from .errors import did_you_mean, problems_from
 from .fields import FieldError, Unit
 
 __all__ = ["assign", "quantity_unit", "segments", "value_at"]
@@ -115,13 +118,6 @@ def design_problem(problem: Any, values: typing.Mapping[str, float]) -> Any:
     every field's rule is checked as for a file (by the problem's own schema: this package knows no kind); it
     runs on its own, its model built where it is analysed. Raises :class:`~machdyn.errors.ProblemFileError`
     naming each broken rule."""
-    import tomllib
-
-    from pydantic import ValidationError
-
-    from ..errors import ProblemFileError
-    from .dumper import dump_problem
-    from .errors import problems_from
 
     schema = type(problem)
     candidate = problem.model_copy(update={t: None for t in ("sweep", "optimise") if t in schema.model_fields})

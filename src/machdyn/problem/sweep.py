@@ -36,7 +36,9 @@ import numpy as np
 from pydantic import BaseModel, Field, field_validator, model_validator
 
 from ..errors import ProblemFileError
+from ..results.catalogue import ALIASES, canonical, find, population_quantities
 from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
+from ..units import Q_, convert, quantity_of_text, unit_of_text
 from .errors import did_you_mean
 from .fields import Angle, FieldError, Unit, to_si
 from .paths import assign, quantity_unit
@@ -150,8 +152,6 @@ class SweepSpec(BaseModel):
         if method != "grid" and self.samples is None:
             raise ValueError(f"method = '{method}' needs samples = <number of designs>")
         if self.objective is not None:
-            from ..results.catalogue import find
-
             found = find(self.goal)
             if found is None or not found[0].group or found[0].kind != "number" or found[0].group == "status":
                 hint = did_you_mean(self.objective, _objective_names())
@@ -159,8 +159,6 @@ class SweepSpec(BaseModel):
                                  "driving_torque.max_abs, frame_force.max or joint.<name>.max_force); got "
                                  f"'{self.objective}'{hint}")
         for i, column in enumerate(self.columns or ()):
-            from ..results.catalogue import canonical, find
-
             found = find(canonical(column))
             if found is None and not self.quantities and "." in column:
                 continue  # perhaps a result of another table of the file: the sweep's check knows the file's tables
@@ -188,15 +186,11 @@ class SweepSpec(BaseModel):
     def goal(self) -> str:
         """The per-design result that ranks the designs (lowest is best): ``objective`` (its catalogue key) or
         the peak driving torque."""
-        from ..results.catalogue import canonical
-
         return canonical(self.objective) if self.objective else DEFAULT_OBJECTIVE
 
     @property
     def extra_columns(self) -> tuple[str, ...]:
         """The results asked for besides the default columns (``columns``, as catalogue keys)."""
-        from ..results.catalogue import canonical
-
         return tuple(canonical(c) for c in self.columns or ())
 
     @property
@@ -209,8 +203,6 @@ class SweepSpec(BaseModel):
 
 def _objective_names() -> list[str]:
     """The keys an objective may name, and the old names still accepted."""
-    from ..results.catalogue import ALIASES, population_quantities
-
     return [q.key for q in population_quantities("compactor") if not q.is_pattern] + list(ALIASES)
 
 
@@ -234,8 +226,6 @@ def _target(problem: BaseModel, path: str) -> Unit:
 
 
 def _display_unit(text: Any, meta: Unit) -> str:
-    from ..units import quantity_of_text
-
     try:
         return f"{quantity_of_text(str(text)).units:~}" or meta.unit
     except Exception:  # the value itself is reported by to_si; fall back to SI here
@@ -244,8 +234,6 @@ def _display_unit(text: Any, meta: Unit) -> str:
 
 def _written_unit(text: Any, meta: Unit) -> str:
     """The unit a value was written in (``"-1 N*m"`` -> ``"N*m"``) if it is one of the quantity's dimension."""
-    from ..units import Q_, unit_of_text
-
     parts = str(text).strip().split(maxsplit=1)
     if len(parts) == 2:
         try:
@@ -258,8 +246,6 @@ def _written_unit(text: Any, meta: Unit) -> str:
 
 def expand_sweep(problem: Any) -> SweepPlan:
     """The variants of a problem with a ``[sweep]`` table; every mistake reported at once with its path."""
-    from ..units import convert
-
     spec: SweepSpec = problem.sweep
     if spec.parameter is None or spec.is_exploration:
         raise ProblemFileError([("sweep", "expand_sweep expands a one-quantity sweep; explore several quantities "

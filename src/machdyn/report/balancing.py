@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 from markupsafe import escape
 
+from ..balancing.robust import RobustResult
 from .animation import scene, view_html
 from .html import _render, figures_html, format_value, rows_html
 from .plots import PALETTE, _finish
@@ -77,8 +78,6 @@ def plot_state_reductions(ax: Any, rows: Any, *, reference: float | None = None,
 
 def sections(outcome: Any) -> list[tuple[str, str]]:
     """The balancing section of a ``[balance]`` outcome."""
-    from ..balancing.robust import RobustResult
-
     done = outcome.results
     r = done.result
     if isinstance(r, RobustResult):

@@ -5,8 +5,10 @@ that its contact point meets the follower where the follower's own motion puts i
 computed lift. For a translating follower whose path is the line x = e (e the offset, the follower above the
 cam): a knife edge or roller centre sits at (e, √(|p|² − e²)), p the pitch point in the cam frame, and a flat face's
 contact point at (v, R_b + s) (v its offset along the face). The turn of the cam at that angle is the angle between
-p and that point, so the same drawing works whichever way the cam turns. An oscillating follower is shown in
-the static profile plot only.
+p and that point, so the same drawing works whichever way the cam turns. An oscillating follower's roller
+centre (or knife edge) is where its arm (length l, pivot at (d, 0)) meets the circle of radius |p| about the cam
+centre: x = (|p|² − l² + d²)/(2d), y = √(|p|² − x²), the arm above the line of centres as in
+:func:`machdyn.cams.followers.follower_path`.
 """
 
 from __future__ import annotations
@@ -28,17 +30,22 @@ def _pick(count: int, wanted: int) -> np.ndarray:
 
 
 def cam_scene(result: Any) -> dict[str, Any] | None:
-    """The view's scene of a :class:`~machdyn.cams.stage.CamResult` (None for an oscillating follower)."""
+    """The view's scene of a :class:`~machdyn.cams.stage.CamResult`: the cam turning under its translating or
+    oscillating follower."""
     model = result.model
     follower, profile = model.follower, model.profile
-    if follower.motion != "translating":
-        return None
+    oscillating = follower.motion == "oscillating"
     theta = np.asarray(profile.svaj.theta, dtype=float)
     s = np.asarray(profile.svaj.s, dtype=float)
     frames = _pick(theta.size, FRAMES)
     pitch = np.asarray(profile.pitch, dtype=float)
     if follower.contact == "flat":
         fixed = np.vstack([np.asarray(profile.contact_offset, dtype=float), follower.base_radius + s])
+    elif oscillating:
+        radius = np.hypot(pitch[0], pitch[1])
+        d, arm = follower.pivot_distance, follower.arm_length
+        x = (radius**2 - arm**2 + d**2) / (2.0 * d)
+        fixed = np.vstack([x, np.sqrt(np.maximum(radius**2 - x**2, 0.0))])
     else:
         radius = np.hypot(pitch[0], pitch[1])
         fixed = np.vstack([np.full(theta.size, follower.offset),
@@ -64,7 +71,16 @@ def cam_scene(result: Any) -> dict[str, Any] | None:
         points["stem.top"] = [list(np.zeros(frames.size)), list(y + stem)]
         bodies: list[dict[str, Any]] = [{"name": "follower", "shape": "link", "colour": "#d62728",
                                          "points": ["left", "right"], "angle": None}]
-        path_x = 0.0
+        path_x: float | None = 0.0
+    elif oscillating:
+        x, y = fixed[0][frames], fixed[1][frames]
+        d = float(follower.pivot_distance)
+        points["follower.centre"] = [list(x), list(y)]
+        points["follower.pivot"] = [list(np.full(frames.size, d)), list(np.zeros(frames.size))]
+        # the roller is drawn at a link's first point
+        bodies = [{"name": "follower", "shape": "link", "colour": "#d62728", "points": ["centre", "pivot"],
+                   "angle": None, "roller": float(follower.roller_radius) or None}]
+        path_x = None
     else:
         x, y = fixed[0][frames], fixed[1][frames]
         points["follower.centre"] = [list(x), list(y)]
@@ -84,8 +100,10 @@ def cam_scene(result: Any) -> dict[str, Any] | None:
     quantum = max(extent[1] - extent[0], extent[3] - extent[2]) * 1e-5
     rounded = {k: [[round(v / quantum) * quantum for v in axis] for axis in xy] for k, xy in points.items()}
     low, high = float(np.min(fixed[1])), float(np.max(fixed[1])) + stem
-    guides = [[path_x, low - 0.1 * size, path_x, high + 0.1 * size]]
-    curves = [{"title": "Lift", "unit": "mm", "y": _rounded(1e3 * s[frames]), "zero": True}]
+    guides = [] if path_x is None else [[path_x, low - 0.1 * size, path_x, high + 0.1 * size]]
+    lift = ({"title": "Swing of the arm", "unit": "°", "y": _rounded(np.degrees(s[frames])), "zero": True}
+            if oscillating else {"title": "Lift", "unit": "mm", "y": _rounded(1e3 * s[frames]), "zero": True})
+    curves = [lift]
     forces = getattr(result, "forces", None)
     if forces is not None:
         curves.append({"title": "Contact force along the path", "unit": "N",
@@ -101,7 +119,8 @@ def cam_scene(result: Any) -> dict[str, Any] | None:
         "points": rounded,
         "traces": [],
         "masses": [],
-        "ground": [{"name": "camshaft", "x": 0.0, "y": 0.0}],
+        "ground": [{"name": "camshaft", "x": 0.0, "y": 0.0}]
+        + ([{"name": "arm pivot", "x": float(follower.pivot_distance), "y": 0.0}] if oscillating else []),
         "guides": guides,
         "joints": [],
         "shaking": None,
@@ -115,6 +134,7 @@ def cam_view(result: Any) -> Markup | None:
     data = cam_scene(result)
     if data is None:
         return None
-    return view_html(data, caption="The cam turning and its follower at the computed lift: drag the slider or press "
-                                   "play; the cursors on the lift, contact force and camshaft torque follow the "
-                                   "cam angle, and a click on a curve moves the cam there.")
+    motion = "swing" if result.model.follower.motion == "oscillating" else "lift"
+    return view_html(data, caption=f"The cam turning and its follower at the computed {motion}: drag the slider or "
+                                   f"press play; the cursors on the {motion}, contact force and camshaft torque "
+                                   "follow the cam angle, and a click on a curve moves the cam there.")

@@ -14,6 +14,7 @@ import numpy as np
 
 from ..conveyor.labels import label_of
 from ..results.labels import display_factor
+from .html import figures_html, render_figure
 
 _TABLE = 'style="border-collapse:collapse;margin:0.5em 0"'
 _CELL = 'style="border:1px solid #bbb;padding:2px 8px;text-align:{align}"'
@@ -95,8 +96,6 @@ def plot_ranking(result: Any, ax: Any = None, top: int = 10) -> Any:
 
 
 def _figures(result: Any) -> str:
-    from .html import figures_html, render_figure
-
     figs = [render_figure("conveyor-power", "Power by method", "Shaft power of every method; the dark bar "
                           "sizes the drive.", (5.0, 2.6), lambda fig: plot_power_by_method(result, fig.add_subplot()))]
     if result.bending is not None:

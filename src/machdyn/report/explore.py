@@ -9,9 +9,11 @@ from typing import Any
 import numpy as np
 from markupsafe import escape
 
+from ..explore.run import Exploration
 from ..results.labels import display_factor
 from .html import _render, format_value, pretty_unit
 from .spaces import exploration_space
+from .sweep import sections as one_quantity
 
 #: At most this many quantities are drawn in the scatter matrix (the best-designs table lists them all).
 MATRIX_QUANTITIES = 6
@@ -19,11 +21,7 @@ MATRIX_QUANTITIES = 6
 
 def sections(outcome: Any) -> list[tuple[str, str]]:
     """The report sections of a ``[sweep]`` outcome."""
-    from ..explore.run import Exploration
-
     if not isinstance(outcome.results, Exploration):
-        from .sweep import sections as one_quantity
-
         return one_quantity(outcome)
     done = outcome.results
     return [(f"Design space of {', '.join(done.plan.space.names)}", exploration_section(done))]

@@ -8,6 +8,7 @@ from typing import Any
 import numpy as np
 from markupsafe import escape
 
+from ..optimise.study import show_value
 from .html import _render, figures_html, format_value, rows_html
 from .spaces import optimum_beside_nominal, pareto_space
 
@@ -54,8 +55,6 @@ def plot_pareto(result: Any, ax=None, i: int = 0, j: int = 1):
 
 def sections(outcome: Any) -> list[tuple[str, str]]:
     """The design-optimisation section of an ``[optimise]`` outcome."""
-    from ..optimise.study import show_value
-
     result = outcome.results
     if result is None:
         text = "".join(f"<pre>{escape(m)}</pre>" for m in outcome.failed_checks)

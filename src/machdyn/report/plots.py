@@ -28,6 +28,7 @@ from matplotlib.ticker import MaxNLocator
 
 from .drawing import plot_mechanism as plot_mechanism  # drawn in its own module, offered here too
 from .plotkit import PALETTE, _angle_deg, _crank_axis, _finish, _label, _rows
+from .tables import joint_list
 
 _QUANTITY = {
     "displacement": ("Displacement", 0),
@@ -143,8 +144,6 @@ def plot_joint_polar(
     same locus is drawn as Fy over Fx (a hodograph).
     """
     r = forces.joint(joint)
-    from .tables import joint_list
-
     info = next((j for j in joint_list(forces) if j[0] == joint), None)
     if title is None:
         title = f"Joint {joint}" + (f": on {info[3]} from {info[2]} [N]" if info else " [N]")

@@ -8,6 +8,7 @@ from typing import Any
 
 import numpy as np
 
+from ..shafts.balance import forward_first_harmonic
 from .html import _render, figures_html, format_value, rows_html
 from .plotkit import PALETTE, _finish
 
@@ -67,8 +68,6 @@ def _vectors(result: Any, moment: bool) -> list[tuple[complex, str, str]]:
     for m in line.balanced_masses():
         out.append((m.unbalance * ((m.position - ref) if moment else 1.0), m.name, PALETTE[0]))
     if result.balance is not None and line.balance_target == "first_harmonic":
-        from ..shafts.balance import forward_first_harmonic
-
         a, cm = forward_first_harmonic(result.loads)
         w2 = result.loads.speed ** 2
         known = sum((m.unbalance * ((m.position - ref) if moment else 1.0) for m in line.balanced_masses()), 0j)

@@ -15,6 +15,8 @@ from typing import Any
 import numpy as np
 from markupsafe import Markup
 
+from ..results.catalogue import label
+from ..results.labels import display_factor
 from .animation import design_space_html, scene, view_html
 
 
@@ -31,9 +33,6 @@ def _rows_of(views: Iterable[Any], designs: Any) -> dict[int, dict[str, Any]]:
 def sweep_space(done: Any) -> Markup:
     """The interactive scatter of a one-quantity ``[sweep]`` (:class:`machdyn.pipelines.sweep.SweepRun`): every
     per-design column of the catalogue, in its display unit, against the swept value."""
-    from ..results.catalogue import label
-    from ..results.labels import display_factor
-
     plan = done.plan
     values = np.asarray(plan.values_display, dtype=float)
     table: dict[str, Any] = {"design": np.arange(values.size), plan.parameter: values}
@@ -116,8 +115,6 @@ def pareto_space(result: Any) -> Markup | None:
     """The Pareto front of a multi-objective optimisation as an interactive scatter (None for one objective)."""
     if result.front_f is None or result.front_x is None or result.front_f.shape[1] < 2:
         return None
-    from ..results.labels import display_factor
-
     table: dict[str, Any] = {"design": np.arange(len(result.front_f))}
     units: dict[str, str] = {}
     for i, (name, unit, shown_unit) in enumerate(zip(result.names, result.units, result.display_units, strict=True)):

@@ -3,10 +3,13 @@ the population's ranking quantity against its kinematic error, and the ranked ta
 
 from __future__ import annotations
 
+from html import escape
 from typing import Any
 
 import numpy as np
 
+from ..synthesis.function import output_error
+from ..synthesis.rank import QUANTITIES
 from .html import _render, figures_html, format_value, rows_html
 from .plotkit import PALETTE, _finish
 
@@ -67,8 +70,6 @@ def plot_candidates(ax: Any, result: Any) -> Any:
 
 def plot_function(ax: Any, result: Any) -> Any:
     """Function generation: the wanted output angle and each shown candidate's over the input range."""
-    from ..synthesis.function import output_error
-
     t2, t4 = result.curve["theta2"], result.curve["theta4"]
     ax.plot(np.degrees(t2), np.degrees(t4), "k-", linewidth=2.5, alpha=0.35, label="wanted")
     for k, c in enumerate(result.candidates[:SHOWN]):
@@ -81,8 +82,6 @@ def plot_function(ax: Any, result: Any) -> Any:
 
 def plot_population(ax: Any, result: Any) -> Any:
     """The ranking quantity against the kinematic error of every candidate (filled: free of defects)."""
-    from ..synthesis.rank import QUANTITIES
-
     label, unit, _ = QUANTITIES[result.ranked_by]
     v = np.asarray(result.values[result.ranked_by], dtype=float)
     e = np.asarray(result.values["error"], dtype=float)
@@ -106,12 +105,8 @@ def plot_population(ax: Any, result: Any) -> Any:
 
 def sections(outcome: Any) -> list[tuple[str, str]]:
     """The synthesis section: figures and the ranked table."""
-    from ..synthesis.rank import QUANTITIES
-
     result = outcome.results
     if result is None:  # the task gave no linkage at all: say why
-        from html import escape
-
         why = "; ".join(outcome.failed_checks) or "no candidate"
         return [("Synthesis", f"<p>No linkage was found: {escape(why)}</p>")]
     first = plot_function if result.task == "function" else plot_candidates

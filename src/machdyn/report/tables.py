@@ -10,6 +10,7 @@ The scalar results are computed by :mod:`machdyn.results.linkage`.
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -187,8 +188,6 @@ def analysis_frames(analysis: Any, mechanism: _model.Mechanism | None = None) ->
 
 def write_csv(frames: dict[str, pd.DataFrame], directory, prefix: str = "") -> list:
     """Write each frame to ``directory/<prefix><group>.csv`` (no index column); return the paths."""
-    from pathlib import Path
-
     out_dir = Path(directory)
     out_dir.mkdir(parents=True, exist_ok=True)
     paths = []

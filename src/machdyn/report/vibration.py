@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 from markupsafe import escape
 
+from ..vibration.orders import RESONANCE_MARGIN, near_resonances, order_levels
 from .frame_view import frame_view
 from .html import _render, format_value, rows_html
 
@@ -186,8 +187,6 @@ def frame_sections(outcome: Any) -> list[tuple[str, str]]:
     study = outcome.results
     crank_hz = study.before.loads.crank_speed / (2 * np.pi)
     orders = study.before.loads.orders
-    from ..vibration.orders import RESONANCE_MARGIN, near_resonances
-
     near = [f"mode {j} ({f:.3g} Hz) near order {k} ({fk:.3g} Hz, {100 * d:+.1f} %, within "
             f"{100 * RESONANCE_MARGIN:.0f} %)" for j, f, k, fk, d in
             near_resonances(study.modes.frequencies, abs(study.before.loads.crank_speed), int(np.max(orders)))]
@@ -261,8 +260,6 @@ def predicted_note(study) -> str:
 def order_table(runs, count: int = 6) -> str:
     """HTML table of the RMS velocity [mm/s] of the first ``count`` orders of the running speed per record and
     channel (empty without a running speed); the orders below the band's lower edge read 0."""
-    from ..vibration.orders import order_levels
-
     rows = []
     for _, analysis, _, label in runs:
         for c in analysis.channels:

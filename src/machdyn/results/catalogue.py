@@ -21,6 +21,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from functools import cache
 
+from ..kinds import CAPABILITIES, KINDS, capability, kind
 from .labels import Label
 
 #: How a quantity is reduced over the crank positions of one design.
@@ -329,8 +330,6 @@ def labels(entries: Iterable[Quantity]) -> dict[str, Label]:
 def catalogue() -> tuple[Quantity, ...]:
     """Every quantity: the linkage results, the compactor's, the population checks, and each registered problem
     kind's and capability's declared results (their ``labels``), producer = the kind or the capability's table."""
-    from ..kinds import CAPABILITIES, KINDS, capability, kind
-
     out = list(_OWN)
     seen = {q.key for q in out}
     for name in KINDS:

@@ -11,6 +11,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from ..units import ureg
+
 
 @dataclass(frozen=True)
 class Label:
@@ -42,6 +44,4 @@ def display_factor(unit: str, display: str) -> float:
         return 1.0
     if (unit, display) in _SCALES:
         return _SCALES[(unit, display)]
-    from ..units import ureg
-
     return float(ureg.Quantity(1.0, unit or "dimensionless").to(display or "dimensionless").magnitude)

@@ -17,12 +17,18 @@ from typing import Any
 
 import numpy as np
 
+from ..errors import InputError
+from ..linkage import energy_fluctuation, harmonics, inertial_force
 from ..linkage import model as _model
 from ..linkage.averages import time_mean, time_rms
-from ..linkage.diagnostics import output_bodies
-from ..linkage.kinematics import is_full_turn
+from ..linkage.grashof import grashof_margin
+from ..linkage.loads import applied_forces, applied_torques
+from ..linkage.mass_centre import inertial_shaking_moment
+from ..linkage.model import output_bodies
+from ..linkage.motion import is_full_turn
 from .catalogue import MECHANISM, labels
 from .labels import Label
+from .store import collect
 
 #: Labels of the linkage results, from the catalogue (the keys made at run time are labelled by its patterns).
 LINKAGE_LABELS: dict[str, Label] = labels(MECHANISM)
@@ -170,9 +176,6 @@ def linkage_scalars(
     out["frame_force.max"] = _reduce(np.hypot(fx, fy), "max", designs)
     # The inertial shaking force and moment alone (what balancing removes), apart from the process loads and the
     # weight the frame also carries: -M a_G of the whole moving mechanism and the moment of the d'Alembert loads.
-    from ..linkage import inertial_force
-    from ..linkage.mass_centre import inertial_shaking_moment
-
     ix, iy = inertial_force(kin)  # zero for a massless (statics) model, which has no centre of mass
     out["inertial_shaking_force.max"] = _reduce(np.hypot(ix, iy), "max", designs)
     out["inertial_shaking_moment.max_abs"] = _reduce(inertial_shaking_moment(kin, (about[0], about[1])), "max_abs",
@@ -188,9 +191,6 @@ def linkage_scalars(
     out["reduced_inertia.max"] = _reduce(energy.reduced_inertia, "max", designs)
     out["reduced_inertia.mean"] = _reduce(energy.reduced_inertia, "mean", designs)
     if np.all(np.isfinite(torque)):
-        from ..errors import InputError
-        from ..linkage import energy_fluctuation
-
         try:
             out["flywheel.energy_fluctuation"] = _scalar(energy_fluctuation(torque, kin.crank_angle), designs)
         except InputError as exc:
@@ -242,8 +242,6 @@ def linkage_scalars(
         if dead is not None:
             out["dead_positions.count"] = float(len(list(_flatten(dead))))
     if mech is not None:
-        from ..linkage.grashof import grashof_margin
-
         margin = grashof_margin(mech)
         if margin is not None:  # the class itself (text) is in the diagnostics and a sweep's columns
             out["grashof.margin"] = _scalar(margin, designs)
@@ -257,8 +255,6 @@ def linkage_scalars(
 def harmonic_scalars(analysis: Any, about: tuple[float, float], orders: int) -> tuple[dict, dict]:
     """Amplitude [unit of the series] and phase [rad] of the first ``orders`` harmonics of the driving torque,
     the shaking moment about ``about`` and the frame force components, over a uniform full cycle (else none)."""
-    from ..linkage import harmonics
-
     values: dict[str, float] = {}
     units: dict[str, str] = {}
     phi = np.asarray(analysis.kinematics.crank_angle, dtype=float)
@@ -287,9 +283,6 @@ def load_powers(analysis: Any) -> dict[str, tuple[float, float]]:
     """(time-mean, RMS) power [W] of each applied point force and body torque over the analysed positions:
     P = F·v_point for a force, T·ω_body for a torque. A negative mean is a load the drive works against; a
     positive mean is a load that drives the mechanism. Single designs only."""
-    from ..linkage.averages import time_mean, time_rms
-    from ..linkage.loads import applied_forces, applied_torques
-
     kin = analysis.kinematics
     out: dict[str, tuple[float, float]] = {}
     for f in applied_forces(kin):
@@ -304,7 +297,5 @@ def load_powers(analysis: Any) -> dict[str, tuple[float, float]]:
 def analysis_scalars(analysis: Any, mechanism: _model.Mechanism | None = None) -> dict[str, dict[str, Any]]:
     """Every scalar result of an analysis as ``{key: {"value", "unit"}}`` in display units (angles in
     degrees), as written to results.json; for N design variants each value is a list of N floats."""
-    from .store import collect
-
     values, units = linkage_scalars(analysis, mechanism)
     return collect(values, LINKAGE_LABELS, units).as_json()

@@ -40,9 +40,18 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
-from ..linkage.diagnostics import output_bodies, time_ratio
-from ..linkage.model import GROUND, RRR, Mechanism, split_ref
+from ..linkage import analyse, kinematics, sweep
+from ..linkage.diagnostics import time_ratio
+from ..linkage.engines import available, check_engine
+from ..linkage.fused_population import run_population
+from ..linkage.fused_source import SUMMARY_FIELDS
+from ..linkage.grashof import grashof_margin, grashof_type
+from ..linkage.loads import window
+from ..linkage.mass_centre import inertial_force, inertial_shaking_moment
+from ..linkage.model import GROUND, RRR, Mechanism, joints, output_bodies, split_ref
+from ..linkage.motion import DEAD_TOL, is_full_turn
 from .catalogue import ENGINE_SUMMARIES, MECHANISM, find, population_quantities
+from .linkage import linkage_scalars
 
 #: Default threshold [deg] of ``poor_transmission``: a design whose transmission angle comes closer than this to
 #: 0 or 180 deg is degenerate (its joint forces grow as 1/sin mu: 5.8 times those at 90 deg at 10 deg). Norton,
@@ -85,9 +94,6 @@ def compactor_plate(mech: Mechanism) -> tuple[Any, str] | None:
 
 def result_names(mech: Mechanism, machine: str | None = None) -> list[str]:
     """Every numeric result the population evaluator gives for a mechanism of this structure (of ``machine``)."""
-    from ..linkage.grashof import grashof_margin
-    from ..linkage.model import joints
-
     names = []
     outputs = [b for b, _ in output_bodies(mech)]
     per = per_output(mech)
@@ -180,8 +186,6 @@ def evaluate_population(mech: Mechanism, phi, speed, acceleration, wanted: Itera
         elif engine == "fused":
             forces = False  # computed in the same pass
         if forces:
-            from ..linkage import sweep
-
             res = sweep(mech, phi, speed, acceleration, shaking_about=tuple(about))
             status["dead_point"] |= ~np.broadcast_to(np.asarray(res.regular, dtype=bool), (n,)) & status["assembled"]
             for key, attr in ENGINE_SUMMARIES.items():
@@ -215,14 +219,9 @@ def _fused(mech, phi, speed, acceleration, n, wanted, about, machine, limit, out
     pass (:func:`machdyn.linkage.fused_population.run_population`); None when the fused engine is not used
     (``engine`` "numpy", no numba, crank angles not 1-D, or a mechanism it does not compile: then the NumPy
     path computes them)."""
-    from ..linkage.engines import available, check_engine
-
     check_engine(engine)
     if engine == "numpy" or phi.ndim != 1 or not available():
         return None
-    from ..linkage.fused_population import run_population
-    from ..linkage.fused_source import SUMMARY_FIELDS
-
     inertial = bool(wanted & {"inertial_shaking_force.max", "inertial_shaking_moment.max_abs"})
     plate = compactor_plate(mech) if machine == "compactor" and any(k.startswith("compactor.") for k in wanted) \
         else None
@@ -317,8 +316,6 @@ def _rows(value: Any, part: Any) -> Any:
 
 def _motion(mech, phi, speed, acceleration, n, wanted, about, machine, limit, out) -> dict[str, np.ndarray]:
     """The status columns, and the motion group's results into ``out``, chunk of designs by chunk."""
-    from ..linkage import kinematics
-
     col_speed, col_acc = _column(speed, n, phi), _column(acceleration, n, phi)
     per_chunk = max(1, CHUNK_POSITIONS // max(phi.size, 1))
     parts: list[tuple[dict, dict]] = []
@@ -338,14 +335,10 @@ def _motion(mech, phi, speed, acceleration, n, wanted, about, machine, limit, ou
 
 def _full_cycle(phi: np.ndarray) -> bool:
     """True if the crank angles are evenly spaced over one full turn without the end point."""
-    from ..linkage.kinematics import is_full_turn
-
     return is_full_turn(phi)
 
 
 def _motion_chunk(mech, kin, phi, shape, wanted, about, machine, limit) -> tuple[dict, dict]:
-    from ..linkage.kinematics import DEAD_TOL
-
     assembled = np.broadcast_to(kin.assembled, shape)
     full = _full_cycle(phi)
     dead = np.zeros(shape[0], dtype=bool)
@@ -405,8 +398,6 @@ def _motion_chunk(mech, kin, phi, shape, wanted, about, machine, limit) -> tuple
                     results[f"transmission_angle.{out.body}.min"] = np.where(good, mu, np.inf).min(axis=1)
                     results[f"transmission_angle.{out.body}.max"] = np.where(good, mu, -np.inf).max(axis=1)
     if wanted & {"inertial_shaking_force.max", "inertial_shaking_moment.max_abs"}:
-        from ..linkage.mass_centre import inertial_force, inertial_shaking_moment
-
         # -sum m a per design: zero for a massless (statics) design, whatever the other designs of the chunk weigh
         ix, iy = (np.broadcast_to(np.asarray(f, dtype=float), shape) for f in inertial_force(kin))
         results["inertial_shaking_force.max"] = np.where(ok, np.hypot(ix, iy), -np.inf).max(axis=1)
@@ -434,8 +425,6 @@ def _transmission(kin, ok, shape) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def _compactor_results(mech, kin, phi, ok, shape) -> dict[str, np.ndarray]:
-    from ..linkage.loads import window
-
     plate = compactor_plate(mech)
     if plate is None:
         return {}
@@ -471,8 +460,6 @@ def _plate_lever_ratio(mech, dyad, point) -> np.ndarray:
 def _geometry(mech: Mechanism, n: int) -> dict[str, np.ndarray]:
     """The Grashof margin s + l - (p + q) [m] and class of a four-bar (Norton, *Design of Machinery*, 5th ed.,
     §2.12), NaN and "" for other mechanisms."""
-    from ..linkage.grashof import grashof_margin, grashof_type
-
     margin = grashof_margin(mech)
     if margin is None:
         return {"grashof.margin": np.full(n, np.nan), "grashof.class": np.full(n, "", dtype=object)}
@@ -482,9 +469,6 @@ def _geometry(mech: Mechanism, n: int) -> dict[str, np.ndarray]:
 
 def _analysis(mech, phi, speed, acceleration, n, regular, wanted, about) -> dict[str, np.ndarray]:
     """The analysis group's results of the regular designs, reduced by the run's own function."""
-    from ..linkage import analyse
-    from .linkage import linkage_scalars
-
     index = np.flatnonzero(regular)
     sub = mech.take_designs(index) if mech.design_count else mech
     spd, acc = (_rows(_column(v, n, phi), index) for v in (speed, acceleration))

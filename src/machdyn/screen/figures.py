@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..linkage import energy, kinetostatics
 from .formulas import (
     _refined_extreme,
     energy_range,
@@ -51,8 +52,6 @@ def energy_figures(screen: RotaryScreen = PAPER_SCREEN, samples: int = 3601) -> 
     The engine's values are found on a uniform grid of ``samples`` crank angles with the extremes refined by
     re-sampling ever finer around them, so they are exact to far below the printed digits.
     """
-    from ..linkage import energy, kinetostatics
-
     s = _s(screen)
     paper = s == PAPER_SCREEN
     w = s.omega

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..errors import InputError
 from ..pipeline import Outcome, ProblemKind, Step
 from ..pipelines.linkage_run import analyse_linkage, check_assembly
 from ..results.labels import Label
@@ -29,8 +30,6 @@ SUMMARY_FIGURES = (
 
 
 def build(problem: Any) -> tuple[Any, list[tuple[str, str]]]:
-    from ..errors import InputError
-
     if problem.drive.speed <= 0:
         speed = problem.drive.speed
         return None, [("drive.speed", f"must be > 0 rad/s for the rotary screen; got {speed:g} rad/s")]

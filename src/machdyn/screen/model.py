@@ -7,6 +7,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..errors import InputError, check_positive
+from ..linkage import slider_crank
+from ..linkage.model import PointMass, Spring
 
 
 @dataclass(frozen=True)
@@ -75,9 +77,6 @@ class RotaryScreen:
         slider displacement S' of eq 13 (without the series expansion).
         The engine's crank angle is the paper's alpha (see the module docstring).
         """
-        from ..linkage import slider_crank
-        from ..linkage.model import PointMass, Spring
-
         crank_inertia = self.m1 * self.l_AS1 * (self.R - self.l_AS1)
         if crank_inertia < 0:
             raise InputError(

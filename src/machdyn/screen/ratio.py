@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import check_positive
+from ..linkage.extremes import refine_extreme
 
 
 def w1_ratio_eq20(alpha, lam):
@@ -218,6 +219,4 @@ def pr_eq20(lam) -> float:
 def _refined_extreme(func, grid, values, pick):
     """The extreme ``pick`` ('max' or 'min') of a smooth periodic func sampled on a uniform grid, refined by
     re-sampling ever finer around the best sample (:func:`machdyn.linkage.extremes.refine_extreme`)."""
-    from ..linkage.extremes import refine_extreme
-
     return refine_extreme(func, grid, values, pick)[1]

@@ -7,7 +7,10 @@ import math
 from typing import Any
 
 from ..pipeline import Outcome, ProblemKind, Step
+from ..problem.dumper import dump_problem
 from ..results.labels import Label
+from .model import analyse, build
+from .rotating import unbalance
 from .schema import ShaftLineProblem
 
 LABELS = {
@@ -58,8 +61,6 @@ def _deg(a: float) -> str:
 
 def outcome_of(result: Any, problem_text: Any = None) -> Outcome:
     """Scalars, labels, series, summary and checks of a :class:`~machdyn.shafts.model.ShaftLineResult`."""
-    from .rotating import unbalance
-
     line, loads = result.line, result.loads
     sc: dict[str, Any] = {}
     labels: dict[str, Label] = {}
@@ -245,20 +246,14 @@ def outcome_of(result: Any, problem_text: Any = None) -> Outcome:
 
 
 def _build(problem: Any) -> tuple[Any, list[tuple[str, str]]]:
-    from .model import build
-
     return build(problem)
 
 
 def _analyse(problem: Any, line: Any, step: Step) -> Outcome:
-    from .model import analyse
-
     step("shaft line")
 
     def best_phases(search: Any) -> str:
         """The problem with the cylinders' phases found, as a problem file (without the search)."""
-        from ..problem.dumper import dump_problem
-
         cylinders = [c.model_copy(update={"phase": search.phases.get(c.name, c.phase)}) for c in problem.cylinders]
         return dump_problem(problem.model_copy(update={"cylinders": cylinders, "phase_search": None}))
 

@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from ..balancing.frame import frame_loads
 from ..errors import InputError
 from .rotating import ShaftLoads
 
@@ -43,8 +44,6 @@ def linkage_loads(planes: tuple[LinkagePlane, ...], speed: float, angle: np.ndar
                   reference: float = 0.0) -> tuple[ShaftLoads, np.ndarray]:
     """The frame loads of the linkages in shaft axes over the shaft ``angle`` [rad], and the shaking moment of each
     about its crank pivot [N m], a torque about the shaft axis (shape linkages x angles)."""
-    from ..balancing.frame import frame_loads
-
     theta = np.asarray(angle, dtype=float)
     z0 = np.zeros_like(theta)
     total = ShaftLoads(theta, float(speed), z0, z0, z0, z0, float(reference))

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import check_positive
+from ..errors import InputError, check_positive
 from .balance import Plane, correction_unbalances
 from .reciprocating import Cylinder, two_term_loads
 from .rotating import Mass, cycle, rotating_loads
@@ -55,8 +55,6 @@ def locomotive_balance(cylinders: tuple[Cylinder, ...], wheel_planes: tuple[floa
     check_positive("balance radius", radius, "m")
     check_positive("crank speed", speed, "rad/s")
     if not 0.0 <= fraction <= 1.0:
-        from ..errors import InputError
-
         raise InputError(f"The balanced fraction of the reciprocating masses must lie in 0 ... 1; got {fraction:g}.")
     planes = (Plane("L", wheel_planes[0], radius), Plane("R", wheel_planes[1], radius))
     revolving = [c.crank_mass() for c in cylinders]

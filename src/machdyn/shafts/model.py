@@ -13,7 +13,9 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, ProblemFileError
+from ..problem.build import build_mechanism
+from ..problem.schema import DriveSpec, LinkageProblem, LoadsSpec
 from .balance import (
     BalanceResult,
     Plane,
@@ -111,10 +113,6 @@ def _field(spec: Any, problems: list) -> FieldBalance | None:
 
 
 def _linkage(spec: Any, where: str, speed: float, problems: list) -> LinkagePlane | None:
-    from ..errors import ProblemFileError
-    from ..problem.build import build_mechanism
-    from ..problem.schema import DriveSpec, LinkageProblem, LoadsSpec
-
     try:
         drive = DriveSpec.model_construct(speed=speed, acceleration=0.0, positions=360, start=None, stop=None)
         mech = build_mechanism(LinkageProblem.model_construct(

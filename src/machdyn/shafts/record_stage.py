@@ -10,11 +10,12 @@ from typing import Any
 
 from pydantic import Field
 
-from ..errors import InputError
+from ..errors import InputError, ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext
 from ..problem.fields import Angle, PositiveMass
 from ..problem.schema import Name, Spec
 from ..results.labels import Label
+from ..vibration.study import resolve_record
 from .field import FieldBalance, TrialRun, split_onto_holes
 from .field import single_plane as field_single
 from .field import two_plane as field_two
@@ -60,8 +61,6 @@ class RecordBalance:
 def _path(name: str, source: str | None) -> Path:
     """``machdyn:PATH`` inside machdyn's data folder (the shipped records), an absolute path as it is, a relative
     one against the problem file's folder."""
-    from ..vibration.study import resolve_record
-
     return resolve_record(name, source)
 
 
@@ -116,8 +115,6 @@ def check(problem: Any, table: FieldRecordsSpec, source: str | None = None) -> l
 def run(ctx: StageContext) -> Outcome:
     result, problems = _solve(ctx.table, ctx.source)
     if result is None:  # check() has refused these already; a run without check meets the same message
-        from ..errors import ProblemFileError
-
         raise ProblemFileError(problems, ctx.source)
     fb = result.balance
     sc: dict[str, Any] = {"shaft.records.speed": result.original.speed}

@@ -20,6 +20,8 @@ from typing import Any
 
 import numpy as np
 
+from ..linkage import four_bar, slider_crank
+
 TWO_PI = 2.0 * np.pi
 
 
@@ -147,8 +149,6 @@ class Candidate:
 
     def mechanism(self, *, linear_density: float = 1.0, name: str = "candidate") -> Any:
         """The engine's model (crank pivot at the origin; uniform bars of ``linear_density`` [kg/m])."""
-        from ..linkage import four_bar, slider_crank
-
         if self.kind == "slider_crank":
             return slider_crank(self.crank, self.coupler, self.offset, slide_angle=self.slide_angle,
                                 branch=self.branch, linear_density=linear_density, name=name)

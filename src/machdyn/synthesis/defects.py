@@ -19,7 +19,7 @@ the errors are measured at the candidate's crank angles for the positions.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -89,8 +89,6 @@ def errors(c: Candidate, targets: Targets) -> tuple[float, float]:
 
 def _other_branch_closer(c: Candidate, targets: Targets) -> bool:
     """True if at some precision position the other assembly of the closure meets the target better."""
-    from dataclasses import replace
-
     other = replace(c, branch=-c.branch)
     for j in range(c.angles.size):
         one = replace(c, angles=c.angles[j:j + 1])

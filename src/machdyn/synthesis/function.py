@@ -24,12 +24,13 @@ result may still have defects (branch, order, Grashof), which :mod:`machdyn.synt
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
 
 from ..errors import InputError
-from .candidate import Candidate, four_bar_from_points
+from .candidate import Candidate, four_bar_from_points, wrap
 
 
 def chebyshev_spacing(start: float, stop: float, count: int) -> np.ndarray:
@@ -117,8 +118,6 @@ def freudenstein(theta2: Any, theta4: Any, ground: float = 1.0) -> Candidate:
 
 
 def _with_branch(cand: Candidate, theta4: np.ndarray) -> Candidate:
-    from dataclasses import replace
-
     a1 = cand.crank * np.exp(1j * cand.angles[0])
     branch = _branch_at(a1, cand.ground, cand.rocker, float(theta4[0]) - cand.output_offset)
     return replace(cand, branch=branch)
@@ -127,8 +126,6 @@ def _with_branch(cand: Candidate, theta4: np.ndarray) -> Candidate:
 def output_error(cand: Candidate, theta2: Any, theta4: Any) -> np.ndarray:
     """The candidate's rocker angle minus the wanted ``theta4`` [rad] at the crank angles ``theta2`` [rad] of the
     task (NaN where it cannot assemble)."""
-    from .candidate import wrap
-
     # the crank's angle is the task's input angle, turned by pi where Freudenstein's crank length came out < 0
     phi = np.asarray(theta2, dtype=float) + float(cand.free.get("input_offset", 0.0))
     return wrap(cand.output_angle(phi) + cand.output_offset - np.asarray(theta4, dtype=float))

@@ -14,10 +14,13 @@ from typing import Any
 
 import numpy as np
 
+from ..errors import InputError
 from ..pipeline import Outcome, ProblemKind, Step
 from ..results.labels import Label
+from .files import problem_text
 from .rank import QUANTITIES
 from .schema import SynthesisProblem, problems
+from .task import synthesise
 
 LABELS: dict[str, Label] = {
     "synthesis.candidates": Label("Candidates synthesised"),
@@ -42,10 +45,6 @@ def check(problem: Any, _model: Any) -> list[str]:
 
 
 def analyse(problem: Any, _model: Any, step: Step) -> Outcome:
-    from ..errors import InputError
-    from .files import problem_text
-    from .task import synthesise
-
     step("synthesis")
     spec = problem.synthesis
     try:

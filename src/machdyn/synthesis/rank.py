@@ -26,11 +26,13 @@ The population is ranked by the chosen quantity, defect-free designs first, then
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
 
+from ..dynamics.flywheel import flywheel_inertia_classic
+from ..linkage import BodyTorque, PointForce, energy_fluctuation, four_bar, kinematics, kinetostatics, slider_crank
 from .candidate import TWO_PI, Candidate
 from .defects import Report
 
@@ -73,8 +75,6 @@ def _angles(c: Candidate, report: Report, drive: Drive) -> np.ndarray:
 
 def _model(group: list[Candidate], drive: Drive) -> Any:
     """One engine model of candidates of one kind and branch (lengths as arrays over the designs)."""
-    from ..linkage import BodyTorque, PointForce, four_bar, slider_crank
-
     g = (0.0, -9.80665) if drive.gravity else (0.0, 0.0)
     first = group[0]
 
@@ -86,8 +86,6 @@ def _model(group: list[Candidate], drive: Drive) -> Any:
                             branch=first.branch, linear_density=drive.linear_density, gravity=g,
                             name="candidates")
         if drive.load:
-            from dataclasses import replace
-
             direction = arr("slide_angle")
             mech = replace(mech, forces=(PointForce("load", "slider.B", drive.load * np.cos(direction)[:, None],
                                                     drive.load * np.sin(direction)[:, None]),))
@@ -97,8 +95,6 @@ def _model(group: list[Candidate], drive: Drive) -> Any:
                     branch=first.branch, coupler_point=(cp[:, 0], cp[:, 1]), linear_density=drive.linear_density,
                     gravity=g, name="candidates")
     if drive.load:
-        from dataclasses import replace
-
         mech = replace(mech, torques=(BodyTorque("load", "rocker", drive.load),))
     return mech
 
@@ -119,9 +115,6 @@ def _inertial_shaking(mech: Any, kin: Any) -> np.ndarray:
 def evaluate(cands: list[Candidate], reports: list[Report], drive: Drive = Drive(),
              chunk_positions: int = CHUNK_POSITIONS) -> dict[str, np.ndarray]:
     """The per-candidate quantities of :data:`QUANTITIES` (arrays in the candidates' order), by the engine."""
-    from ..dynamics.flywheel import flywheel_inertia_classic
-    from ..linkage import energy_fluctuation, kinematics, kinetostatics
-
     n = len(cands)
     out = {k: np.full(n, np.nan) for k in QUANTITIES}
     out["error"] = np.array([max(r.position_error, r.angle_error) for r in reports], dtype=float)

@@ -27,11 +27,12 @@ and ``machdyn run`` agree.
 
 from __future__ import annotations
 
+import math
 from typing import Literal
 
 from pydantic import Field, field_validator
 
-from ..problem.fields import Angle, AngularVelocity, Force, Length, LinearDensity, PositiveLength, Torque
+from ..problem.fields import Angle, AngularVelocity, FieldError, Force, Length, LinearDensity, PositiveLength, Torque
 from ..problem.schema import Meta, Spec
 
 TASKS = ("function", "quick_return", "slider_quick_return", "motion", "path")
@@ -56,8 +57,6 @@ class RankingSpec(Spec):
     @field_validator("speed")
     @classmethod
     def _turning(cls, speed: float) -> float:
-        from ..problem.fields import FieldError
-
         if not speed > 0.0:  # the direction each candidate turns follows from its task
             raise FieldError(f"must be > 0 rad/s (each candidate turns the way its task needs); got {speed:g} rad/s")
         return speed
@@ -106,8 +105,6 @@ class SynthesisProblem(Spec):
 
 def problems(spec: SynthesisSpec) -> list[tuple[str, str]]:
     """The task's rules its schema cannot say: which fields it needs and how many positions or points."""
-    import math
-
     out: list[tuple[str, str]] = []
     need = {
         "function": ("function", "x_range", "input_range", "output_range"),

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -11,6 +11,10 @@ import numpy as np
 from ..errors import InputError
 from .candidate import Candidate
 from .defects import Report, Targets, check
+from .function import chebyshev_spacing, freudenstein, freudenstein_least_squares, function_angles, output_error
+from .motion import motion_candidates
+from .path import path_candidates
+from .quick_return import crank_rocker, slider_crank
 from .rank import QUANTITIES, Drive, evaluate, order
 
 FUNCS: dict[str, Callable[[Any], Any]] = {
@@ -44,8 +48,6 @@ class SynthesisResult:
 
 
 def _function_task(spec: Any) -> tuple[list[Candidate], list[Targets], dict]:
-    from .function import chebyshev_spacing, freudenstein, freudenstein_least_squares, function_angles
-
     f = FUNCS[spec.function]
     x0, x1 = spec.x_range
     ground = 0.1 if spec.ground is None else spec.ground
@@ -62,8 +64,6 @@ def _function_task(spec: Any) -> tuple[list[Candidate], list[Targets], dict]:
             c = freudenstein(t2, t4, ground) if n == 3 else freudenstein_least_squares(t2, t4, ground)
         except InputError:
             continue
-        from dataclasses import replace
-
         cands.append(replace(c, free={**c.free, "spacing": name}))
         targets.append(Targets(outputs=t4, scale=ground))
     if n == 3:  # the many-point least-squares fit over the whole range, beside the precision-point ones
@@ -78,10 +78,6 @@ def _function_task(spec: Any) -> tuple[list[Candidate], list[Targets], dict]:
 
 def candidates_of(spec: Any) -> tuple[list[Candidate], list[Targets], dict]:
     """The candidates of the table's task, the targets each is checked against, and what the report draws."""
-    from .motion import motion_candidates
-    from .path import path_candidates
-    from .quick_return import crank_rocker, slider_crank
-
     n = spec.candidates
     if spec.task == "function":
         return _function_task(spec)
@@ -144,8 +140,6 @@ def synthesise(spec: Any) -> SynthesisResult:
                   speed_fluctuation=r.speed_fluctuation)
     values = evaluate(cands, reports, drive)
     if spec.task == "function":  # the structural error over the whole range, not only at the points
-        from .function import output_error
-
         for i, c in enumerate(cands):
             e = np.abs(output_error(c, curve["theta2"], curve["theta4"]))
             values["error"][i] = float(np.max(e)) if np.isfinite(e).all() else np.inf

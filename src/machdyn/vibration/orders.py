@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 __all__ = ["RESONANCE_MARGIN", "band_order_warnings", "near_resonances", "order_levels", "orders_outside_band",
            "resonance_warnings"]
 
@@ -97,8 +99,6 @@ def order_levels(orders, order_rms, count: int = 6) -> list[float | None]:
 
     orders : the spectrum's orders [-], increasing and evenly spaced; order_rms : RMS per line [unit].
     """
-    import numpy as np
-
     k_all = np.asarray(orders, dtype=float)
     a_all = np.asarray(order_rms, dtype=float)
     if k_all.size < 2:

@@ -16,8 +16,13 @@ from typing import Any
 from pydantic import PrivateAttr, ValidationError
 
 from ..errors import InputError, ProblemFileError
+from ..kinds import CAPABILITIES, KINDS, kind, problem_model
 from ..pipeline import Outcome, ProblemKind, Step
+from ..problem.errors import problems_from
+from ..problem.loader import top_level_problems
 from ..problem.schema import Meta, Spec
+from .stage import check_signals, signal_outcome
+from .study import study_signals
 from .tables import SignalsTable
 
 __all__ = ["KIND", "SignalsProblem", "validate"]
@@ -37,17 +42,12 @@ class SignalsProblem(Spec):
 
 
 def _problems(problem: SignalsProblem) -> list[tuple[str, str]]:
-    from .stage import check_signals
-
     return check_signals(problem, problem.signals, problem.source)
 
 
 def validate(data: dict[str, Any], source: str | None = None) -> SignalsProblem:
     """The validated problem of a parsed ``[signals]`` file, its records read and checked against the band;
     raises one :class:`~machdyn.errors.ProblemFileError` with every mistake."""
-    from ..problem.errors import problems_from
-    from ..problem.loader import top_level_problems
-
     allowed = tuple(SignalsProblem.model_fields)
     problems = top_level_problems(data, allowed)
     machine = sorted(k for k in data if k not in allowed and k in _machine_tables())
@@ -69,15 +69,11 @@ def validate(data: dict[str, Any], source: str | None = None) -> SignalsProblem:
 
 
 def _machine_kinds() -> list[str]:
-    from ..kinds import CAPABILITIES, KINDS
-
     return [k for k in KINDS if k not in CAPABILITIES]
 
 
 def _machine_tables() -> set[str]:
     """The tables of the files of the kinds that describe a machine, by their schemas (capabilities included)."""
-    from ..kinds import CAPABILITIES, kind, problem_model
-
     tables = set(CAPABILITIES)
     for name in _machine_kinds():
         model = problem_model(name) if kind(name).schema is not None else None
@@ -86,8 +82,6 @@ def _machine_tables() -> set[str]:
 
 
 def _study(problem: SignalsProblem) -> Any:
-    from .study import study_signals
-
     try:
         return study_signals(problem.signals, source=problem.source)
     except InputError as exc:
@@ -102,8 +96,6 @@ def check(problem: SignalsProblem, _model: Any = None) -> list[str]:
 
 def analyse(problem: SignalsProblem, _model: Any, step: Step) -> Outcome:
     """The records judged: the outcome of :func:`machdyn.vibration.stage.signal_outcome`."""
-    from .stage import signal_outcome
-
     step("measured signals")
     return signal_outcome(_study(problem))
 

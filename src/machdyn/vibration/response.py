@@ -21,8 +21,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError, check_finite
+from ..linkage import harmonics
 from .frame import Frame
-from .modes import check_supported
+from .modes import check_supported, modes
 
 __all__ = [
     "Comparison",
@@ -169,8 +170,6 @@ def shaking_loads(analysis, *, orders: int = 6, origin=(0.0, 0.0), angle: float 
     angle : rotation [rad] of the mechanism's axes relative to the frame's
     design : which design variant of a sweep (None for a single design)
     """
-    from ..linkage import harmonics
-
     forces = analysis.forces
     kin = analysis.kinematics
     fx, fy = (np.asarray(v, dtype=float) for v in forces.frame_force)
@@ -350,8 +349,6 @@ def check_resonance(frame: Frame, angular_frequencies, orders) -> None:
     ...     print(str(exc)[:77])
     Order 1 at 5.033 Hz is within 0.0001 % of mode 1 of frame 'frame' (5.033 Hz,
     """
-    from .modes import modes
-
     md = modes(frame)
     w = np.asarray(angular_frequencies, dtype=float)
     for k, wk in zip(np.atleast_1d(orders), np.atleast_1d(w), strict=True):

@@ -14,8 +14,10 @@ the band edges leak by about one frequency line.
 
 from __future__ import annotations
 
+import errno
 import math
 import re
+import stat
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -23,6 +25,7 @@ import numpy as np
 
 from ..errors import InputError
 from .frame import STANDARD_GRAVITY
+from .response import reduction_percent
 
 __all__ = [
     "DEFAULT_BAND",
@@ -308,9 +311,6 @@ def _unit_of(column: str, source: str) -> tuple[str, str, float]:
 
 def _regular_file_size(p: Path) -> int:
     """The size of the regular file ``p`` [bytes]; a precise :class:`InputError` for anything else."""
-    import errno
-    import stat
-
     try:
         info = p.stat()
     except FileNotFoundError:
@@ -515,8 +515,6 @@ def analyse_record(record: Record, band=DEFAULT_BAND, *, crank_speed: float | No
 def compare_records(before: RecordAnalysis, after: RecordAnalysis) -> dict:
     """Reduction (before - after) / before x 100 [%] of the RMS velocity per channel present in both records,
     and of the mean over them (key ``"mean"``), as seeds 000 and 002 report their tests."""
-    from .response import reduction_percent
-
     common = [c.name for c in before.channels if c.name in {a.name for a in after.channels}]
     if not common:
         raise InputError(f"The records {before.source} and {after.source} have no channel name in common.")

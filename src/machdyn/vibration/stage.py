@@ -11,9 +11,15 @@ import math
 import numpy as np
 
 from ..balancing.frame import BalanceRun
+from ..errors import InputError, ProblemFileError
+from ..kinds import kind
 from ..pipeline import Capability, Outcome, StageContext
 from ..results.labels import Label
-from .study import FrameStudy, SignalStudy, study_frame, study_signals
+from .modes import check_supported
+from .orders import band_order_warnings, resonance_warnings
+from .response import check_resonance
+from .signals import analyse_record, read_record
+from .study import FrameStudy, SignalStudy, build_frame, resolve_record, study_frame, study_signals, with_variant
 from .tables import FrameTable, SignalsTable
 
 __all__ = ["FRAME", "SIGNALS", "frame_outcome", "run_frame", "run_signals", "signal_outcome"]
@@ -88,8 +94,6 @@ def _zone_warnings(severities, what: str) -> tuple[str, ...]:
 
 def frame_outcome(study: FrameStudy) -> Outcome:
     """The outcome of a frame study: flat results, labels, summary keys, series and zone-D warnings."""
-    from .orders import band_order_warnings, resonance_warnings
-
     values, labels, summary = _frame_values(study)
     loads = study.before.loads
     orders = int(np.max(loads.orders))
@@ -181,11 +185,6 @@ def run_signals(ctx: StageContext) -> Outcome:
 def check_frame(problem, table, source: str | None = None) -> list[tuple[str, str]]:
     """What ``machdyn check`` can tell without analysing: the mounts support the frame, and the variant's
     counterweights and springs sit on bodies and points of the mechanism."""
-    from ..errors import InputError, ProblemFileError
-    from .modes import check_supported
-    from .response import check_resonance
-    from .study import build_frame, with_variant
-
     problems: list[tuple[str, str]] = []
     speed = float(problem.drive.speed)
     if not speed > 0:
@@ -200,8 +199,6 @@ def check_frame(problem, table, source: str | None = None) -> list[tuple[str, st
     except InputError as exc:
         problems.append(("frame.mounts", str(exc)))
     if table.after is not None:
-        from ..kinds import kind
-
         owner = next((kind(k) for k in FRAME.kinds if kind(k).owns(problem)), None)
         try:
             mechanism, found = owner.build(problem) if owner is not None else (None, [])
@@ -221,10 +218,6 @@ def check_signals(problem, table, source: str | None = None) -> list[tuple[str, 
     """Every record is read and checked against the band: ``machdyn:`` names a shipped record, an absolute path
     is read as it is, a relative one against the problem file's folder (``source``; for TOML text given directly,
     against the working folder). In a machine's file the running speed is the machine's: ``speed`` is refused."""
-    from ..errors import InputError
-    from .signals import analyse_record, read_record
-    from .study import resolve_record
-
     problems: list[tuple[str, str]] = []
     if table.speed is not None and getattr(problem, "drive", None) is not None:
         problems.append(("signals.speed", f"the records' running speed is the machine's ([drive] speed) in a "

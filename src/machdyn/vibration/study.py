@@ -11,14 +11,18 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from importlib import resources
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from ..errors import InputError
+from ..linkage import analyse
+from ..linkage.model import PointMass, Spring
 from .frame import Frame, Mount, rope, rubber_mount, tyre
 from .modes import Modes, modes
+from .orders import band_order_warnings
 from .response import Comparison, FrameResponse, compare, shaking_loads, steady_state
 from .severity import Severity, classify
 from .signals import RecordAnalysis, analyse_record, compare_records, read_record
@@ -48,8 +52,6 @@ def build_frame(table, crank_frequency: float) -> Frame:
 
 def with_variant(mechanism, variant):
     """``mechanism`` with the point masses and springs of a ``[frame.after]`` table added."""
-    from ..linkage.model import PointMass, Spring
-
     bodies = {b.name for b in mechanism.bodies}
     added = []
     for i, c in enumerate(variant.counterweights):
@@ -111,8 +113,6 @@ def study_frame(table, mechanism, analysis, *, balanced=None) -> FrameStudy:
 
     The variant compared is the table's ``[frame.after]``; without one, a ``balanced`` model (the mechanism as
     the file's ``[balance]`` left it) is compared, labelled "balanced"."""
-    from ..linkage import analyse
-
     kin = analysis.kinematics
     crank_frequency = float(np.ravel(kin.speed)[0]) / (2 * np.pi)
     frame = build_frame(table, crank_frequency)
@@ -186,8 +186,6 @@ def resolve_record(name: str, source=None) -> Path:
     records), any other path against the problem file's folder (``source``; the working folder for text given
     directly). The file must lie inside that folder (symbolic links followed): a problem file from someone else
     cannot make machdyn read other files of the machine. Raises :class:`InputError` saying why not."""
-    from importlib import resources
-
     if name.startswith(PACKAGE_PREFIX):
         base = Path(str(resources.files("machdyn") / "data"))
         relative = name[len(PACKAGE_PREFIX):]
@@ -225,8 +223,6 @@ def study_signals(table, *, source=None, crank_speed: float | None = None,
     """Read and judge the records of a validated ``[signals]`` table (file names relative to ``source``'s
     folder); with a ``frame_study``, predicted RMS velocities in the records' band at the channels named like
     its points. ``crank_speed`` [rad/s] is the machine's running speed (the table's ``speed`` when None)."""
-    from .orders import band_order_warnings
-
     band = (float(table.band[0]), float(table.band[1]))
     speed = crank_speed if crank_speed is not None else table.speed
 

@@ -10,6 +10,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ...errors import check_finite, check_positive
+from ...linkage import double_slider_crank
+from ...linkage.model import PointMass
 
 
 def double_tamper(r_main, l_main, r_aux, l_aux, phase=np.pi, *, offset_main=0.0, offset_aux=0.0,
@@ -38,9 +40,6 @@ def double_tamper(r_main, l_main, r_aux, l_aux, phase=np.pi, *, offset_main=0.0,
     Bodies: ``crank`` (the shaft, massless, pins A1 = E and A2 = F), ``rod_1`` = main beam, ``rod_2`` =
     auxiliary beam, ``slider_1``, ``slider_2`` = the massless beam ends B and C on their guides.
     """
-    from ...linkage import double_slider_crank
-    from ...linkage.model import PointMass
-
     for label, v in (("r_main", r_main), ("l_main", l_main), ("r_aux", r_aux), ("l_aux", l_aux)):
         check_positive(label, v, "m")
     m2, m3 = beam_masses
