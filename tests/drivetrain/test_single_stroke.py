@@ -6,6 +6,7 @@ of a machine whose inertia varies with the crank angle, and through the problem 
 
 from __future__ import annotations
 
+import json
 import math
 from pathlib import Path
 
@@ -107,7 +108,7 @@ def test_a_clutch_too_weak_for_the_load_is_refused_by_name():
                       slip_torque=100.0, brake_torque=300.0, start_angle=0.0, max_time=5.0)
 
 
-def test_the_press_example_reports_its_single_stroke_and_writes_its_time_history(tmp_path):
+def test_the_press_example_reports_its_single_stroke_its_motor_duty_and_writes_its_time_history(tmp_path):
     result = CliRunner().invoke(app, ["run", str(EXAMPLE), "--out", str(tmp_path)])
     assert result.exit_code == 0, result.output
     assert "Single stroke: most strokes a minute" in result.output
@@ -118,6 +119,14 @@ def test_the_press_example_reports_its_single_stroke_and_writes_its_time_history
                                                             "clutch_torque", "motor_torque"]
     assert history["time [s]"].is_monotonic_increasing
     assert history["clutch_torque [N*m]"].abs().max() > 0
+    scalars = json.loads((tmp_path / "results.json").read_text())["scalars"]
+    load = scalars["single_stroke.motor_load"]["value"]
+    assert 0.0 < load < 1.0
+    # the example's motor runs in S1, where the torque allowed while loaded is the rated torque
+    rated = scalars["flywheel.motor_duty_rated_torque"]["value"]
+    assert scalars["single_stroke.motor_rms_torque"]["value"] == pytest.approx(load * rated, rel=1e-9)
+    # strokes at 20 a minute leave the motor idling: less loaded than running the press continuously
+    assert load < scalars["flywheel.motor_rms_load"]["value"]
 
 
 def test_a_stroke_rate_the_drive_cannot_reach_is_a_failed_check(tmp_path):
@@ -181,18 +190,3 @@ def test_a_motor_too_small_for_repeated_strokes_is_overloaded_by_name():
     # slower strokes leave the motor idling between them: a lower RMS
     slow = single_stroke_duty(k, motor, strokes_per_minute=0.25 * 60.0 / (k.stroke_time + k.recovery_time))
     assert slow.load_rms < duty.load_rms
-
-
-def test_the_press_example_reports_the_motor_duty_of_its_single_strokes(tmp_path):
-    result = CliRunner().invoke(app, ["run", str(EXAMPLE), "--out", str(tmp_path)])
-    assert result.exit_code == 0, result.output
-    import json
-
-    scalars = json.loads((tmp_path / "results.json").read_text())["scalars"]
-    load = scalars["single_stroke.motor_load"]["value"]
-    assert 0.0 < load < 1.0
-    # the example's motor runs in S1, where the torque allowed while loaded is the rated torque
-    rated = scalars["flywheel.motor_duty_rated_torque"]["value"]
-    assert scalars["single_stroke.motor_rms_torque"]["value"] == pytest.approx(load * rated, rel=1e-9)
-    # strokes at 20 a minute leave the motor idling: less loaded than running the press continuously
-    assert load < scalars["flywheel.motor_rms_load"]["value"]
