@@ -24,6 +24,7 @@ from typer.testing import CliRunner
 
 from machdyn.cli import EXIT_BAD_INPUT, EXIT_INTERNAL, app
 from machdyn.errors import MachdynError
+from machdyn.runner import run_problem
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
@@ -207,13 +208,21 @@ def _write(tmp: Path, content: Any) -> Path:
     return path
 
 
-def test_fuzzed_problem_files(tmp_path):
-    cases = _cases()
-    assert len(cases) >= 500, "at least 500 mutants per run"
+#: The mutants are checked in this many shards (every SHARDS-th mutant each), so that the test runners share them.
+SHARDS = 4
+
+
+def test_at_least_500_mutants_are_drawn_per_run():
+    assert len(_cases()) >= 500
+
+
+@pytest.mark.parametrize("shard", range(SHARDS))
+def test_fuzzed_problem_files(tmp_path, shard):
+    cases = list(enumerate(_cases()))[shard::SHARDS]
     runner = CliRunner()
     counts = {"cases": 0, "invalid": 0, "valid": 0, "full runs": 0}
     failures: list[str] = []
-    for i, (example, kind, content, path) in enumerate(cases):
+    for i, (example, kind, content, path) in cases:
         folder = tmp_path / f"case{i}"
         folder.mkdir()
         file = _write(folder, content)
@@ -242,15 +251,13 @@ def test_fuzzed_problem_files(tmp_path):
                 failures.append(f"{where}: the message does not say what is wrong: {message[-300:]}")
         elif checked.exit_code == 0:
             counts["valid"] += 1
-            if counts["full runs"] < FULL_RUNS:
+            if counts["full runs"] < FULL_RUNS // SHARDS:
                 counts["full runs"] += 1
                 ran = runner.invoke(app, ["run", str(file), "--out", str(out), "--quiet"])
                 code = ran.exit_code
                 if "Traceback" in ran.output:
                     failures.append(f"{where}: run printed a traceback")
             else:
-                from machdyn.runner import run_problem
-
                 try:
                     run_problem(file)
                     code = 0
@@ -260,7 +267,7 @@ def test_fuzzed_problem_files(tmp_path):
                 failures.append(f"{where}: check accepted it but run exited {code}")
         else:
             failures.append(f"{where}: check exited {checked.exit_code}: {checked.output[-300:]}")
-    print(f"fuzz: {counts}")  # noqa: T201 - the counts are part of the suite's output
+    print(f"fuzz, shard {shard}: {counts}")  # noqa: T201 - the counts are part of the suite's output
     assert not failures, f"{len(failures)} of {counts['cases']} mutants failed:\n" + "\n".join(failures[:25])
 
 
