@@ -132,11 +132,13 @@ class CamForces:
         return float(np.mean(self.torque) * 2.0 * np.pi)
 
 
-def jump_speed(svaj: SVAJ, train: FollowerTrain, spring: Spring) -> float:
-    """The lowest cam speed [rad/s] at which F_c reaches 0 somewhere over the turn (inf if never)."""
-    a_ = train.mass * svaj.a
+def jump_speed(svaj: SVAJ, train: FollowerTrain, spring: Spring, inertial=0.0, static=0.0) -> float:
+    """The lowest cam speed [rad/s] at which F_c reaches 0 somewhere over the turn (inf if never). A load the
+    follower drives besides its own, A w^2 + B per cam angle (``inertial`` A [N*s^2 or N*m*s^2], ``static`` B [N or
+    N*m]; a linkage it moves, :mod:`.follower_linkage`), adds to the contact force's terms in w^2 and w^0."""
+    a_ = train.mass * svaj.a + np.asarray(inertial, dtype=float)
     b_ = train.damping * svaj.v
-    c_ = spring.rate * svaj.s + spring.preload + train.load
+    c_ = spring.rate * svaj.s + spring.preload + train.load + np.asarray(static, dtype=float)
     if np.any(c_ <= 0):
         return 0.0
     neg = a_ < 0

@@ -68,7 +68,7 @@ from ..problem.schema import (
     LinkageProblem,
     LoadsSpec,
 )
-from .dynamics import FollowerTrain, Spring
+from .dynamics import FollowerTrain, Spring, jump_speed
 from .followers import Follower
 from .program import SVAJ, Program
 from .schema import FollowerLinkageTable
@@ -288,17 +288,8 @@ def linkage_load(mech: Mechanism, drive: FollowerDrive, speed: float) -> Linkage
 def jump_speed_with_linkage(svaj: SVAJ, train: FollowerTrain, spring: Spring, inertial, static) -> float:
     """The lowest cam speed [rad/s] at which the contact force with the linkage, (m a + A) w^2 + c v w +
     (k s + F_0 + F_L + B), reaches 0 somewhere (Norton, *Design of Machinery*, 5th ed., eq 15.3 with the linkage's
-    load A w^2 + B; module docstring); inf if never."""
-    a_ = train.mass * svaj.a + np.asarray(inertial)
-    b_ = train.damping * svaj.v
-    c_ = spring.rate * svaj.s + spring.preload + train.load + np.asarray(static)
-    if np.any(c_ <= 0):
-        return 0.0
-    neg = a_ < 0
-    if not np.any(neg):
-        return float("inf")
-    disc = b_[neg] ** 2 - 4.0 * a_[neg] * c_[neg]
-    return float(np.min((-b_[neg] - np.sqrt(disc)) / (2.0 * a_[neg])))
+    load A w^2 + B; module docstring); inf if never (:func:`machdyn.cams.dynamics.jump_speed`)."""
+    return jump_speed(svaj, train, spring, inertial, static)
 
 
 def spring_needed(svaj: SVAJ, train: FollowerTrain, spring: Spring, inertial, static, design_speed: float,
