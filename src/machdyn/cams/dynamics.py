@@ -96,18 +96,40 @@ def size_spring(prog: Program, train: FollowerTrain, speed: float, margin: float
     wd = speed * (1.0 + margin)
     th = np.arange(positions) * (2.0 * np.pi / positions)
     m = prog.svaj(th)
-    need = -(train.mass * m.a * wd**2 + train.damping * m.v * wd) - train.load + residual
+    need = spring_force_needed(m, train, wd) + residual
     if train.spring_rate is not None:
         k = float(train.spring_rate)
-        return Spring(k, max(float(np.max(need - k * m.s)), 0.0), wd)
+        return Spring(k, least_preload(need, m, k), wd)
     f0 = float(train.preload or 0.0)
-    low = m.s <= 1e-12 * max(prog.stroke, 1e-300)
-    if np.any(need[low] > f0):
+    k = least_rate(need, m, f0, prog.stroke)
+    if not np.isfinite(k):
+        low = m.s <= 1e-12 * max(prog.stroke, 1e-300)
         raise InputError(f"cam.spring.preload {f0:g} N is less than the {float(np.max(need[low])):.4g} N the follower "
                          "needs where it rests on the base circle; give a larger preload (or the spring rate).")
-    up = ~low
-    k = max(float(np.max((need[up] - f0) / m.s[up])), 0.0) if np.any(up) else 0.0
     return Spring(k, f0, wd)
+
+
+def spring_force_needed(svaj: SVAJ, train: FollowerTrain, speed: float, inertial=0.0, static=0.0) -> np.ndarray:
+    """The spring force [N] (or moment) that keeps the contact force at zero at each cam angle at ``speed`` [rad/s]:
+    -(m a + A) w^2 - c v w - F_L - B (the contact force of the module docstring set to 0; a load the follower
+    drives besides its own, A w^2 + B, as in :func:`jump_speed`)."""
+    return (-((train.mass * svaj.a + np.asarray(inertial, dtype=float)) * speed**2 + train.damping * svaj.v * speed)
+            - train.load - np.asarray(static, dtype=float))
+
+
+def least_preload(need: np.ndarray, svaj: SVAJ, rate: float) -> float:
+    """The least preload [N] that with the spring rate [N/m] gives at least the force ``need`` [N] everywhere."""
+    return max(float(np.max(need - rate * svaj.s)), 0.0)
+
+
+def least_rate(need: np.ndarray, svaj: SVAJ, preload: float, stroke: float) -> float:
+    """The least spring rate [N/m] that with ``preload`` [N] gives at least ``need`` [N] everywhere; inf where the
+    follower rests on the base circle (s = 0) and the preload alone is too small."""
+    low = svaj.s <= 1e-12 * max(stroke, 1e-300)
+    if np.any(need[low] > preload):
+        return float("inf")
+    up = ~low
+    return max(float(np.max((need[up] - preload) / svaj.s[up])), 0.0) if np.any(up) else 0.0
 
 
 @dataclass(frozen=True)

@@ -68,7 +68,7 @@ from ..problem.schema import (
     LinkageProblem,
     LoadsSpec,
 )
-from .dynamics import FollowerTrain, Spring, jump_speed
+from .dynamics import FollowerTrain, Spring, jump_speed, least_preload, least_rate, spring_force_needed
 from .followers import Follower
 from .program import SVAJ, Program
 from .schema import FollowerLinkageTable
@@ -298,15 +298,8 @@ def spring_needed(svaj: SVAJ, train: FollowerTrain, spring: Spring, inertial, st
     :func:`~machdyn.cams.dynamics.size_spring` with the linkage's load): the least rate at the spring's preload
     (inf if the preload alone is too small where the follower rests) and the least preload at its rate, in the
     follower's coordinate [N*m/rad], [N*m]."""
-    need = -((train.mass * svaj.a + np.asarray(inertial)) * design_speed**2 + train.damping * svaj.v * design_speed)
-    need = need - train.load - np.asarray(static)
-    preload = max(float(np.max(need - spring.rate * svaj.s)), 0.0)
-    low = svaj.s <= 1e-12 * max(stroke, 1e-300)
-    if np.any(need[low] > spring.preload):
-        return float("inf"), preload
-    up = ~low
-    rate = max(float(np.max((need[up] - spring.preload) / svaj.s[up])), 0.0) if np.any(up) else 0.0
-    return rate, preload
+    need = spring_force_needed(svaj, train, design_speed, inertial, static)
+    return least_rate(need, svaj, spring.preload, stroke), least_preload(need, svaj, spring.rate)
 
 
 def _jump_intervals(phi: np.ndarray, windows) -> np.ndarray:

@@ -112,8 +112,10 @@ class FollowerLinkageResult:
         return with_linkage(cam_machine, self.mechanism, m.program, m.follower, self.cam.clockwise, positions)
 
 
-def _prepare(problem: CamProblem, table: FollowerLinkageTable) -> tuple[Any, Any, list[tuple[str, str]]]:
-    """The cam model and the linkage's mechanism, or the problems found (each with its field)."""
+def _prepare(problem: CamProblem, table: FollowerLinkageTable,
+             closes: bool = True) -> tuple[Any, Any, list[tuple[str, str]]]:
+    """The cam model and the linkage's mechanism, or the problems found (each with its field); with ``closes``,
+    also that the linkage closes over the follower's motion at the cam's and the flywheel's positions."""
     cam = problem.cam
     found: list[tuple[str, str]] = []
     if cam.dynamics is None:
@@ -127,9 +129,9 @@ def _prepare(problem: CamProblem, table: FollowerLinkageTable) -> tuple[Any, Any
     try:
         mech = linkage_mechanism(table, model.follower, cam.rotation == "cw", model.program)
         output_body(table, mech)
-        grids = [cam.positions]
+        grids = [cam.positions] if closes else []
         flywheel = getattr(problem, "flywheel", None)
-        if flywheel is not None:  # the flywheel's reduced machine samples the linkage at its own positions
+        if flywheel is not None and closes:  # the flywheel's machine samples the linkage at its own positions
             grids.append(flywheel.positions)
         for positions in grids:
             drive = follower_drive(model.program, model.follower, cam.rotation == "cw", cam_angles(positions))
@@ -170,13 +172,16 @@ def run(ctx: StageContext) -> Outcome:
     """The stage (module docstring)."""
     problem: CamProblem = ctx.problem
     table: FollowerLinkageTable = ctx.table
-    model, mech, problems = _prepare(problem, table)
+    model, mech, problems = _prepare(problem, table, closes=False)  # the file's check solved the motion
     cam = ctx.result_of("cam", CamResult)
     if problems or cam is None or cam.forces is None or model is None:
         raise ProblemFileError(problems or [(TABLE, "the cam's analysis gave no forces")], ctx.source)
     speed = float(cam.speed)
     drive = follower_drive(model.program, model.follower, cam.clockwise, cam.model.profile.svaj.theta)
-    load = linkage_load(mech, drive, speed)
+    try:
+        load = linkage_load(mech, drive, speed)
+    except InputError as exc:
+        raise ProblemFileError([(TABLE, str(exc))], ctx.source) from None
     arm = cam.model.arm
     f = cam.forces
     total = f.torque + load.camshaft_torque
