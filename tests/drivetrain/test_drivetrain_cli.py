@@ -58,7 +58,7 @@ def test_bad_drive_train_tables_are_named(tmp_path):
     cases = [
         ('efficiency = 0.97', 'efficiency = 1.5', "efficiency"),
         ('joint = "B"', 'joint = "Q"', "parts.pins[0].joint"),
-        ('ratio = 8.0 ', 'ratio = 7.0 ', "matches no shaft"),
+        ('shaft = "flywheel shaft"     #', 'shaft = "fly shaft"     #', "names no shaft of [drivetrain]"),
         ('capacity = "120 kN"', 'capacity = "120"', "capacity"),
     ]
     for old, new, expected in cases:

@@ -40,6 +40,8 @@ from typing import Any, Literal
 import numpy as np
 from pydantic import Field, model_validator
 
+from ..dynamics.driveline import CRANK, MOTOR, DriveLine, DriveTrain
+from ..dynamics.driveline_file import line_of, line_problems, resolve_shaft
 from ..dynamics.equivalent import equivalent_machine
 from ..dynamics.stage import FlywheelRun
 from ..errors import InputError, ProblemFileError
@@ -51,7 +53,6 @@ from ..problem.schema import Spec
 from ..results.labels import Label
 from .clutch import Engagement, Stop, engage, stop_machine
 from .single_stroke import single_stroke, single_stroke_duty
-from .train import DriveTrain, Stage
 
 RPM = 30.0 / np.pi
 
@@ -62,10 +63,11 @@ class StageTable(Spec):
     efficiency: float = Field(1.0, gt=0.0, le=1.0, allow_inf_nan=False)
     inertia: Inertia = 0.0
     name: str = ""
+    shaft: str = ""   # a name for the stage's output shaft (the flywheel, clutch and brake may name it)
 
 
 class ClutchTable(Spec):
-    shaft: int | None = Field(None, ge=0)
+    shaft: int | str | None = None
     slip_torque: Torque
     motor_torque: Torque = 0.0
     strokes_per_minute: float | None = Field(None, gt=0.0, allow_inf_nan=False)
@@ -73,7 +75,7 @@ class ClutchTable(Spec):
 
 class BrakeTable(Spec):
     torque: Torque
-    shaft: int | None = Field(None, ge=0)
+    shaft: int | str | None = None
     at: list[Angle] = []
     max_angle: Angle | None = None
     max_time: Time | None = None
@@ -99,11 +101,23 @@ class DriveTrainSpec(Spec):
     @model_validator(mode="after")
     def _shafts(self):
         last = len(self.stages)
-        if self.clutch is not None and self.clutch.shaft is not None and self.clutch.shaft >= last:
-            raise ValueError(f"clutch.shaft must name a shaft before the crank shaft (0 to {last - 1}); got "
-                             f"{self.clutch.shaft}")
-        if self.brake is not None and self.brake.shaft is not None and self.brake.shaft > last:
-            raise ValueError(f"brake.shaft must be 0 to {last} (the crank shaft); got {self.brake.shaft}")
+        names = [s.shaft for s in self.stages if s.shaft]
+        for name in {n for n in names if names.count(n) > 1 or n in (MOTOR, CRANK)}:
+            raise ValueError(f"stages[*].shaft must name each shaft once, and not \"{MOTOR}\" or \"{CRANK}\" "
+                             f"(the first and the last shaft's names); got \"{name}\"")
+        if self.clutch is not None and self.clutch.shaft is not None:
+            try:
+                at = resolve_shaft(self.clutch.shaft, self)
+            except ValueError as exc:
+                raise ValueError(f"clutch.shaft {exc}") from None
+            if at >= last:
+                raise ValueError(f"clutch.shaft must name a shaft before the crank shaft (0 to {last - 1}); got "
+                                 f"{self.clutch.shaft!r}")
+        if self.brake is not None and self.brake.shaft is not None:
+            try:
+                resolve_shaft(self.brake.shaft, self)
+            except ValueError as exc:
+                raise ValueError(f"brake.shaft {exc}") from None
         if self.clutch is not None and not self.clutch.slip_torque > 0:
             raise ValueError(f"clutch.slip_torque must be > 0 N*m; got {self.clutch.slip_torque:g} N*m")
         if self.brake is not None and not self.brake.torque > 0:
@@ -130,25 +144,9 @@ class DriveTrainRun:
     single_stroke_duty: Any = None  # the motor's duty over repeated single strokes (a DutyCheck), if rated
 
 
-def train_of(table: DriveTrainSpec) -> DriveTrain:
-    stages = tuple(Stage(s.ratio, s.efficiency, s.kind, s.name) for s in table.stages)
-    return DriveTrain(stages, (table.motor_inertia, *(s.inertia for s in table.stages)))
-
-
-def flywheel_shaft(train: DriveTrain, speed_ratio: float) -> int:
-    """The shaft of the train that turns ``speed_ratio`` times faster than the crank (where ``[flywheel]``
-    puts the flywheel); an error naming the ratios where none does."""
-    ratios = train.speed_ratios
-    match = np.flatnonzero(np.isclose(ratios, speed_ratio, rtol=1e-6))
-    if match.size == 0:
-        raise InputError(f"[flywheel] speed_ratio = {speed_ratio:g} matches no shaft of [drivetrain], whose shafts "
-                         f"turn {', '.join(f'{r:g}' for r in ratios)} times as fast as the crank.")
-    return int(match[-1])
-
-
-def _clutch_shaft(table: DriveTrainSpec) -> int:
-    assert table.clutch is not None
-    return len(table.stages) - 1 if table.clutch.shaft is None else table.clutch.shaft
+def _line(problem: Any) -> DriveLine:
+    """The machine's one drive line (``[drivetrain]`` with ``[flywheel]``'s shaft and motor)."""
+    return line_of(problem, getattr(problem, "flywheel", None))
 
 
 def _peak_at_clutch(train: DriveTrain, shaft: int, crank_torque: np.ndarray) -> float:
@@ -156,17 +154,14 @@ def _peak_at_clutch(train: DriveTrain, shaft: int, crank_torque: np.ndarray) -> 
 
 
 def check(problem: Any, table: DriveTrainSpec, source: str | None = None) -> list[tuple[str, str]]:
-    """Validations ``run`` relies on: the clutch carries the largest torque of the cycle at its shaft."""
+    """Validations ``run`` relies on: the clutch carries the largest torque of the cycle at its shaft. (A value
+    of the drive line given twice is the ``[flywheel]`` check's: it names both fields.)"""
+    if line_problems(problem, getattr(problem, "flywheel", None)):
+        return []
     try:
-        train = train_of(table)
+        line = _line(problem)
     except InputError as exc:
         return [("drivetrain.stages", str(exc))]
-    flywheel = getattr(problem, "flywheel", None)
-    if flywheel is not None:
-        try:
-            flywheel_shaft(train, float(flywheel.speed_ratio))
-        except InputError as exc:
-            return [("drivetrain.stages", str(exc))]
     if table.clutch is None:
         return []
     try:
@@ -174,13 +169,13 @@ def check(problem: Any, table: DriveTrainSpec, source: str | None = None) -> lis
         torque = analyse(mech, crank_angles(360), abs(problem.drive.speed)).forces.driving_torque
     except (ProblemFileError, InputError):
         return []  # the kind's own check reports them
-    return _clutch_problems(table, train, np.asarray(torque, dtype=float))
+    return _clutch_problems(table, line, np.asarray(torque, dtype=float))
 
 
-def _clutch_problems(table: DriveTrainSpec, train: DriveTrain, torque: np.ndarray) -> list[tuple[str, str]]:
-    assert table.clutch is not None
-    shaft = _clutch_shaft(table)
-    peak = _peak_at_clutch(train, shaft, torque)
+def _clutch_problems(table: DriveTrainSpec, line: DriveLine, torque: np.ndarray) -> list[tuple[str, str]]:
+    assert table.clutch is not None and line.clutch_shaft is not None
+    shaft = line.clutch_shaft
+    peak = _peak_at_clutch(line.train, shaft, torque)
     if table.clutch.slip_torque <= peak:
         return [("drivetrain.clutch.slip_torque",
                  f"must exceed the largest torque the clutch carries on shaft {shaft} over the cycle, "
@@ -191,20 +186,21 @@ def _clutch_problems(table: DriveTrainSpec, train: DriveTrain, torque: np.ndarra
 def run(ctx: StageContext) -> Outcome:
     """Stage of ``[drivetrain]``."""
     table: DriveTrainSpec = ctx.table
-    train = train_of(table)
     flywheel = ctx.result_of("flywheel", FlywheelRun)  # None: no [flywheel], or no steady state
+    line = flywheel.line if flywheel is not None else _line(ctx.problem)
+    train = line.train
     forces = flywheel.real.real if flywheel is not None else ctx.analysis.forces
     torque = np.asarray(forces.driving_torque, dtype=float)
     if torque.ndim != 1:
         raise InputError("[drivetrain] analyses a single design; the file describes several.")
     crank_speed = float(np.mean(np.abs(np.ravel(ctx.analysis.kinematics.speed))))
-    problems = _clutch_problems(table, train, torque) if table.clutch is not None else []
+    problems = _clutch_problems(table, line, torque) if table.clutch is not None else []
     if problems:
         raise ProblemFileError(problems)
     shaft_torques = train.shaft_torques(torque)
     if flywheel is not None:
         # Upstream of the flywheel the shafts carry the motor's torque, not the linkage's peaks.
-        f = flywheel_shaft(train, float(flywheel.table.speed_ratio))
+        f = line.flywheel_shaft
         steady = flywheel.steady
         phi = np.asarray(forces.kinematics.crank_angle, dtype=float)
         motor = np.interp(np.mod(phi, 2 * np.pi), np.mod(np.ravel(steady.phi), 2 * np.pi),
@@ -215,26 +211,21 @@ def run(ctx: StageContext) -> Outcome:
     ratios = train.speed_ratios
     n = len(train.stages)
 
-    engagement, shaft = None, None
+    engagement, shaft = None, line.clutch_shaft
     if table.clutch is not None:
-        shaft = _clutch_shaft(table)
-        j = np.asarray(train.shaft_inertia)
-        scale = ratios / ratios[shaft]  # speeds relative to the clutch shaft
-        j1 = float(np.sum(j[: shaft + 1] * scale[: shaft + 1] ** 2) + fly_inertia / ratios[shaft] ** 2)
+        assert shaft is not None
+        drive_side, driven_side = _sides(line, shaft, fly_inertia)  # at the crank
         linkage = float(np.mean(machine.inertia(np.linspace(0, 2 * np.pi, 361)[:-1])))
-        j2 = float(np.sum(j[shaft + 1:] * scale[shaft + 1:] ** 2) + linkage / ratios[shaft] ** 2)
-        engagement = engage(j1, crank_speed * ratios[shaft], j2, 0.0, table.clutch.slip_torque,
-                            driving_torque=table.clutch.motor_torque)
+        to_clutch = ratios[shaft] ** 2  # inertias at the crank, taken to the clutch shaft
+        engagement = engage(drive_side / to_clutch, crank_speed * ratios[shaft], (driven_side + linkage) / to_clutch,
+                            0.0, table.clutch.slip_torque, driving_torque=table.clutch.motor_torque)
 
     stops: list[Stop] = []
     worst = None
     if table.brake is not None:
-        start = 0 if shaft is None else shaft + 1
-        j = np.asarray(train.shaft_inertia)
-        extra = float(np.sum(j[start:] * ratios[start:] ** 2))  # reflected to the crank
-        if shaft is None:
-            extra += fly_inertia
-        at_shaft = n if table.brake.shaft is None else table.brake.shaft
+        # the brake stops what the clutch (if any) leaves joined to the crank
+        extra = _sides(line, shaft, fly_inertia)[1] if shaft is not None else line.shaft_inertia + fly_inertia
+        at_shaft = n if line.brake_shaft is None else line.brake_shaft
         brake_at_crank = table.brake.torque * ratios[at_shaft]
         angles = table.brake.at or list(np.linspace(0.0, 2 * np.pi, 12, endpoint=False))
         for a in angles:
@@ -243,7 +234,7 @@ def run(ctx: StageContext) -> Outcome:
 
     stroke = None
     if table.single_stroke is not None:
-        stroke = _single_stroke(table, train, machine, flywheel, fly_inertia, crank_speed)
+        stroke = _single_stroke(table, line, machine, flywheel, fly_inertia, crank_speed)
     duty = None
     if stroke is not None and flywheel is not None and hasattr(flywheel.drive, "rated_torque"):
         assert table.clutch is not None
@@ -272,16 +263,26 @@ def idle_speed(motor: Any, nominal: float) -> float:
     return nominal
 
 
-def _single_stroke(table: DriveTrainSpec, train: DriveTrain, machine: Any, flywheel: FlywheelRun | None,
+def _sides(line: DriveLine, clutch: int, fly_inertia: float) -> tuple[float, float]:
+    """The inertias [kg·m², at the crank] on the clutch's driving side (shafts 0 .. clutch) and on its driven
+    side (the shafts after it, the linkage not included), the flywheel ``fly_inertia`` (at the crank) on the side
+    of its shaft."""
+    drive = line.inertia_between(0, clutch)
+    driven = line.inertia_between(clutch + 1, line.crank)
+    if line.flywheel_shaft <= clutch:
+        return drive + fly_inertia, driven
+    return drive, driven + fly_inertia
+
+
+def _single_stroke(table: DriveTrainSpec, line: DriveLine, machine: Any, flywheel: FlywheelRun | None,
                    fly_inertia: float, crank_speed: float) -> Any:
     """The single stroke of ``[drivetrain.single_stroke]``, everything reduced to the crank shaft: the motor of
     ``[flywheel.motor]`` (or the clutch table's constant ``motor_torque``) on the driving side."""
     assert table.clutch is not None and table.brake is not None and table.single_stroke is not None
-    shaft = _clutch_shaft(table)
-    ratios = train.speed_ratios
-    j = np.asarray(train.shaft_inertia)
-    drive_side = float(np.sum(j[: shaft + 1] * ratios[: shaft + 1] ** 2) + fly_inertia)
-    driven_side = float(np.sum(j[shaft + 1:] * ratios[shaft + 1:] ** 2))
+    assert line.clutch_shaft is not None
+    shaft = line.clutch_shaft
+    ratios = line.train.speed_ratios
+    drive_side, driven_side = _sides(line, shaft, fly_inertia)
     drive = flywheel.drive if flywheel is not None else None
     if drive is not None and hasattr(drive, "torque_at"):
         motor = drive.torque_at
@@ -293,7 +294,7 @@ def _single_stroke(table: DriveTrainSpec, train: DriveTrain, machine: Any, flywh
 
         def motor(_w: float) -> float:
             return constant
-    at_brake = len(train.stages) if table.brake.shaft is None else table.brake.shaft
+    at_brake = line.crank if line.brake_shaft is None else line.brake_shaft
     try:
         return single_stroke(machine, motor, drive_inertia=drive_side, driven_inertia=driven_side,
                              speed=idle_speed(motor, crank_speed),

@@ -18,7 +18,9 @@ from .simulate import NotSettledError, steady_state
 
 def choose_drive(motor: Any, machine, flywheel: float, speed: float, mean_torque: float):
     """The drive of the table; for "select", the smallest standard motor whose breakdown torque carries the
-    steady state's peak torque with a margin of 1.3."""
+    steady state's peak torque with a margin of 1.3, through the table's ``ratio`` where it has one (the drive
+    line's), else through the ratio that runs it at its rated speed at the crank's ``speed``. ``flywheel`` [kg·m²]
+    is every constant inertia at the crank besides the linkage (flywheel and drive-line shafts)."""
     if motor.kind == "constant_torque":
         return ConstantTorque(mean_torque)
     if motor.kind == "hydraulic":
@@ -31,7 +33,9 @@ def choose_drive(motor: Any, machine, flywheel: float, speed: float, mean_torque
         return InductionMotor(float(motor.rated_power or 0.0), rated, motor.synchronous_speed, motor.breakdown_ratio,
                               ratio, motor.efficiency, motor.rotor_inertia)
     power = max(mean_torque * speed, standard_ratings()[0])
-    choice = select_motor(power, 0.0, speed, synchronous_speed=motor.synchronous_speed,
+    # a ratio the drive line (or the table) fixes; else the one that runs the motor at its rated speed
+    at = speed if motor.ratio is None else motor.synchronous_speed * (1.0 - motor.rated_slip) / motor.ratio
+    choice = select_motor(power, 0.0, at, synchronous_speed=motor.synchronous_speed,
                           rated_slip=motor.rated_slip, breakdown_ratio=motor.breakdown_ratio,
                           gear_efficiency=motor.efficiency, rotor_inertia=motor.rotor_inertia)
     ratings = [r for r in standard_ratings() if r >= choice.motor.rated_power]

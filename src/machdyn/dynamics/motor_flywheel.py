@@ -53,7 +53,7 @@ def _deltas(machine: Any, drive: Any, inertias: np.ndarray) -> np.ndarray | None
 
 
 def flywheel_for_drive(machine: Any, drive: Any, target: float, constant_torque: float,
-                       points: int = 6) -> MotorFlywheel:
+                       points: int = 6, added: float = 0.0) -> MotorFlywheel:
     """The flywheel inertia [kg·m², at the crank] that gives the coefficient of speed fluctuation ``target``
     with ``drive`` (a drive of :mod:`machdyn.dynamics.drives`, e.g. the selected induction motor).
 
@@ -64,6 +64,8 @@ def flywheel_for_drive(machine: Any, drive: Any, target: float, constant_torque:
     target : δ, 0 < δ < 1.
     constant_torque : the flywheel sized for a constant-torque drive [kg·m²] > 0 (the search starts there).
     points : inertias per vectorised batch of steady states.
+    added : a constant inertia at the crank [kg·m²] >= 0 that turns with the flywheel whatever its size (the
+        drive line's shafts): ``constant_torque`` counts it, and the flywheel returned is the rest.
 
     Where the motor's slip alone keeps δ under the target down to 3 % of ``constant_torque``, that smallest
     flywheel is returned with the δ it gives.
@@ -93,7 +95,8 @@ def flywheel_for_drive(machine: Any, drive: Any, target: float, constant_torque:
     if found is None and below is not None and below[0] <= GRIDS[-1][0] * constant_torque * (1 + 1e-12):
         # the motor's slip alone holds δ under the target down to the smallest flywheel tried (3 % of the
         # constant-torque one): that flywheel is reported, with the δ it gives
-        return MotorFlywheel(inertia=below[0], delta=below[1], constant_torque=float(constant_torque))
+        return MotorFlywheel(inertia=max(below[0] - added, 0.0), delta=below[1],
+                             constant_torque=float(constant_torque) - added)
     if found is None:
         raise InputError(f"No flywheel between {0.03 * constant_torque:.4g} and {16 * constant_torque:.4g} kg*m^2 "
                          f"gives the coefficient of speed fluctuation {target:g} with this drive.")
@@ -111,4 +114,4 @@ def flywheel_for_drive(machine: Any, drive: Any, target: float, constant_torque:
     else:
         best = estimate(near, deltas)
         delta = target
-    return MotorFlywheel(inertia=best, delta=delta, constant_torque=float(constant_torque))
+    return MotorFlywheel(inertia=max(best - added, 0.0), delta=delta, constant_torque=float(constant_torque) - added)

@@ -35,6 +35,8 @@ from ..problem.fields import VolumeFlow as Flow
 from ..problem.schema import Spec
 from ..results.labels import Label
 from .drive_choice import choose_drive, duty_of, overloaded
+from .driveline import DriveLine
+from .driveline_file import line_of, line_problems, motor_on_line
 from .drives import InductionMotor
 from .equivalent import LinearDamper, RotaryDamper, equivalent_machine
 from .flywheel import disc_flywheel, rim_flywheel, rim_speed_limit, size_flywheel
@@ -110,14 +112,17 @@ class DamperTable(Spec):
 
 
 class FlywheelTable(Spec):
-    """``[flywheel]``: either ``delta`` (the coefficient of speed fluctuation to size for) or ``inertia``."""
+    """``[flywheel]``: either ``delta`` (the coefficient of speed fluctuation to size for) or ``inertia`` (the
+    flywheel's own moment of inertia about its shaft, ``shaft``)."""
 
     delta: float | None = Field(None, gt=0.0, lt=1.0, allow_inf_nan=False)
     inertia: Inertia | None = None
     method: Literal["exact", "classic"] = "exact"
     # size for a constant-torque drive (the classic assumption) or for the chosen motor's torque-speed curve
     size_for: Literal["constant_torque", "motor"] = "constant_torque"
-    # flywheel shaft speed / crank speed (a flywheel on a faster shaft)
+    # the flywheel's shaft: a shaft of [drivetrain] by name or number (default: the crank shaft); without a
+    # drive train, a faster shaft is given by its speed / crank speed, speed_ratio
+    shaft: int | str | None = None
     speed_ratio: float = Field(1.0, gt=0.0, allow_inf_nan=False)
     positions: int = Field(720, ge=16, le=100_000, strict=True)
     shape: Literal["disc", "rim"] = "disc"
@@ -139,7 +144,11 @@ class FlywheelTable(Spec):
 
 
 LABELS = {
-    "flywheel.inertia": Label("Flywheel: moment of inertia, reduced to the crank", "kg*m^2"),
+    "flywheel.inertia": Label("Flywheel: moment of inertia, referred to the crank", "kg*m^2"),
+    "flywheel.own_inertia": Label("Flywheel: moment of inertia about its own shaft", "kg*m^2"),
+    "flywheel.shaft_speed_ratio": Label("Flywheel: its shaft's speed / crank speed", ""),
+    "flywheel.line_inertia": Label("Drive line: shaft inertias referred to the crank (motor rotor included), "
+                                   "besides the flywheel", "kg*m^2"),
     "flywheel.inertia_exact": Label("Flywheel sized by the energy-mass (Wittenbauer) method", "kg*m^2"),
     "flywheel.inertia_classic": Label("Flywheel sized by ΔE/(ω²δ) less the mean reduced inertia", "kg*m^2"),
     "flywheel.method_difference": Label("Flywheel: classic / exact − 1", ""),
@@ -177,7 +186,8 @@ LABELS = {
     "flywheel.joint_force_change": Label("Largest change of a joint's peak force at the real speed", ""),
 }
 
-SUMMARY = ("flywheel.inertia", "flywheel.inertia_constant_torque", "flywheel.motor_slip_saving",
+SUMMARY = ("flywheel.inertia", "flywheel.own_inertia", "flywheel.shaft_speed_ratio", "flywheel.line_inertia",
+           "flywheel.inertia_constant_torque", "flywheel.motor_slip_saving",
            "flywheel.target_delta", "flywheel.delta", "flywheel.method_difference",
            "flywheel.mean_speed", "flywheel.peak_drive_torque", "flywheel.mean_power", "flywheel.motor_rated_power",
            "flywheel.motor_rms_load", "flywheel.motor_duty_load", "flywheel.motor_starts_per_hour",
@@ -197,7 +207,7 @@ def speed_loads(table: FlywheelTable) -> tuple:
 def check_flywheel(problem: Any, table: FlywheelTable, source: str | None = None) -> list[tuple[str, str]]:
     """The validations of ``[flywheel]`` that need more than its schema, so that ``check`` and ``run`` agree: a
     crank turning forwards, and a motor whose data describe a real induction motor (its drive object builds)."""
-    found: list[tuple[str, str]] = []
+    found: list[tuple[str, str]] = list(line_problems(problem, table))
     drive = getattr(problem, "drive", None)  # a cam file turns its camshaft at the cam's own speed
     speed = float(drive.speed) if drive is not None else 1.0
     if not speed > 0:
@@ -240,6 +250,12 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     """The stage: size or take the flywheel, choose or take the drive, steady state, start-up, real-speed forces."""
     table: FlywheelTable = ctx.table
     mech = ctx.mechanism
+    problems = line_problems(ctx.problem, table)
+    if problems:
+        raise ProblemFileError(problems)
+    line = line_of(ctx.problem, table)
+    added = line.shaft_inertia  # every shaft of the drive line, at the crank: it turns with the flywheel
+    motor_table = motor_on_line(table.motor, line)
     cam = ctx.result_of("cam", CamResult)
     if cam is not None:  # a cam machine: the camshaft is the crank, its reduced machine comes from the cam
         speed = float(cam.speed)
@@ -260,23 +276,25 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     target = table.delta if table.delta is not None else 0.02
     sizing = size_flywheel(machine, speed, target)
     if table.inertia is not None:
-        flywheel = float(table.inertia)
+        flywheel = line.at_crank(float(table.inertia), line.flywheel_shaft)
     else:
-        flywheel = float(sizing.exact[0] if table.method == "exact" else sizing.classic[0])
+        # the sizing asks for a constant inertia at the crank; the drive line's shafts give part of it
+        flywheel = max(float(sizing.exact[0] if table.method == "exact" else sizing.classic[0]) - added, 0.0)
     mean_torque = float(sizing.drive_torque[0])
     size_failed = None
     try:
-        drive = choose_drive(table.motor, machine, flywheel, speed, mean_torque)
+        drive = choose_drive(motor_table, machine, flywheel + added, speed, mean_torque)
         for_motor = None
-        if table.delta is not None and table.size_for == "motor" and table.motor.kind != "constant_torque":
+        if table.delta is not None and table.size_for == "motor" and table.motor.kind != "constant_torque" \
+                and flywheel > 0:
             try:
-                for_motor = flywheel_for_drive(machine, drive, table.delta, flywheel)
+                for_motor = flywheel_for_drive(machine, drive, table.delta, flywheel + added, added=added)
                 flywheel = for_motor.inertia
             except InputError as exc:
                 # a design outcome, not bad input: the file is valid, no flywheel meets delta with this motor;
                 # the constant-torque flywheel is kept and the design fails its check
                 size_failed = f"flywheel sized for the motor (size_for = \"motor\"): {str(exc).rstrip('.')}"
-        steady = steady_state(machine, drive, flywheel,
+        steady = steady_state(machine, drive, flywheel + added,
                               mean_speed=speed if table.motor.kind == "constant_torque" else None)
     except ProblemFileError:
         raise
@@ -293,7 +311,7 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     run = None
     if table.start_up and table.motor.kind != "constant_torque":
         try:
-            run = start_up(machine, drive, flywheel, steady=steady)
+            run = start_up(machine, drive, flywheel + added, steady=steady)
         except NotSettledError as exc:
             warnings.append(str(exc))
         except ValueError as exc:  # the drive cannot start the machine or it rolls back: a design check fails
@@ -301,6 +319,8 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     real = forces_at_speed(steady) if cam is None else None
     values: dict[str, Any] = {
         "flywheel.inertia": flywheel,
+        "flywheel.own_inertia": line.about_shaft(flywheel, line.flywheel_shaft),
+        "flywheel.shaft_speed_ratio": line.ratio(line.flywheel_shaft),
         "flywheel.sizing_energy_fluctuation": float(sizing.energy_fluctuation[0]),
         "flywheel.delta": float(steady.delta),
         "flywheel.mean_speed": float(steady.mean_speed),
@@ -326,6 +346,14 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         values |= {"flywheel.inertia_constant_torque": for_motor.constant_torque,
                    "flywheel.inertia_for_motor": for_motor.inertia,
                    "flywheel.motor_slip_saving": for_motor.saving}
+    if line.declared:
+        values["flywheel.line_inertia"] = added
+    if not line.declared and table.inertia is not None and line.flywheel_shaft != line.crank:
+        r = line.ratio(line.flywheel_shaft)
+        warnings.append(f"flywheel.inertia = {float(table.inertia):.6g} kg*m^2 is the flywheel's own, about its shaft "
+                        f"turning flywheel.speed_ratio = {r:g} times the crank: {flywheel:.6g} kg*m^2 at the crank. "
+                        f"(Earlier versions took it as referred to the crank; for that meaning give "
+                        f"{float(table.inertia) / r**2:.6g} kg*m^2.)")
     if run is not None:
         values["flywheel.time_to_steady"] = float(run.time_to_steady)
     duty = None
@@ -335,7 +363,7 @@ def run_flywheel(ctx: StageContext) -> Outcome:
                    "flywheel.gear_ratio": float(drive.ratio),
                    "flywheel.motor_rms_load": float(steady.rms_drive_torque)
                    / float(np.max(drive.rated_torque * drive.ratio * drive.efficiency))}
-        duty = duty_of(drive, steady, table.motor, run)
+        duty = duty_of(drive, steady, motor_table, run)
         values |= {"flywheel.motor_duty_load": duty.load_ratio,
                    "flywheel.motor_duty_rated_torque": duty.rated_for_duty}
         if run is not None and np.isfinite(duty.starts_allowed):
@@ -349,9 +377,9 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     if flywheel > 0:
         limit = table.rim_speed_limit or rim_speed_limit(table.allowable_stress, table.density, table.shape)
         # on a shaft turning i times the crank, the part carries J / i^2 at i times the speed
-        i = table.speed_ratio
+        i = line.ratio(line.flywheel_shaft)
         wmax = float(np.max(steady.omega)) * i
-        own = flywheel / i**2
+        own = line.about_shaft(flywheel, line.flywheel_shaft)
         if table.shape == "disc":
             part = disc_flywheel(own, wmax, width_ratio=table.width_ratio, density=table.density,
                                  rim_speed_limit=limit)
@@ -364,7 +392,7 @@ def run_flywheel(ctx: StageContext) -> Outcome:
         if not part.within_limit:
             failed.append(f"flywheel rim speed {part.rim_speed:.4g} m/s exceeds the limit {part.rim_speed_limit:.4g} "
                           "m/s")
-    result = FlywheelRun(table, machine, sizing, drive, flywheel, steady, run, real, part, duty)
+    result = FlywheelRun(table, machine, sizing, drive, flywheel, steady, run, real, part, duty, line)
     series = {"flywheel_cycle": _cycle_columns(result)}
     if run is not None:
         tr = run.trajectory
@@ -410,6 +438,12 @@ class FlywheelRun:
     real: Any
     part: Any
     duty: Any = None  # the induction motor's duty check (machdyn.dynamics.duty.DutyCheck), None for other drives
+    line: DriveLine = DriveLine.crank_only()  # the drive line: flywheel[, shafts, clutch, brake] (flywheel at crank)
+
+    @property
+    def line_inertia(self) -> float:
+        """The drive line's shafts referred to the crank [kg·m²]: the steady state counts them with the flywheel."""
+        return self.line.shaft_inertia
 
 
 CAPABILITY = Capability(

@@ -133,7 +133,14 @@ def plot_motor_duty(run: Any, ax: Axes) -> Axes:
 def flywheel_rows(run: Any) -> list[list[str]]:
     """The flywheel table: sizing, the part, the drive."""
     sz, part = run.sizing, run.part
-    rows = [["flywheel inertia used", f"{format_value(run.flywheel)} kg·m²"]]
+    line = run.line
+    own = line.about_shaft(run.flywheel, line.flywheel_shaft)
+    rows = [["flywheel on", line.describe(line.flywheel_shaft)],
+            ["flywheel inertia about its own shaft", f"{format_value(own)} kg·m²"],
+            ["flywheel inertia referred to the crank", f"{format_value(run.flywheel)} kg·m²"]]
+    if line.declared:
+        rows += [["drive-line shafts referred to the crank (counted with the flywheel)",
+                  f"{format_value(run.line_inertia)} kg·m²"]]
     if run.table.delta is not None:
         rows += [
             ["target δ", format_value(run.table.delta)],
@@ -146,7 +153,7 @@ def flywheel_rows(run: Any) -> list[list[str]]:
              ["simulated δ", format_value(float(np.ravel(run.steady.delta)[0]))]]
     if part is not None:
         rows += [
-            ["flywheel shaft speed / crank speed", format_value(run.table.speed_ratio)],
+            ["flywheel shaft speed / crank speed", format_value(line.ratio(line.flywheel_shaft))],
             ["inertia of the part on its shaft", f"{format_value(part.inertia)} kg·m²"],
             ["shape", "solid disc" if part.shape == "disc" else "rim"],
             ["outer diameter", f"{format_value(part.diameter * 1000)} mm"],
