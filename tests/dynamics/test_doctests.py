@@ -6,7 +6,7 @@ import importlib
 import pytest
 
 MODULES = ["machdyn.dynamics.tables", "machdyn.dynamics.drives", "machdyn.dynamics.flywheel",
-           "machdyn.dynamics.motors"]
+           "machdyn.dynamics.motors", "machdyn.dynamics.driveline"]
 
 
 @pytest.mark.parametrize("name", MODULES)

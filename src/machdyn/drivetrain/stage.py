@@ -218,7 +218,8 @@ def run(ctx: StageContext) -> Outcome:
         linkage = float(np.mean(machine.inertia(np.linspace(0, 2 * np.pi, 361)[:-1])))
         to_clutch = ratios[shaft] ** 2  # inertias at the crank, taken to the clutch shaft
         engagement = engage(drive_side / to_clutch, crank_speed * ratios[shaft], (driven_side + linkage) / to_clutch,
-                            0.0, table.clutch.slip_torque, driving_torque=table.clutch.motor_torque)
+                            0.0, table.clutch.slip_torque,
+                            driving_torque=_motor_at_clutch(line, flywheel, crank_speed, table.clutch.motor_torque))
 
     stops: list[Stop] = []
     worst = None
@@ -261,6 +262,19 @@ def idle_speed(motor: Any, nominal: float) -> float:
         if torque(high) <= 0:
             return float(brentq(torque, nominal, high, xtol=1e-12 * nominal))
     return nominal
+
+
+def _motor_at_clutch(line: DriveLine, flywheel: FlywheelRun | None, crank_speed: float, constant: float) -> float:
+    """The motor's torque [N·m] on the clutch shaft while the clutch slips: that of ``[flywheel.motor]`` at the
+    running speed, through the stages before the clutch only (motor torque × ratio × their efficiency); else the
+    clutch table's constant ``motor_torque``."""
+    drive = flywheel.drive if flywheel is not None else None
+    if drive is None or not hasattr(drive, "torque_at") or line.clutch_shaft is None:
+        return float(constant)
+    at_crank = float(np.ravel(drive.torque_at(crank_speed))[0])  # motor × ratio × every stage's efficiency
+    c = line.clutch_shaft
+    after = line.efficiency_between(c, line.crank)  # the stages after the clutch do not act while it slips
+    return at_crank / line.ratio(c) / (after if at_crank >= 0 else 1.0 / after)
 
 
 def _sides(line: DriveLine, clutch: int, fly_inertia: float) -> tuple[float, float]:

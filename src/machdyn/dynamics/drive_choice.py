@@ -24,9 +24,10 @@ def choose_drive(motor: Any, machine, flywheel: float, speed: float, mean_torque
     if motor.kind == "constant_torque":
         return ConstantTorque(mean_torque)
     if motor.kind == "hydraulic":
+        # its torque never reverses (p >= 0): the gear's efficiency is a constant factor on it
         return HydraulicMotor(float(motor.displacement or 0), float(motor.flow or 0), float(motor.pressure_limit or 0),
-                              motor.volumetric_efficiency, motor.mechanical_efficiency, motor.ratio or 1.0,
-                              motor.rotor_inertia)
+                              motor.volumetric_efficiency, motor.mechanical_efficiency * motor.efficiency,
+                              motor.ratio or 1.0, motor.rotor_inertia)
     if motor.kind == "induction":
         rated = float(motor.rated_speed or 0.0)
         ratio = motor.ratio or rated / speed

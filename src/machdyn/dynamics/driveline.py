@@ -28,7 +28,7 @@ off by their share times (1 − η) (Khurmi & Gupta count it: I_A + G² I_B/η).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -219,6 +219,18 @@ class DriveLine:
         r = self.train.speed_ratios[first:last + 1]
         j = np.asarray(self.train.shaft_inertia[first:last + 1], dtype=float)
         return float(np.sum(j * r**2))
+
+    def efficiency_between(self, first: int, last: int) -> float:
+        """The product of the efficiencies of the stages from shaft ``first`` to shaft ``last`` (> first) [-]."""
+        return float(np.prod([s.efficiency for s in self.train.stages[first:last]])) if last > first else 1.0
+
+    def motor_drive(self, drive: Any) -> Any:
+        """``drive`` (a drive of :mod:`machdyn.dynamics.drives` with ``ratio`` and ``efficiency``) through this
+        line: its ratio and efficiency those of the stages; its rotor inertia 0 (the line's motor shaft holds
+        it). A line with no ``[drivetrain]`` leaves the drive as it is."""
+        if not self.declared:
+            return drive
+        return replace(drive, ratio=self.motor_ratio, efficiency=self.motor_efficiency, rotor_inertia=0.0)
 
     def describe(self, shaft: int) -> str:
         """The shaft by name and speed, e.g. "shaft 1 'flywheel shaft' (8 × the crank's speed)"."""

@@ -137,6 +137,12 @@ def line_problems(problem: Any, flywheel: Any) -> list[tuple[str, str]]:
                       f"flywheel.motor.efficiency = {flywheel.motor.efficiency:g} and drivetrain.stages[*].efficiency "
                       f"({_product(efficiencies, '×')}) both give the efficiency from the motor to the crank; give "
                       "it once: remove flywheel.motor.efficiency (each stage's efficiency belongs to its stage)"))
+    clutch = drivetrain.clutch
+    if clutch is not None and "motor_torque" in clutch.model_fields_set:
+        found.append(("drivetrain.clutch.motor_torque",
+                      f"drivetrain.clutch.motor_torque = {clutch.motor_torque:g} N*m and [flywheel.motor] both give "
+                      "the motor's torque; give it once: remove drivetrain.clutch.motor_torque (the clutch and the "
+                      "single stroke take the torque of the [flywheel.motor] motor)"))
     if "rotor_inertia" in motor_given and "motor_inertia" in drivetrain.model_fields_set:
         found.append(("flywheel.motor.rotor_inertia",
                       f"flywheel.motor.rotor_inertia = {flywheel.motor.rotor_inertia:g} kg*m^2 and "
