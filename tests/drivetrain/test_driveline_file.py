@@ -137,3 +137,16 @@ def test_a_flywheel_speed_ratio_beside_a_drive_train_is_refused_with_the_shaft_t
     assert "flywheel.speed_ratio = 8 and drivetrain.stages[*].ratio both give the speed of the flywheel's shaft" \
         in text
     assert 'flywheel.shaft = "flywheel shaft"' in text
+
+
+def test_the_flywheel_counts_on_the_side_of_the_clutch_its_shaft_is_on():
+    from machdyn.drivetrain.stage import _sides
+    from machdyn.dynamics.driveline import DriveLine, DriveTrain, Stage
+
+    train = DriveTrain((Stage(4.0), Stage(8.0)), (0.01, 0.02, 6.0))
+    names = ("motor", "flywheel shaft", "crank")
+    # shafts at the crank: 0.01·32² = 10.24 and 0.02·8² = 1.28 before the clutch (on shaft 1), 6 after it
+    before = DriveLine(train, names, flywheel_shaft=1, clutch_shaft=1)
+    assert _sides(before, 1, 50.0) == pytest.approx((10.24 + 1.28 + 50.0, 6.0), rel=1e-12)
+    after = DriveLine(train, names, flywheel_shaft=2, clutch_shaft=1)
+    assert _sides(after, 1, 50.0) == pytest.approx((10.24 + 1.28, 6.0 + 50.0), rel=1e-12)

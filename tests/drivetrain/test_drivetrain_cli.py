@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pytest
 from typer.testing import CliRunner
 
 from machdyn.cli import app
@@ -32,6 +33,12 @@ def test_the_press_example_runs_with_its_drive_train_and_parts(tmp_path):
         assert key in scalars, key
     report = (out / "report.html").read_text()
     assert 'id="drive-train"' in report and 'id="parts"' in report
+    # the flywheel's own inertia on the shaft turning 8 times the crank counts 8² times at the crank, and the
+    # report says which shaft it is on
+    own, at_crank = scalars["flywheel.own_inertia"]["value"], scalars["flywheel.inertia"]["value"]
+    assert at_crank == pytest.approx(64.0 * own, rel=1e-12)
+    assert "flywheel inertia about its own shaft" in report and "flywheel shaft" in report
+    assert scalars["flywheel.gear_ratio"]["value"] == 37.5  # the motor's ratio is the stages' (4.6875 × 8)
     assert (out / "drivetrain_torques.csv").exists() and (out / "parts_bearings.csv").exists()
 
 
