@@ -150,3 +150,21 @@ def test_the_flywheel_counts_on_the_side_of_the_clutch_its_shaft_is_on():
     assert _sides(before, 1, 50.0) == pytest.approx((10.24 + 1.28 + 50.0, 6.0), rel=1e-12)
     after = DriveLine(train, names, flywheel_shaft=2, clutch_shaft=1)
     assert _sides(after, 1, 50.0) == pytest.approx((10.24 + 1.28, 6.0 + 50.0), rel=1e-12)
+
+
+@pytest.mark.parametrize(("replacements", "expected"), [
+    ((('slip_torque = "250 N*m"', 'slip_torque = "250 N*m"\nmotor_torque = "20 N*m"'),),
+     "drivetrain.clutch.motor_torque = 20 N*m and [flywheel.motor] both give the motor's torque"),
+    ((('shaft = "flywheel shaft"     #', 'shaft = 7     #'),), "must be a shaft number 0 (the motor) to 2"),
+    ((('shaft = "flywheel shaft"         # the name', 'shaft = "crank"         # the name'),),
+     "stages[*].shaft must name each shaft once"),
+], ids=["clutch_motor_torque_twice", "flywheel_shaft_out_of_range", "a_stage_shaft_named_crank"])
+def test_other_drive_line_mistakes_are_refused_by_check_and_run(tmp_path, replacements, expected):
+    assert expected in _refused_alike(tmp_path, _variant(tmp_path, *replacements))
+
+
+def test_a_flywheel_shaft_name_without_a_drive_train_is_refused_by_check_and_run(tmp_path):
+    path = tmp_path / "press.toml"
+    path.write_text(PRESS + FLYWHEEL.format(inertia="6 kg*m^2", shaft='shaft = "flywheel shaft"'))
+    text = _refused_alike(tmp_path, path)
+    assert "flywheel.shaft: names a shaft of [drivetrain], but the file has no [drivetrain]" in text
