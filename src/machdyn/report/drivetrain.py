@@ -3,6 +3,7 @@ clutch engagement and the brake's stops."""
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -89,8 +90,6 @@ def plot_single_stroke(axes: Any, stroke: Any) -> Any:
 def plot_brake_heating(ax: Any, heating: Any) -> Any:
     """The drum's temperature rise over repeated stops: a jump of ΔT per stop, Newton cooling between them, and
     the steady peak the series tends to."""
-    import math
-
     stops = 1 if not math.isfinite(heating.interval) else max(3, min(400, int(math.ceil(
         4.0 / max(heating.decay_rate * heating.interval, 1e-9)))))
     t, rise = heating.history(stops, points=max(4, 4000 // stops))

@@ -7,6 +7,7 @@ from typing import Any
 
 import numpy as np
 
+from ..drivetrain.fatigue import failure_amplitude
 from ..results.labels import display_factor
 from .html import _render, figures_html, format_value, rows_html
 from .plotkit import PALETTE, _finish
@@ -43,8 +44,6 @@ def plot_link_stress(ax: Any, result: Any) -> Any:
 def plot_haigh(ax: Any, result: Any) -> Any:
     """The Haigh (σ_m, σ_a) diagram of each link: its fatigue criterion's line, Langer's yield line (with S_y),
     the compressive side σ_a = S_e, and the link's point (its notch factor applied)."""
-    from ..drivetrain.fatigue import failure_amplitude
-
     top = 0.0
     for k, (body, p) in enumerate(result.link_fatigue.items()):
         colour = PALETTE[k % len(PALETTE)]
