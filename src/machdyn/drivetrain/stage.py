@@ -51,6 +51,7 @@ from ..problem.schema import Spec
 from ..results.labels import Label
 from .brakes import BrakeTorque, Heating
 from .clutch import Engagement, Stop, engage, stop_machine
+from .gear_stage import GearCheck, GearTeethTable, check_teeth, gear_results
 from .geometry_tables import (
     BrakeGeometry,
     BrakeHeating,
@@ -60,6 +61,7 @@ from .geometry_tables import (
     rate_brake,
     rate_clutch,
 )
+from .shaft_check import ShaftCheck, ShaftTable, check_shaft, shaft_results
 from .single_stroke import single_stroke, single_stroke_duty
 from .train import DriveTrain, Stage
 
@@ -72,6 +74,13 @@ class StageTable(Spec):
     efficiency: float = Field(1.0, gt=0.0, le=1.0, allow_inf_nan=False)
     inertia: Inertia = 0.0
     name: str = ""
+    teeth: GearTeethTable | None = None        # a gear stage's teeth: Lewis bending and Hertz contact checks
+
+    @model_validator(mode="after")
+    def _teeth_on_gears(self):
+        if self.teeth is not None and self.kind != "gear":
+            raise ValueError(f"teeth belong to a gear stage; this stage is a {self.kind}")
+        return self
 
 
 class ClutchTable(Spec):
@@ -108,10 +117,14 @@ class DriveTrainSpec(Spec):
     clutch: ClutchTable | None = None
     brake: BrakeTable | None = None
     single_stroke: SingleStrokeTable | None = None
+    shafts: list[ShaftTable] = []
 
     @model_validator(mode="after")
     def _shafts(self):
         last = len(self.stages)
+        for i, s in enumerate(self.shafts):
+            if s.shaft > last:
+                raise ValueError(f"shafts[{i}].shaft must be 0 to {last} (the crank shaft); got {s.shaft}")
         if self.clutch is not None and self.clutch.shaft is not None and self.clutch.shaft >= last:
             raise ValueError(f"clutch.shaft must name a shaft before the crank shaft (0 to {last - 1}); got "
                              f"{self.clutch.shaft}")
@@ -153,6 +166,8 @@ class DriveTrainRun:
     brake_rating: BrakeTorque | None = None       # the brake's torque from its geometry
     heating: Heating | None = None                # the brake drum's heating by the worst stop
     brake_torque: float | None = None             # on the brake's shaft [N*m]
+    gear_checks: tuple[GearCheck, ...] = ()       # the teeth of the gear stages that describe them
+    shaft_checks: tuple[ShaftCheck, ...] = ()     # the shafts of [[drivetrain.shafts]]
 
 
 def train_of(table: DriveTrainSpec) -> DriveTrain:
@@ -325,10 +340,23 @@ def run(ctx: StageContext) -> Outcome:
     if stroke is not None and flywheel is not None and hasattr(flywheel.drive, "rated_torque"):
         assert table.clutch is not None
         duty = single_stroke_duty(stroke, flywheel.drive, table.clutch.strokes_per_minute)
+    gears = tuple(check_teeth(k, s.teeth, s.ratio, shaft_torques, ratios, crank_speed)
+                  for k, s in enumerate(table.stages) if s.teeth is not None)
     done = DriveTrainRun(train, np.asarray(forces.kinematics.crank_angle, dtype=float), shaft_torques, shaft,
                          engagement, tuple(stops), worst, crank_speed, stroke, duty, rating, braking, heating,
-                         braking.torque if braking is not None else None)
+                         braking.torque if braking is not None else None, gears,
+                         _check_shafts(table, shaft_torques, crank_speed * ratios))
     return _outcome(done, table)
+
+
+def _check_shafts(table: DriveTrainSpec, shaft_torques: np.ndarray, speeds: np.ndarray) -> tuple[ShaftCheck, ...]:
+    checks = []
+    for i, s in enumerate(table.shafts):
+        try:
+            checks.append(check_shaft(s, shaft_torques[s.shaft], float(speeds[s.shaft])))
+        except InputError as exc:
+            raise ProblemFileError([(f"drivetrain.shafts[{i}]", str(exc))]) from None
+    return tuple(checks)
 
 
 def idle_speed(motor: Any, nominal: float) -> float:
@@ -394,6 +422,16 @@ def _outcome(done: DriveTrainRun, table: DriveTrainSpec) -> Outcome:
         scalars[f"drivetrain.shaft_{k}.torque.max_abs"] = float(np.max(np.abs(t)))
         labels[f"drivetrain.shaft_{k}.torque.max_abs"] = Label(f"Drive train: peak torque, {where}", "N*m")
     failed = []
+    gear_values, gear_labels = gear_results(done.gear_checks)
+    scalars.update(gear_values)
+    labels.update(gear_labels)
+    for g in done.gear_checks:
+        failed += g.failures()
+    shaft_values, shaft_labels = shaft_results(done.shaft_checks)
+    scalars.update(shaft_values)
+    labels.update(shaft_labels)
+    for c in done.shaft_checks:
+        failed += c.failures()
     e = done.engagement
     if e is not None:
         assert table.clutch is not None and done.clutch_shaft is not None
@@ -453,7 +491,7 @@ def _outcome(done: DriveTrainRun, table: DriveTrainSpec) -> Outcome:
         series["single_stroke"] = {"time": (k.t, "s"), "crank_angle": (k.phi, "rad"), "crank_speed": (k.omega, "rad/s"),
                                    "drive_side_speed": (k.omega_drive, "rad/s"),
                                    "clutch_torque": (k.clutch_torque, "N*m"), "motor_torque": (k.motor_torque, "N*m")}
-    summary = tuple(key for key in scalars if not key.startswith("drivetrain.shaft_")) + \
+    summary = tuple(key for key in scalars if not key.startswith(("drivetrain.shaft_", "drivetrain.stage_"))) + \
         ("drivetrain.shaft_0.torque.max_abs",)
     return Outcome(results=done, scalars=scalars, labels=labels, series=series, summary=summary,
                    failed_checks=tuple(failed))

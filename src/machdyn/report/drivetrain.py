@@ -123,6 +123,24 @@ def _geometry_rows(run: Any) -> list[list[str]]:
                      f"{format_value(braking.torque_reverse)} N·m turning the other way)"])
         if braking.max_pressure > 0:
             rows.append(["brake: largest lining pressure", f"{format_value(braking.max_pressure / 1e6)} MPa"])
+    for g in getattr(run, "gear_checks", ()):
+        allowed = (f" (allowed {format_value(g.allowable_bending / 1e6)} MPa)" if g.allowable_bending else "")
+        rows.append([f"gear stage {g.stage}: tooth root stress (Lewis, K_v {format_value(g.velocity_factor)})",
+                     f"pinion {format_value(g.pinion_bending / 1e6)} MPa, gear {format_value(g.gear_bending / 1e6)} "
+                     f"MPa{allowed}; tangential load {format_value(g.tangential_load)} N at "
+                     f"{format_value(g.pitch_speed)} m/s"])
+        allowed = (f" (allowed {format_value(g.allowable_contact / 1e6)} MPa)" if g.allowable_contact else "")
+        rows.append([f"gear stage {g.stage}: contact stress (Hertz)", f"{format_value(g.contact / 1e6)} MPa{allowed}"])
+    for c in getattr(run, "shaft_checks", ()):
+        rows.append([f"shaft {c.shaft}: at the wheel",
+                     f"M = {format_value(c.moment)} N·m, T = {format_value(c.torque_mean)} ± "
+                     f"{format_value(c.torque_amplitude)} N·m; fatigue safety {format_value(c.fatigue_safety)}"
+                     f"{'' if not math.isfinite(c.yield_safety) else f', yield {format_value(c.yield_safety)}'}"
+                     f" (at least {format_value(c.min_safety)}); deflection {format_value(c.deflection * 1e3)} mm"])
+        rows.append([f"shaft {c.shaft}: first critical speed",
+                     f"{format_value(c.critical_dunkerley * 30 / math.pi)} rpm (Dunkerley) to "
+                     f"{format_value(c.critical_rayleigh * 30 / math.pi)} rpm (Rayleigh); runs at "
+                     f"{format_value(c.running_speed * 30 / math.pi)} rpm"])
     heating = getattr(run, "heating", None)
     if heating is not None:
         rows.append(["brake: drum temperature rise", f"{format_value(heating.rise_per_stop)} K per stop, "
