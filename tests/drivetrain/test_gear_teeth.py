@@ -86,6 +86,11 @@ def test_the_stage_check_loads_the_pinion_with_its_shafts_peak_torque():
     step_up = check_teeth(1, teeth, 0.25, torques, ratios, 2.0)            # pinion on shaft 2
     assert step_up.tangential_load == pytest.approx(960.0 / 0.04)
     assert step_up.gear_bending < step_up.pinion_bending                   # the larger wheel has the larger Y
+    assert reduction.utilisation is None                                   # no allowable given
+    rated = check_teeth(1, teeth.model_copy(update={"allowable_bending": 200e6, "allowable_contact": 900e6}),
+                        4.0, torques, ratios, 2.0)
+    assert rated.utilisation == pytest.approx(max(rated.pinion_bending / 200e6, rated.contact / 900e6))
+    assert (rated.utilisation > 1) == bool(rated.failures())
 
 
 def test_teeth_on_a_belt_stage_are_refused_by_check(tmp_path):

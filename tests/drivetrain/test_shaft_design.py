@@ -90,6 +90,8 @@ def test_the_shaft_check_loads_the_wheel_seat_with_its_force_and_torque():
     assert (c.torque_amplitude, c.torque_mean) == (100.0, 150.0)
     expected = sd.shaft_safety(0.04, (c.moment, 0.0), (100.0, 150.0), 200e6, 700e6, kf=1.6, kfs=1.3)
     assert c.fatigue_safety == pytest.approx(expected.fatigue)
+    assert c.utilisation == pytest.approx(max(1.5 / min(c.fatigue_safety, c.yield_safety),
+                                              30.0 * 1.25 / c.critical_dunkerley))
     ei = 207e9 * math.pi * 0.04**4 / 64
     assert c.deflection == pytest.approx(force * 0.1**2 * 0.3**2 / (3 * ei * 0.4))
     # far too thin: the first cycle breaks it, a failed check with a finite factor

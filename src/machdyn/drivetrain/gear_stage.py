@@ -61,6 +61,16 @@ class GearCheck:
     allowable_bending: float | None
     allowable_contact: float | None
 
+    @property
+    def utilisation(self) -> float | None:
+        """The larger of root stress / allowable and contact stress / allowable (None: no allowable given)."""
+        parts = []
+        if self.allowable_bending is not None:
+            parts.append(max(self.pinion_bending, self.gear_bending) / self.allowable_bending)
+        if self.allowable_contact is not None:
+            parts.append(self.contact / self.allowable_contact)
+        return max(parts) if parts else None
+
     def failures(self) -> list[str]:
         out = []
         worst = max(self.pinion_bending, self.gear_bending)
@@ -99,7 +109,8 @@ FIGURES = {"tangential_load": ("tangential load on the teeth at the peak torque"
            "pitch_speed": ("pitch-line speed", "m/s", None),
            "pinion_bending_stress": ("pinion's tooth root stress (Lewis)", "Pa", "MPa"),
            "gear_bending_stress": ("gear's tooth root stress (Lewis)", "Pa", "MPa"),
-           "contact_stress": ("contact stress of the flanks (Hertz)", "Pa", "MPa")}
+           "contact_stress": ("contact stress of the flanks (Hertz)", "Pa", "MPa"),
+           "utilisation": ("utilisation (stress / allowable, the larger)", "", None)}
 
 
 def gear_results(checks: tuple[GearCheck, ...]) -> tuple[dict[str, float], dict[str, Label]]:
@@ -110,6 +121,8 @@ def gear_results(checks: tuple[GearCheck, ...]) -> tuple[dict[str, float], dict[
         values = {"tangential_load": c.tangential_load, "pitch_speed": c.pitch_speed,
                   "pinion_bending_stress": c.pinion_bending, "gear_bending_stress": c.gear_bending,
                   "contact_stress": c.contact}
+        if c.utilisation is not None:
+            values["utilisation"] = c.utilisation
         for figure, value in values.items():
             text, unit, shown = FIGURES[figure]
             key = f"drivetrain.stage_{c.stage}.{figure}"

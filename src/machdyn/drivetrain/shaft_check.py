@@ -95,6 +95,13 @@ class ShaftCheck:
     min_safety: float
     critical_margin: float
 
+    @property
+    def utilisation(self) -> float:
+        """The larger of min_safety / n and (running speed × margin) / critical speed (1: at the limit)."""
+        n = min(self.fatigue_safety, self.yield_safety)
+        return max(self.min_safety / n if n > 0 else math.inf,
+                   self.running_speed * self.critical_margin / self.critical_dunkerley)
+
     def failures(self) -> list[str]:
         out = []
         n = min(self.fatigue_safety, self.yield_safety)
@@ -139,7 +146,8 @@ FIGURES = {"bending_moment": ("bending moment at the wheel", "N*m", None),
            "fatigue_safety": ("DE fatigue factor of safety at the wheel", "", None),
            "deflection": ("deflection at the wheel", "m", "mm"),
            "critical_speed": ("first critical speed (Dunkerley, a lower bound)", "rad/s", "rpm"),
-           "critical_speed_rayleigh": ("first critical speed (Rayleigh, an upper bound)", "rad/s", "rpm")}
+           "critical_speed_rayleigh": ("first critical speed (Rayleigh, an upper bound)", "rad/s", "rpm"),
+           "utilisation": ("utilisation (min_safety / n, or speed x margin / critical speed)", "", None)}
 
 
 def shaft_results(checks: tuple[ShaftCheck, ...]) -> tuple[dict[str, float], dict[str, Label]]:
@@ -148,7 +156,8 @@ def shaft_results(checks: tuple[ShaftCheck, ...]) -> tuple[dict[str, float], dic
     labels: dict[str, Label] = {}
     for c in checks:
         values = {"bending_moment": c.moment, "fatigue_safety": c.fatigue_safety, "deflection": c.deflection,
-                  "critical_speed": c.critical_dunkerley, "critical_speed_rayleigh": c.critical_rayleigh}
+                  "critical_speed": c.critical_dunkerley, "critical_speed_rayleigh": c.critical_rayleigh,
+                  "utilisation": c.utilisation}
         for figure, value in values.items():
             if not math.isfinite(value):  # an unloaded shaft has no finite factor of safety: no key
                 continue
