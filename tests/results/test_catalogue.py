@@ -54,6 +54,8 @@ NOT_IN_EXAMPLES = {
     "cam.face_width": "a flat-faced follower (tests/cams)",
     "shaft_cam.face_width": "a flat-faced follower on a crank shaft (the same result as cam.face_width)",
     "synthesis.best.offset": "the synthesis of a slider-crank (tests/synthesis)",
+    "clutch.engagement_speed": "a centrifugal clutch (tests/drivetrain/test_geometry_cli.py)",
+    "brake.max_pressure": "an internal shoe brake (tests/drivetrain/test_geometry_cli.py)",
 }
 #: Prefixes of capability keys that carry a result's own key after them.
 CARRIERS = ("sweep.best.", "sweep.lowest_", "sweep.", "optimise.best.")

@@ -35,8 +35,9 @@ from ..errors import InputError
 
 @dataclass(frozen=True)
 class Engagement:
-    """A clutch engagement: slip time [s], common speed [rad/s], energy dissipated [J], the speeds of both sides
-    when the slip ends and the angle each side turned during it [rad]."""
+    """A clutch engagement: slip time [s], common speed [rad/s], energy dissipated [J], the angle each side turned
+    during the slip [rad], the work of the motor and of the load [J], the driven side's acceleration and the
+    driving side's deceleration while the clutch slips [rad/s²]."""
 
     slip_time: float
     common_speed: float
@@ -45,6 +46,8 @@ class Engagement:
     driven_angle: float
     driving_work: float
     load_work: float
+    driven_acceleration: float = 0.0
+    driving_deceleration: float = 0.0
 
 
 def engage(j1: float, w1: float, j2: float, w2: float, slip_torque: float, *, driving_torque: float = 0.0,
@@ -64,6 +67,8 @@ def engage(j1: float, w1: float, j2: float, w2: float, slip_torque: float, *, dr
     Returns
     -------
     Engagement
+        with the driven side's acceleration α2 = (T_c − T2)/J2 and the driving side's deceleration
+        α1 = (T_c − T1)/J1 during the slip.
 
     Examples
     --------
@@ -94,7 +99,7 @@ def engage(j1: float, w1: float, j2: float, w2: float, slip_torque: float, *, dr
     theta2 = w2 * ts + 0.5 * a2 * ts**2
     dissipated = slip_torque * (theta1 - theta2)
     return Engagement(float(ts), float(w), float(dissipated), float(theta1), float(theta2),
-                      float(driving_torque * theta1), float(load_torque * theta2))
+                      float(driving_torque * theta1), float(load_torque * theta2), float(a2), float(a1))
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,8 @@ import numpy as np
 from ..errors import InputError
 from ..linkage import model as _model
 from .bearings import life_exponent, mean_effective_load, plain_bearing_pv, rating_life, reliability_factor
-from .strength import goodman_safety, link_section_loads, pin_stresses
+from .fatigue import amplitude_and_mean, fatigue_safety, reversed_equivalent, sn_line
+from .strength import link_section_loads, pin_stresses
 
 HOUR = 3600.0
 
@@ -68,7 +69,10 @@ class PinSpec:
 @dataclass(frozen=True)
 class LinkSpec:
     """A two-pin link: its cross-section area [m²], section modulus [m³], corrected endurance limit Se and
-    ultimate strength Sut [Pa], and the smallest fatigue safety factor accepted."""
+    ultimate strength Sut [Pa], the smallest fatigue safety factor accepted, the fatigue criterion, the yield
+    strength Sy [Pa] (for Soderberg, ASME-elliptic and Langer's yield check), the fatigue notch factor Kf applied
+    to the stresses, and the life [cycles] required of a link stressed above its endurance limit (with Shigley's
+    fraction f, None: his fit)."""
 
     body: str
     area: float
@@ -76,6 +80,16 @@ class LinkSpec:
     endurance_limit: float
     ultimate_strength: float
     min_safety: float = 1.5
+    criterion: str = "goodman"
+    yield_strength: float | None = None
+    notch_factor: float = 1.0
+    required_cycles: float | None = None
+    fraction: float | None = None
+
+
+#: The names of the fatigue criteria in the checks (the Goodman one keeps its historical key).
+CRITERION_NAMES = {"goodman": "modified Goodman", "soderberg": "Soderberg", "gerber": "Gerber",
+                   "asme_elliptic": "ASME elliptic"}
 
 
 @dataclass(frozen=True)
@@ -86,10 +100,54 @@ class PartsResult:
     crank_angle: np.ndarray
     bearing_loads: dict = field(default_factory=dict)   # joint -> (|F| [N], equal-life load [N] or None)
     link_stress: dict = field(default_factory=dict)     # body -> (σ_max fibre [Pa], σ_min fibre [Pa])
+    link_fatigue: dict = field(default_factory=dict)    # body -> LinkFatigue
 
     @property
     def failed(self) -> tuple[PartCheck, ...]:
         return tuple(c for c in self.checks if not c.passed)
+
+
+@dataclass(frozen=True)
+class LinkFatigue:
+    """A link's fatigue point (σ_a, σ_m [Pa], the notch factor applied) and its strengths S_e, S_ut, S_y [Pa]
+    (S_y None if not given), with the criterion used: what the report's Haigh diagram draws."""
+
+    amplitude: float
+    mean: float
+    endurance: float
+    ultimate: float
+    yield_strength: float | None
+    criterion: str
+
+
+def link_fatigue_checks(link: LinkSpec, top: np.ndarray, bottom: np.ndarray) -> tuple[list[PartCheck], LinkFatigue]:
+    """The fatigue checks of a link from the stress histories of its extreme fibres: the safety factor by its
+    criterion, Langer's yield factor (with S_y), the peak stress against S_ut, and, with required cycles, the
+    damage n/N of those cycles (Palmgren–Miner) with N from the S–N line and the Goodman-equivalent reversed
+    stress (0 below the endurance limit). The worse fibre (the larger |σ|) governs."""
+    worst = top if np.max(np.abs(top)) >= np.max(np.abs(bottom)) else bottom
+    amp, mean = amplitude_and_mean(link.notch_factor * worst, link.notch_factor * worst)
+    name = f"link {link.body}"
+    point = LinkFatigue(amp, mean, link.endurance_limit, link.ultimate_strength, link.yield_strength,
+                        link.criterion)
+    peak = amp + abs(mean)
+    if peak >= link.ultimate_strength:  # broken in the first cycle: no fatigue factor to give
+        return [PartCheck(name, "peak stress", peak, link.ultimate_strength, peak / link.ultimate_strength,
+                          "Pa")], point
+    safety = fatigue_safety(amp, mean, link.endurance_limit, link.ultimate_strength, link.yield_strength,
+                            link.criterion)  # type: ignore[arg-type]
+    checks = [PartCheck(name, f"fatigue safety factor ({CRITERION_NAMES[link.criterion]})", float(safety.fatigue),
+                        link.min_safety, link.min_safety / safety.fatigue if np.isfinite(safety.fatigue) else 0.0,
+                        "")]
+    if link.yield_strength is not None:
+        checks.append(PartCheck(name, "yield safety factor (Langer)", float(safety.yielding), link.min_safety,
+                                link.min_safety / safety.yielding if np.isfinite(safety.yielding) else 0.0, ""))
+    if link.required_cycles is not None:
+        line = sn_line(link.ultimate_strength, link.endurance_limit, link.fraction)
+        cycles = line.cycles(reversed_equivalent(amp, mean, link.ultimate_strength))
+        damage = link.required_cycles / cycles if np.isfinite(cycles) else 0.0  # 0: below the endurance limit
+        checks.append(PartCheck(name, "fatigue damage over the required cycles", damage, 1.0, damage, ""))
+    return checks, point
 
 
 def _cycle_weights(kin: Any) -> tuple[np.ndarray, float]:
@@ -136,6 +194,7 @@ def size_parts(forces: Any, *, bearings: tuple[BearingSpec, ...] = (), pins: tup
     checks: list[PartCheck] = []
     bearing_loads: dict = {}
     link_stress: dict = {}
+    link_fatigue: dict = {}
 
     def joint(name: str, where: str) -> tuple[np.ndarray, np.ndarray, tuple[str, str, str]]:
         if name not in joints:
@@ -205,9 +264,7 @@ def size_parts(forces: Any, *, bearings: tuple[BearingSpec, ...] = (), pins: tup
         sigma_axial = axial / link.area
         sigma_bend = np.abs(moment) / link.section_modulus
         top, bottom = sigma_axial + sigma_bend, sigma_axial - sigma_bend
-        worst = top if np.max(np.abs(top)) >= np.max(np.abs(bottom)) else bottom
         link_stress[link.body] = (top, bottom)
-        n = goodman_safety(float(worst.max()), float(worst.min()), link.endurance_limit, link.ultimate_strength)
-        checks.append(PartCheck(f"link {link.body}", "fatigue safety factor (modified Goodman)", float(n),
-                                link.min_safety, link.min_safety / float(n) if np.isfinite(n) else 0.0, ""))
-    return PartsResult(tuple(checks), phi, bearing_loads, link_stress)
+        found, link_fatigue[link.body] = link_fatigue_checks(link, top, bottom)
+        checks += found
+    return PartsResult(tuple(checks), phi, bearing_loads, link_stress, link_fatigue)

@@ -23,7 +23,11 @@ section_modulus = "4000 mm^3"
 endurance_limit = "180 MPa"  # Se of the part, all Marin factors applied
 ultimate_strength = "600 MPa"
 min_safety = 2.0
+criterion = "goodman"        # or "soderberg", "gerber", "asme_elliptic"; yield_strength adds Langer's check
 ```
+
+Instead of ``endurance_limit`` a ``[parts.links.marin]`` table derives it from ``ultimate_strength`` by the Marin
+factors (finish, diameter, load, temperature, reliability) and a notch (stress_concentration, notch_radius).
 
 The forces are those of the constant-speed analysis or, with ``[flywheel]``, those at the real speed.
 A part that fails its check is a failed design check (exit 3).
@@ -42,9 +46,20 @@ from ..linkage import analyse, crank_angles
 from ..linkage import model as _model
 from ..pipeline import Capability, Outcome, StageContext
 from ..problem.build import build_mechanism
-from ..problem.fields import Area, Force, PositiveLength, Pressure, PressureVelocity, SectionModulus, Stress, Time
+from ..problem.fields import (
+    Area,
+    Force,
+    PositiveLength,
+    Pressure,
+    PressureVelocity,
+    SectionModulus,
+    Stress,
+    TemperatureDifference,
+    Time,
+)
 from ..problem.schema import Spec
 from ..results.labels import Label
+from . import fatigue
 from .parts import BearingSpec, LinkSpec, PartsResult, PinSpec, size_parts
 
 
@@ -77,13 +92,71 @@ class PinTable(Spec):
     allowable_pressure: Pressure | None = None
 
 
+class MarinTable(Spec):
+    """``[parts.links.marin]``: the link's endurance limit from the specimen's by the Marin factors."""
+
+    finish: Literal["ground", "machined", "cold_drawn", "hot_rolled", "as_forged"] = "machined"
+    diameter: PositiveLength | None = None          # (equivalent) diameter for the size factor
+    load: Literal["bending", "axial", "torsion"] = "bending"
+    temperature: TemperatureDifference | None = None  # absolute, in K (e.g. "373.15 K")
+    reliability: float = Field(0.5, ge=0.5, lt=1.0, allow_inf_nan=False)
+    miscellaneous: float = Field(1.0, gt=0.0, allow_inf_nan=False)
+    specimen_endurance_limit: Stress | None = None  # from a test; default 0.5 Sut (700 MPa above 1400 MPa)
+    stress_concentration: float | None = Field(None, ge=1.0, allow_inf_nan=False)  # Kt
+    notch_radius: PositiveLength | None = None
+    sensitivity: Literal["neuber", "peterson"] = "neuber"
+
+    @model_validator(mode="after")
+    def _notch(self):
+        if (self.stress_concentration is None) != (self.notch_radius is None):
+            raise ValueError("a notch needs both stress_concentration (Kt) and notch_radius")
+        return self
+
+
 class LinkTable(Spec):
     body: str
     area: Area
     section_modulus: SectionModulus
-    endurance_limit: Stress
+    endurance_limit: Stress | None = None
+    marin: MarinTable | None = None
     ultimate_strength: Stress
+    yield_strength: Stress | None = None
+    criterion: Literal["goodman", "soderberg", "gerber", "asme_elliptic"] = "goodman"
+    required_cycles: float | None = Field(None, ge=1.0, allow_inf_nan=False)
     min_safety: float = Field(1.5, gt=0.0, allow_inf_nan=False)
+
+    @model_validator(mode="after")
+    def _strengths(self):
+        if (self.endurance_limit is None) == (self.marin is None):
+            raise ValueError("a link needs either endurance_limit or [parts.links.marin], "
+                             f"{'not both' if self.marin is not None else 'one of them'}")
+        if self.criterion in ("soderberg", "asme_elliptic") and self.yield_strength is None:
+            raise ValueError(f"the {self.criterion} criterion needs yield_strength")
+        if self.yield_strength is not None and self.yield_strength > self.ultimate_strength:
+            raise ValueError(f"yield_strength {self.yield_strength / 1e6:g} MPa exceeds ultimate_strength "
+                             f"{self.ultimate_strength / 1e6:g} MPa")
+        if self.endurance_limit is not None and self.endurance_limit >= self.ultimate_strength:
+            raise ValueError(f"endurance_limit {self.endurance_limit / 1e6:g} MPa must be below ultimate_strength "
+                             f"{self.ultimate_strength / 1e6:g} MPa")
+        return self
+
+
+def link_strength(link: LinkTable) -> tuple[float, float]:
+    """The endurance limit S_e [Pa] and the fatigue notch factor K_f of a link's table (Marin factors and notch
+    sensitivity of :mod:`machdyn.drivetrain.fatigue`)."""
+    if link.marin is None:
+        assert link.endurance_limit is not None
+        return link.endurance_limit, 1.0
+    m = link.marin
+    se = fatigue.marin_endurance_limit(link.ultimate_strength, finish=m.finish, diameter=m.diameter, load=m.load,
+                                       temperature=m.temperature, reliability=m.reliability,
+                                       miscellaneous=m.miscellaneous, specimen=m.specimen_endurance_limit)
+    kf = 1.0
+    if m.stress_concentration is not None and m.notch_radius is not None:
+        q = (fatigue.neuber_sensitivity(link.ultimate_strength, m.notch_radius, m.load)
+             if m.sensitivity == "neuber" else fatigue.peterson_sensitivity(link.ultimate_strength, m.notch_radius))
+        kf = fatigue.fatigue_notch_factor(m.stress_concentration, q)
+    return se.endurance_limit, kf
 
 
 class PartsSpec(Spec):
@@ -100,14 +173,22 @@ class PartsSpec(Spec):
         return self
 
 
+def _link_spec(k: LinkTable, i: int) -> LinkSpec:
+    try:
+        se, kf = link_strength(k)
+    except InputError as exc:
+        raise ProblemFileError([(f"parts.links[{i}].marin", str(exc))]) from None
+    return LinkSpec(k.body, k.area, k.section_modulus, se, k.ultimate_strength, k.min_safety, k.criterion,
+                    k.yield_strength, kf, k.required_cycles)
+
+
 def _specs(table: PartsSpec) -> dict[str, Any]:
     return {
         "bearings": tuple(BearingSpec(b.joint, b.kind, b.capacity, b.life, b.reliability, b.diameter, b.length,
                                       b.max_pressure, b.max_pv) for b in table.bearings),
         "pins": tuple(PinSpec(p.joint, p.diameter, p.length, p.shear_planes, p.allowable_shear,
                               p.allowable_pressure) for p in table.pins),
-        "links": tuple(LinkSpec(k.body, k.area, k.section_modulus, k.endurance_limit, k.ultimate_strength,
-                                k.min_safety) for k in table.links),
+        "links": tuple(_link_spec(k, i) for i, k in enumerate(table.links)),
     }
 
 
@@ -142,6 +223,8 @@ def check(problem: Any, table: PartsSpec, source: str | None = None) -> list[tup
         return problems
     try:
         size_parts(analyse(mech, crank_angles(36), 1.0).forces, **_specs(table))
+    except ProblemFileError as exc:
+        return list(exc.problems)
     except InputError as exc:
         return [("parts", str(exc))]
     return []

@@ -51,7 +51,19 @@ from ..problem.build import build_mechanism
 from ..problem.fields import Angle, Inertia, Time, Torque
 from ..problem.schema import Spec
 from ..results.labels import Label
+from .brakes import BrakeTorque, Heating
 from .clutch import Engagement, Stop, engage, stop_machine
+from .gear_stage import GearCheck, GearTeethTable, check_teeth, gear_results
+from .geometry_tables import (
+    BrakeGeometry,
+    BrakeHeating,
+    ClutchGeometry,
+    ClutchRating,
+    heating_of,
+    rate_brake,
+    rate_clutch,
+)
+from .shaft_check import ShaftCheck, ShaftTable, check_shaft, shaft_results
 from .single_stroke import single_stroke, single_stroke_duty
 
 RPM = 30.0 / np.pi
@@ -64,17 +76,27 @@ class StageTable(Spec):
     inertia: Inertia = 0.0
     name: str = ""
     shaft: str = ""   # a name for the stage's output shaft (the flywheel, clutch and brake may name it)
+    teeth: GearTeethTable | None = None        # a gear stage's teeth: Lewis bending and Hertz contact checks
+
+    @model_validator(mode="after")
+    def _teeth_on_gears(self):
+        if self.teeth is not None and self.kind != "gear":
+            raise ValueError(f"teeth belong to a gear stage; this stage is a {self.kind}")
+        return self
 
 
 class ClutchTable(Spec):
     shaft: int | str | None = None
-    slip_torque: Torque
+    slip_torque: Torque | None = None
+    geometry: ClutchGeometry | None = None     # instead of slip_torque: the torque from the faces or shoes
     motor_torque: Torque = 0.0
     strokes_per_minute: float | None = Field(None, gt=0.0, allow_inf_nan=False)
 
 
 class BrakeTable(Spec):
-    torque: Torque
+    torque: Torque | None = None
+    geometry: BrakeGeometry | None = None      # instead of torque: the torque from the lever, band or pads
+    heating: BrakeHeating | None = None
     shaft: int | str | None = None
     at: list[Angle] = []
     max_angle: Angle | None = None
@@ -97,6 +119,7 @@ class DriveTrainSpec(Spec):
     clutch: ClutchTable | None = None
     brake: BrakeTable | None = None
     single_stroke: SingleStrokeTable | None = None
+    shafts: list[ShaftTable] = []
 
     @model_validator(mode="after")
     def _shafts(self):
@@ -118,13 +141,24 @@ class DriveTrainSpec(Spec):
                 resolve_shaft(self.brake.shaft, self)
             except ValueError as exc:
                 raise ValueError(f"brake.shaft {exc}") from None
-        if self.clutch is not None and not self.clutch.slip_torque > 0:
-            raise ValueError(f"clutch.slip_torque must be > 0 N*m; got {self.clutch.slip_torque:g} N*m")
-        if self.brake is not None and not self.brake.torque > 0:
-            raise ValueError(f"brake.torque must be > 0 N*m; got {self.brake.torque:g} N*m")
+        for i, s in enumerate(self.shafts):
+            if s.shaft > last:
+                raise ValueError(f"shafts[{i}].shaft must be 0 to {last} (the crank shaft); got {s.shaft}")
+        if self.clutch is not None:
+            _one_of("clutch", "slip_torque", self.clutch.slip_torque, self.clutch.geometry)
+        if self.brake is not None:
+            _one_of("brake", "torque", self.brake.torque, self.brake.geometry)
         if self.single_stroke is not None and (self.clutch is None or self.brake is None):
             raise ValueError("single_stroke needs both a [drivetrain.clutch] and a [drivetrain.brake]")
         return self
+
+
+def _one_of(table: str, field: str, value: float | None, geometry: Any) -> None:
+    if (value is None) == (geometry is None):
+        raise ValueError(f"{table} needs either {table}.{field} or {table}.geometry, "
+                         f"{'not both' if geometry is not None else 'one of them'}")
+    if value is not None and not value > 0:
+        raise ValueError(f"{table}.{field} must be > 0 N*m; got {value:g} N*m")
 
 
 @dataclass(frozen=True)
@@ -142,6 +176,12 @@ class DriveTrainRun:
     crank_speed: float
     single_stroke: Any = None
     single_stroke_duty: Any = None  # the motor's duty over repeated single strokes (a DutyCheck), if rated
+    clutch_rating: ClutchRating | None = None     # the clutch's torque from its geometry
+    brake_rating: BrakeTorque | None = None       # the brake's torque from its geometry
+    heating: Heating | None = None                # the brake drum's heating by the worst stop
+    brake_torque: float | None = None             # on the brake's shaft [N*m]
+    gear_checks: tuple[GearCheck, ...] = ()       # the teeth of the gear stages that describe them
+    shaft_checks: tuple[ShaftCheck, ...] = ()     # the shafts of [[drivetrain.shafts]]
 
 
 def _line(problem: Any) -> DriveLine:
@@ -153,15 +193,50 @@ def _peak_at_clutch(train: DriveTrain, shaft: int, crank_torque: np.ndarray) -> 
     return float(np.max(np.abs(train.shaft_torques(crank_torque)[shaft])))
 
 
+def clutch_rating(table: DriveTrainSpec, line: DriveLine, crank_speed: float) -> ClutchRating:
+    """The clutch's slip torque on its shaft: typed, or from its geometry at the shaft's running speed."""
+    assert table.clutch is not None
+    if table.clutch.geometry is None:
+        assert table.clutch.slip_torque is not None
+        return ClutchRating(float(table.clutch.slip_torque))
+    assert line.clutch_shaft is not None
+    speed = crank_speed * float(line.train.speed_ratios[line.clutch_shaft])
+    try:
+        return rate_clutch(table.clutch.geometry, speed)
+    except InputError as exc:
+        raise ProblemFileError([("drivetrain.clutch.geometry", str(exc))]) from None
+
+
+def brake_rating(table: DriveTrainSpec) -> BrakeTorque:
+    """The brake's torque on its shaft: typed, or from its geometry (a brake that locks itself is refused)."""
+    assert table.brake is not None
+    if table.brake.geometry is None:
+        assert table.brake.torque is not None
+        return BrakeTorque(float(table.brake.torque), 0.0, float(table.brake.torque), False)
+    try:
+        rating = rate_brake(table.brake.geometry)
+    except InputError as exc:
+        raise ProblemFileError([("drivetrain.brake.geometry", str(exc))]) from None
+    if not rating.torque > 0:
+        raise ProblemFileError([("drivetrain.brake.geometry", "gives no braking torque (is its force 0 N?)")])
+    return rating
+
+
 def check(problem: Any, table: DriveTrainSpec, source: str | None = None) -> list[tuple[str, str]]:
-    """Validations ``run`` relies on: the clutch carries the largest torque of the cycle at its shaft. (A value
-    of the drive line given twice is the ``[flywheel]`` check's: it names both fields.)"""
+    """Validations ``run`` relies on: a brake from its geometry that does not lock itself, and a clutch that
+    carries the largest torque of the cycle at its shaft. (A value of the drive line given twice is the
+    ``[flywheel]`` check's: it names both fields.)"""
     if line_problems(problem, getattr(problem, "flywheel", None)):
         return []
     try:
         line = _line(problem)
     except InputError as exc:
         return [("drivetrain.stages", str(exc))]
+    if table.brake is not None:
+        try:
+            brake_rating(table)
+        except ProblemFileError as exc:
+            return list(exc.problems)
     if table.clutch is None:
         return []
     try:
@@ -169,17 +244,26 @@ def check(problem: Any, table: DriveTrainSpec, source: str | None = None) -> lis
         torque = analyse(mech, crank_angles(360), abs(problem.drive.speed)).forces.driving_torque
     except (ProblemFileError, InputError):
         return []  # the kind's own check reports them
-    return _clutch_problems(table, line, np.asarray(torque, dtype=float))
+    try:
+        return _clutch_problems(table, line, np.asarray(torque, dtype=float), abs(float(problem.drive.speed)))
+    except ProblemFileError as exc:
+        return list(exc.problems)
 
 
-def _clutch_problems(table: DriveTrainSpec, line: DriveLine, torque: np.ndarray) -> list[tuple[str, str]]:
+def _clutch_problems(table: DriveTrainSpec, line: DriveLine, torque: np.ndarray,
+                     crank_speed: float) -> list[tuple[str, str]]:
     assert table.clutch is not None and line.clutch_shaft is not None
     shaft = line.clutch_shaft
     peak = _peak_at_clutch(line.train, shaft, torque)
-    if table.clutch.slip_torque <= peak:
-        return [("drivetrain.clutch.slip_torque",
-                 f"must exceed the largest torque the clutch carries on shaft {shaft} over the cycle, "
-                 f"{peak:.4g} N*m; got {table.clutch.slip_torque:.4g} N*m")]
+    slip = clutch_rating(table, line, crank_speed).torque
+    if slip <= peak:
+        if table.clutch.geometry is None:
+            return [("drivetrain.clutch.slip_torque",
+                     f"must exceed the largest torque the clutch carries on shaft {shaft} over the cycle, "
+                     f"{peak:.4g} N*m; got {slip:.4g} N*m")]
+        return [("drivetrain.clutch.geometry",
+                 f"gives a slip torque of {slip:.4g} N*m, which must exceed the largest torque the clutch carries "
+                 f"on shaft {shaft} over the cycle, {peak:.4g} N*m")]
     return []
 
 
@@ -194,7 +278,7 @@ def run(ctx: StageContext) -> Outcome:
     if torque.ndim != 1:
         raise InputError("[drivetrain] analyses a single design; the file describes several.")
     crank_speed = float(np.mean(np.abs(np.ravel(ctx.analysis.kinematics.speed))))
-    problems = _clutch_problems(table, line, torque) if table.clutch is not None else []
+    problems = _clutch_problems(table, line, torque, crank_speed) if table.clutch is not None else []
     if problems:
         raise ProblemFileError(problems)
     shaft_torques = train.shaft_torques(torque)
@@ -211,38 +295,61 @@ def run(ctx: StageContext) -> Outcome:
     ratios = train.speed_ratios
     n = len(train.stages)
 
-    engagement, shaft = None, line.clutch_shaft
+    engagement, shaft, rating = None, line.clutch_shaft, None
     if table.clutch is not None:
         assert shaft is not None
+        rating = clutch_rating(table, line, crank_speed)
         drive_side, driven_side = _sides(line, shaft, fly_inertia)  # at the crank
         linkage = float(np.mean(machine.inertia(np.linspace(0, 2 * np.pi, 361)[:-1])))
         to_clutch = ratios[shaft] ** 2  # inertias at the crank, taken to the clutch shaft
         engagement = engage(drive_side / to_clutch, crank_speed * ratios[shaft], (driven_side + linkage) / to_clutch,
-                            0.0, table.clutch.slip_torque,
+                            0.0, rating.torque,
                             driving_torque=_motor_at_clutch(line, flywheel, crank_speed, table.clutch.motor_torque))
 
     stops: list[Stop] = []
-    worst = None
+    worst, braking, heating = None, None, None
     if table.brake is not None:
+        braking = brake_rating(table)
         # the brake stops what the clutch (if any) leaves joined to the crank
         extra = _sides(line, shaft, fly_inertia)[1] if shaft is not None else line.shaft_inertia + fly_inertia
         at_shaft = n if line.brake_shaft is None else line.brake_shaft
-        brake_at_crank = table.brake.torque * ratios[at_shaft]
+        brake_at_crank = braking.torque * ratios[at_shaft]
         angles = table.brake.at or list(np.linspace(0.0, 2 * np.pi, 12, endpoint=False))
         for a in angles:
             stops.append(stop_machine(machine, extra, crank_speed, brake_at_crank, float(a)))
         worst = max(stops, key=lambda s: s.angle)
+        if table.brake.heating is not None:
+            try:
+                heating = heating_of(table.brake.heating, brake_at_crank * worst.angle)
+            except InputError as exc:
+                raise ProblemFileError([("drivetrain.brake.heating", str(exc))]) from None
 
     stroke = None
     if table.single_stroke is not None:
-        stroke = _single_stroke(table, line, machine, flywheel, fly_inertia, crank_speed)
+        assert rating is not None and braking is not None
+        stroke = _single_stroke(table, line, machine, flywheel, fly_inertia, crank_speed, rating.torque,
+                                braking.torque)
     duty = None
     if stroke is not None and flywheel is not None and hasattr(flywheel.drive, "rated_torque"):
         assert table.clutch is not None
         duty = single_stroke_duty(stroke, flywheel.drive, table.clutch.strokes_per_minute)
+    gears = tuple(check_teeth(k, s.teeth, s.ratio, shaft_torques, ratios, crank_speed)
+                  for k, s in enumerate(table.stages) if s.teeth is not None)
     done = DriveTrainRun(train, np.asarray(forces.kinematics.crank_angle, dtype=float), shaft_torques, shaft,
-                         engagement, tuple(stops), worst, crank_speed, stroke, duty)
+                         engagement, tuple(stops), worst, crank_speed, stroke, duty, rating, braking, heating,
+                         braking.torque if braking is not None else None, gears,
+                         _check_shafts(table, shaft_torques, crank_speed * ratios))
     return _outcome(done, table)
+
+
+def _check_shafts(table: DriveTrainSpec, shaft_torques: np.ndarray, speeds: np.ndarray) -> tuple[ShaftCheck, ...]:
+    checks = []
+    for i, s in enumerate(table.shafts):
+        try:
+            checks.append(check_shaft(s, shaft_torques[s.shaft], float(speeds[s.shaft])))
+        except InputError as exc:
+            raise ProblemFileError([(f"drivetrain.shafts[{i}]", str(exc))]) from None
+    return tuple(checks)
 
 
 def idle_speed(motor: Any, nominal: float) -> float:
@@ -289,7 +396,7 @@ def _sides(line: DriveLine, clutch: int, fly_inertia: float) -> tuple[float, flo
 
 
 def _single_stroke(table: DriveTrainSpec, line: DriveLine, machine: Any, flywheel: FlywheelRun | None,
-                   fly_inertia: float, crank_speed: float) -> Any:
+                   fly_inertia: float, crank_speed: float, slip_torque: float, brake_torque: float) -> Any:
     """The single stroke of ``[drivetrain.single_stroke]``, everything reduced to the crank shaft: the motor of
     ``[flywheel.motor]`` (or the clutch table's constant ``motor_torque``) on the driving side."""
     assert table.clutch is not None and table.brake is not None and table.single_stroke is not None
@@ -312,8 +419,8 @@ def _single_stroke(table: DriveTrainSpec, line: DriveLine, machine: Any, flywhee
     try:
         return single_stroke(machine, motor, drive_inertia=drive_side, driven_inertia=driven_side,
                              speed=idle_speed(motor, crank_speed),
-                             slip_torque=float(table.clutch.slip_torque * ratios[shaft]),
-                             brake_torque=float(table.brake.torque * ratios[at_brake]),
+                             slip_torque=float(slip_torque * ratios[shaft]),
+                             brake_torque=float(brake_torque * ratios[at_brake]),
                              start_angle=float(table.single_stroke.start), brake_angle=table.single_stroke.brake_at)
     except InputError as exc:
         raise ProblemFileError([("drivetrain.single_stroke", str(exc))]) from None
@@ -331,6 +438,16 @@ def _outcome(done: DriveTrainRun, table: DriveTrainSpec) -> Outcome:
         scalars[f"drivetrain.shaft_{k}.torque.max_abs"] = float(np.max(np.abs(t)))
         labels[f"drivetrain.shaft_{k}.torque.max_abs"] = Label(f"Drive train: peak torque, {where}", "N*m")
     failed = []
+    gear_values, gear_labels = gear_results(done.gear_checks)
+    scalars.update(gear_values)
+    labels.update(gear_labels)
+    for g in done.gear_checks:
+        failed += g.failures()
+    shaft_values, shaft_labels = shaft_results(done.shaft_checks)
+    scalars.update(shaft_values)
+    labels.update(shaft_labels)
+    for c in done.shaft_checks:
+        failed += c.failures()
     e = done.engagement
     if e is not None:
         assert table.clutch is not None and done.clutch_shaft is not None
@@ -343,10 +460,14 @@ def _outcome(done: DriveTrainRun, table: DriveTrainSpec) -> Outcome:
         })
         if table.clutch.strokes_per_minute is not None:
             scalars["clutch.heat_power"] = e.dissipated * table.clutch.strokes_per_minute / 60.0
+        scalars.update(_clutch_scalars(done, table))
     s = done.worst_stop
     if s is not None:
         assert table.brake is not None
         scalars.update({"brake.stop_time": s.time, "brake.stop_angle": s.angle})
+        brake_scalars, brake_failed = _brake_scalars(done, table)
+        scalars.update(brake_scalars)
+        failed += brake_failed
         if table.brake.max_angle is not None and s.angle > table.brake.max_angle:
             failed.append(f"brake: the crank overruns {np.degrees(s.angle):.1f}° after the brake is applied, more "
                           f"than brake.max_angle = {np.degrees(table.brake.max_angle):.1f}°")
@@ -386,10 +507,49 @@ def _outcome(done: DriveTrainRun, table: DriveTrainSpec) -> Outcome:
         series["single_stroke"] = {"time": (k.t, "s"), "crank_angle": (k.phi, "rad"), "crank_speed": (k.omega, "rad/s"),
                                    "drive_side_speed": (k.omega_drive, "rad/s"),
                                    "clutch_torque": (k.clutch_torque, "N*m"), "motor_torque": (k.motor_torque, "N*m")}
-    summary = tuple(key for key in scalars if not key.startswith("drivetrain.shaft_")) + \
+    summary = tuple(key for key in scalars if not key.startswith(("drivetrain.shaft_", "drivetrain.stage_"))) + \
         ("drivetrain.shaft_0.torque.max_abs",)
     return Outcome(results=done, scalars=scalars, labels=labels, series=series, summary=summary,
                    failed_checks=tuple(failed))
+
+
+def _clutch_scalars(done: DriveTrainRun, table: DriveTrainSpec) -> dict[str, float]:
+    e, rating = done.engagement, done.clutch_rating
+    assert e is not None and rating is not None and table.clutch is not None
+    out = {"clutch.torque": rating.torque, "clutch.driven_acceleration": e.driven_acceleration,
+           "clutch.driving_deceleration": e.driving_deceleration}
+    geometry = table.clutch.geometry
+    if geometry is not None and geometry.kind == "centrifugal":
+        out["clutch.engagement_speed"] = rating.engagement_speed
+    elif geometry is not None:
+        out.update({"clutch.axial_force": rating.force, "clutch.max_pressure": rating.max_pressure})
+    return out
+
+
+def _brake_scalars(done: DriveTrainRun, table: DriveTrainSpec) -> tuple[dict[str, float], list[str]]:
+    brake, rating, heating = table.brake, done.brake_rating, done.heating
+    assert brake is not None and rating is not None and done.worst_stop is not None
+    out = {"brake.torque": rating.torque}
+    failed: list[str] = []
+    if brake.geometry is not None:
+        out.update({"brake.lever_force": rating.lever_force, "brake.torque_reverse": rating.torque_reverse})
+        if brake.geometry.kind == "internal_shoe":
+            out["brake.max_pressure"] = rating.max_pressure
+            limit = brake.geometry.max_allowed_pressure
+            if limit is not None and rating.max_pressure > limit:
+                failed.append(f"brake: the lining pressure {rating.max_pressure / 1e6:.4g} MPa exceeds "
+                              f"brake.geometry.max_allowed_pressure = {limit / 1e6:.4g} MPa")
+    if heating is not None:
+        assert brake.heating is not None
+        out.update({"brake.stop_energy": heating.rise_per_stop * brake.heating.mass * brake.heating.specific_heat,
+                    "brake.temperature_rise": heating.rise_per_stop,
+                    "brake.temperature_rise_steady": heating.steady_peak_rise})
+        limit = brake.heating.max_temperature_rise
+        if limit is not None and heating.steady_peak_rise > limit:
+            failed.append(f"brake: the drum heats {heating.steady_peak_rise:.4g} K above its surroundings "
+                          f"{'after many stops' if brake.heating.stops_per_hour else 'in one stop'}, more than "
+                          f"brake.heating.max_temperature_rise = {limit:.4g} K")
+    return out, failed
 
 
 LABELS = {
@@ -401,6 +561,21 @@ LABELS = {
     "clutch.crank_speed_after": Label("Clutch: crank speed when the slip ends", "rad/s", "rpm"),
     "clutch.speed_drop": Label("Clutch: relative speed drop of the driving side (fraction)", ""),
     "clutch.heat_power": Label("Clutch: mean heat power at the stroke rate", "W"),
+    "clutch.torque": Label("Clutch: slip torque on its shaft", "N*m"),
+    "clutch.driven_acceleration": Label("Clutch: driven side's acceleration while the clutch slips (at the clutch "
+                                        "shaft)", "rad/s^2"),
+    "clutch.driving_deceleration": Label("Clutch: driving side's deceleration while the clutch slips (at the "
+                                         "clutch shaft)", "rad/s^2"),
+    "clutch.axial_force": Label("Clutch: axial force on the friction faces", "N"),
+    "clutch.max_pressure": Label("Clutch: largest pressure on the friction faces", "Pa", "MPa"),
+    "clutch.engagement_speed": Label("Clutch: speed at which the centrifugal shoes touch the drum", "rad/s", "rpm"),
+    "brake.torque": Label("Brake: braking torque on its shaft", "N*m"),
+    "brake.lever_force": Label("Brake: actuating force at the lever (or on each shoe or pad)", "N"),
+    "brake.torque_reverse": Label("Brake: braking torque with the drum turning the other way", "N*m"),
+    "brake.max_pressure": Label("Brake: largest lining pressure of the self-energising shoe", "Pa", "MPa"),
+    "brake.stop_energy": Label("Brake: energy turned into heat by the worst stop", "J"),
+    "brake.temperature_rise": Label("Brake: temperature rise of the drum per stop", "K"),
+    "brake.temperature_rise_steady": Label("Brake: largest temperature rise of the drum after many stops", "K"),
     "brake.stop_time": Label("Brake: stopping time, worst application angle", "s"),
     "brake.stop_angle": Label("Brake: stopping angle of the crank, worst application angle", "rad", "deg"),
     "single_stroke.brake_angle": Label("Single stroke: crank angle where the clutch opens and the brake closes",

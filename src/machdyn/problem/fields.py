@@ -120,5 +120,8 @@ PositiveAngularVelocity = quantity("rad/s", "angular_velocity", ">0")
 TwistRate = quantity("rad/m", "twist_rate", ">0")
 NonNegativeForce = quantity("N", "force", ">=0")
 PositiveTorque = quantity("N*m", "torque", ">0")
+SpecificHeat = quantity("J/(kg*K)", "specific_heat", ">0")
+HeatTransfer = quantity("W/K", "heat_transfer", ">=0")
+TemperatureDifference = quantity("K", "temperature_difference", ">0")
 
 Point = tuple[Length, Length]  # type: ignore[valid-type]  # Length is an Annotated alias built at import

@@ -3,6 +3,7 @@ clutch engagement and the brake's stops."""
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -86,6 +87,67 @@ def plot_single_stroke(axes: Any, stroke: Any) -> Any:
     return _finish(torque_ax, "Single stroke: clutch torque")
 
 
+def plot_brake_heating(ax: Any, heating: Any) -> Any:
+    """The drum's temperature rise over repeated stops: a jump of ΔT per stop, Newton cooling between them, and
+    the steady peak the series tends to."""
+    stops = 1 if not math.isfinite(heating.interval) else max(3, min(400, int(math.ceil(
+        4.0 / max(heating.decay_rate * heating.interval, 1e-9)))))
+    t, rise = heating.history(stops, points=max(4, 4000 // stops))
+    ax.plot(np.asarray(t) / 60.0, rise, color=PALETTE[3 % len(PALETTE)], linewidth=0.9, label="drum")
+    ax.axhline(heating.steady_peak_rise, color="#888888", linestyle="--", label="steady peak")
+    ax.set_xlabel("time [min]")
+    ax.set_ylabel("temperature rise [K]")
+    return _finish(ax, "Brake drum heating over repeated stops")
+
+
+def _geometry_rows(run: Any) -> list[list[str]]:
+    """Rows for a clutch and a brake computed from their geometry."""
+    rows = []
+    rating = getattr(run, "clutch_rating", None)
+    if rating is not None and run.engagement is not None:
+        rows.append(["clutch: slip torque on its shaft", f"{format_value(rating.torque)} N·m"])
+        if rating.force > 0:
+            rows.append(["clutch: axial force, largest face pressure",
+                         f"{format_value(rating.force)} N, {format_value(rating.max_pressure / 1e6)} MPa"])
+        if rating.engagement_speed > 0:
+            rows.append(["clutch: shoes touch the drum at", f"{format_value(rating.engagement_speed * 30 / np.pi)}"
+                                                            " rpm of the clutch shaft"])
+        rows.append(["clutch: driven side's acceleration while slipping",
+                     f"{format_value(run.engagement.driven_acceleration)} rad/s² (driving side slows at "
+                     f"{format_value(run.engagement.driving_deceleration)} rad/s²)"])
+    braking = getattr(run, "brake_rating", None)
+    if braking is not None and braking.lever_force > 0:
+        rows.append(["brake: braking torque on its shaft",
+                     f"{format_value(braking.torque)} N·m for {format_value(braking.lever_force)} N at the lever "
+                     f"({'self-energising' if braking.self_energising else 'not self-energising'}; "
+                     f"{format_value(braking.torque_reverse)} N·m turning the other way)"])
+        if braking.max_pressure > 0:
+            rows.append(["brake: largest lining pressure", f"{format_value(braking.max_pressure / 1e6)} MPa"])
+    for g in getattr(run, "gear_checks", ()):
+        allowed = (f" (allowed {format_value(g.allowable_bending / 1e6)} MPa)" if g.allowable_bending else "")
+        rows.append([f"gear stage {g.stage}: tooth root stress (Lewis, K_v {format_value(g.velocity_factor)})",
+                     f"pinion {format_value(g.pinion_bending / 1e6)} MPa, gear {format_value(g.gear_bending / 1e6)} "
+                     f"MPa{allowed}; tangential load {format_value(g.tangential_load)} N at "
+                     f"{format_value(g.pitch_speed)} m/s"])
+        allowed = (f" (allowed {format_value(g.allowable_contact / 1e6)} MPa)" if g.allowable_contact else "")
+        rows.append([f"gear stage {g.stage}: contact stress (Hertz)", f"{format_value(g.contact / 1e6)} MPa{allowed}"])
+    for c in getattr(run, "shaft_checks", ()):
+        rows.append([f"shaft {c.shaft}: at the wheel",
+                     f"M = {format_value(c.moment)} N·m, T = {format_value(c.torque_mean)} ± "
+                     f"{format_value(c.torque_amplitude)} N·m; fatigue safety {format_value(c.fatigue_safety)}"
+                     f"{'' if not math.isfinite(c.yield_safety) else f', yield {format_value(c.yield_safety)}'}"
+                     f" (at least {format_value(c.min_safety)}); deflection {format_value(c.deflection * 1e3)} mm"])
+        rows.append([f"shaft {c.shaft}: first critical speed",
+                     f"{format_value(c.critical_dunkerley * 30 / math.pi)} rpm (Dunkerley) to "
+                     f"{format_value(c.critical_rayleigh * 30 / math.pi)} rpm (Rayleigh); runs at "
+                     f"{format_value(c.running_speed * 30 / math.pi)} rpm"])
+    heating = getattr(run, "heating", None)
+    if heating is not None:
+        rows.append(["brake: drum temperature rise", f"{format_value(heating.rise_per_stop)} K per stop, "
+                                                     f"{format_value(heating.steady_peak_rise)} K after many stops"])
+    return rows
+
+
 def _stroke_html(stroke: Any) -> str:
     figure = _render("single-stroke", "Single stroke", "Clutch in from rest, the stroke, clutch out and brake, "
                      "then the motor bringing the flywheel back to speed.", (10.0, 3.6),
@@ -106,7 +168,8 @@ def _stroke_html(stroke: Any) -> str:
 def sections(outcome: Any) -> list[tuple[str, str]]:
     """The ``[drivetrain]`` section."""
     run = outcome.results
-    panels = 2 + (run.worst_stop is not None)
+    heating = getattr(run, "heating", None)
+    panels = 2 + (run.worst_stop is not None) + (heating is not None)
 
     def draw(fig):
         axes = fig.subplots(1, panels)
@@ -114,6 +177,8 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
         plot_shaft_torques(axes[1], run)
         if run.worst_stop is not None:
             plot_stops(axes[2], run)
+        if heating is not None:
+            plot_brake_heating(axes[-1], heating)
 
     figure = _render("drivetrain", "Drive train, shaft torques and brake", "", (4.6 * panels, 3.4), draw,
                      margins=(0.7, 0.3, 0.65, 0.45), wspace=0.35)
@@ -125,6 +190,7 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
                  ["clutch: energy dissipated per engagement", f"{format_value(e.dissipated)} J"],
                  ["clutch: crank speed when the slip ends",
                   f"{format_value(e.common_speed / ratio * RPM)} rpm (running {format_value(run.crank_speed * RPM)})"]]
+    rows += _geometry_rows(run)
     if run.worst_stop is not None:
         s = run.worst_stop
         rows += [["brake: worst stop", f"{format_value(s.time)} s over {format_value(np.degrees(s.angle))}° of the "

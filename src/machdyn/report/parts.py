@@ -7,6 +7,7 @@ from typing import Any
 
 import numpy as np
 
+from ..drivetrain.fatigue import failure_amplitude
 from ..results.labels import display_factor
 from .html import _render, figures_html, format_value, rows_html
 from .plotkit import PALETTE, _finish
@@ -40,6 +41,30 @@ def plot_link_stress(ax: Any, result: Any) -> Any:
     return _finish(ax, "Link stresses (axial + inertial bending)")
 
 
+def plot_haigh(ax: Any, result: Any) -> Any:
+    """The Haigh (σ_m, σ_a) diagram of each link: its fatigue criterion's line, Langer's yield line (with S_y),
+    the compressive side σ_a = S_e, and the link's point (its notch factor applied)."""
+    top = 0.0
+    for k, (body, p) in enumerate(result.link_fatigue.items()):
+        colour = PALETTE[k % len(PALETTE)]
+        se, su, sy = p.endurance / 1e6, p.ultimate / 1e6, (p.yield_strength or 0.0) / 1e6
+        mean = np.linspace(0.0, su, 200)
+        # the criterion's line: the amplitude at which the factor of safety is 1, for each mean
+        amp = [failure_amplitude(m * 1e6, p.endurance, p.ultimate, p.yield_strength, p.criterion) / 1e6
+               for m in mean]
+        ax.plot(mean, amp, color=colour, label=f"{body}: {p.criterion.replace('_', ' ')}")
+        ax.plot([-su, 0.0], [se, se], color=colour)
+        if sy:
+            ax.plot([-sy, 0.0, sy], [0.0, sy, 0.0], color=colour, linestyle="--", linewidth=0.9,
+                    label=f"{body}: Langer yield")
+        ax.plot([p.mean / 1e6], [p.amplitude / 1e6], "o", color=colour)
+        top = max(top, se * 1.3, p.amplitude / 1e6 * 1.2, sy * 1.05)
+    ax.set_ylim(0.0, top or 1.0)
+    ax.set_xlabel("mean stress σm [MPa]")
+    ax.set_ylabel("stress amplitude σa [MPa]")
+    return _finish(ax, "Links: fatigue (Haigh) diagram")
+
+
 def sections(outcome: Any) -> list[tuple[str, str]]:
     """The ``[parts]`` section: checks table and plots."""
     result = outcome.results
@@ -52,7 +77,8 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
                      f"{limit} {unit}".strip(), f"{100 * c.utilisation:.0f} %", "pass" if c.passed else "FAIL"])
     table = rows_html(rows, ["part", "check", "value", "limit", "utilisation", ""])
     panels = [p for p in (plot_bearing_loads if result.bearing_loads else None,
-                          plot_link_stress if result.link_stress else None) if p is not None]
+                          plot_link_stress if result.link_stress else None,
+                          plot_haigh if getattr(result, "link_fatigue", None) else None) if p is not None]
     figures = []
     if panels:
         def draw(fig):

@@ -205,6 +205,8 @@ RUN_TIME: tuple[Quantity, ...] = (
     Quantity("frame.mean_acceleration_reduction", "Frame: mean acceleration reduction", producer="frame"),
     Quantity("drivetrain.shaft_<index>.torque.max_abs", "Drive train: shaft {index}, max |torque|", "N*m",
              producer="drivetrain"),
+    Quantity("drivetrain.shaft_<index>.<figure>", "Drive train: shaft {index}, {figure}", producer="drivetrain"),
+    Quantity("drivetrain.stage_<index>.<figure>", "Drive train: gear stage {index}, {figure}", producer="drivetrain"),
     Quantity("parts.<part>.<name>.<figure>", "Parts: {part} {name}, {figure}", producer="parts"),
     Quantity("rotary_screen.<figure>.<source>", "Rotary screen: {figure} ({source})", producer="rotary_screen"),
     Quantity("synthesis.best.<figure>", "Synthesis: best candidate, {figure}", producer="synthesis"),
