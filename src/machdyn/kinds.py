@@ -14,6 +14,7 @@ from typing import Any
 from pydantic import create_model
 
 from .pipeline import Capability, ProblemKind, import_object
+from .results.catalogue import OWN, RUN_TIME, Quantity, declared
 
 #: main table -> the :class:`~machdyn.pipeline.ProblemKind`
 KINDS: dict[str, str] = {
@@ -86,3 +87,17 @@ def steps_of(kind_name: str, tables: tuple[str, ...] = ()) -> list[str]:
     steps = ["reading", *kind(kind_name).steps]
     steps += [c.step for c in capabilities_for(kind_name) if c.table in tables]
     return [*steps, "tables", "report"]
+
+
+@cache
+def catalogue() -> tuple[Quantity, ...]:
+    """Every quantity machdyn reports: the linkage results, the compactor's, the population checks
+    (:data:`machdyn.results.catalogue.OWN`), each registered problem kind's and capability's declared results
+    (their ``labels``; producer = the kind or the capability's table) and the keys made at run time."""
+    out = list(OWN)
+    seen = {q.key for q in out}
+    for name in KINDS:
+        out += declared(kind(name).labels, name, seen)
+    for table in CAPABILITIES:
+        out += declared(capability(table).labels, table, seen)
+    return (*out, *RUN_TIME)

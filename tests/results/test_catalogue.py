@@ -10,6 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from machdyn.kinds import catalogue
 from machdyn.problem.build import build_mechanism, crank_angles
 from machdyn.reading import load_problem
 from machdyn.results.catalogue import (
@@ -18,7 +19,6 @@ from machdyn.results.catalogue import (
     RUN_TIME,
     STATUS,
     canonical,
-    catalogue,
     find,
     population_quantities,
 )

@@ -30,13 +30,13 @@ import numpy as np
 
 from ..errors import MachdynError, ProblemFileError
 from ..explore.execution import announce_estimate, current
-from ..kinds import KINDS
+from ..kinds import KINDS, catalogue
 from ..optimise.per_design import KnownResults, capability_results, unit_of
 from ..pipeline import Outcome, StageContext
 from ..problem.errors import did_you_mean
 from ..problem.paths import design_problem
 from ..problem.sweep import expand_sweep
-from ..results.catalogue import catalogue, find
+from ..results.catalogue import find
 from ..results.labels import Label
 from .sweep import SweepRun
 
