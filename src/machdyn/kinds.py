@@ -29,13 +29,13 @@ KINDS: dict[str, str] = {
 
 #: optional table -> the :class:`~machdyn.pipeline.Capability`
 CAPABILITIES: dict[str, str] = {
-    "sweep": "machdyn.explore.stage:CAPABILITY",
+    "sweep": "machdyn.studies.sweep.stage:CAPABILITY",
     "balance": "machdyn.balancing.stage:CAPABILITY",
     "frame": "machdyn.vibration.stage:FRAME",
     "signals": "machdyn.vibration.stage:SIGNALS",
     "follower_linkage": "machdyn.cams.linkage_stage:CAPABILITY",
     "flywheel": "machdyn.dynamics.stage:CAPABILITY",
-    "optimise": "machdyn.optimise.stage:CAPABILITY",
+    "optimise": "machdyn.studies.optimisation.stage:CAPABILITY",
     "drivetrain": "machdyn.drivetrain.stage:CAPABILITY",
     "parts": "machdyn.drivetrain.parts_stage:CAPABILITY",
     "field_records": "machdyn.shafts.record_stage:CAPABILITY",

@@ -96,10 +96,10 @@ def test_every_mechanism_quantity_can_be_named_a_sweep_column_and_an_objective()
     """Each per-design quantity of the mechanism kind (and of the compactor) is a result of some shipped
     mechanism, is accepted as ``[sweep] objective`` and as an ``[optimise]`` objective, and is a column of
     that mechanism's sweep."""
-    from machdyn.optimise.objectives import parse_objectives
-    from machdyn.optimise.schema import ObjectiveSpec
-    from machdyn.problem.sweep import SweepSpec
     from machdyn.results.population import result_unit, sweep_columns
+    from machdyn.studies.optimisation.objectives import parse_objectives
+    from machdyn.studies.optimisation.schema import ObjectiveSpec
+    from machdyn.studies.table import SweepSpec
 
     named: dict[str, list[str]] = {}
     for name in MECHANISMS:

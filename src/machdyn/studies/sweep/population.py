@@ -1,5 +1,5 @@
 """A ``[sweep]`` of one quantity: its design variants analysed together in one vectorised call. The ``[sweep]``
-capability (:mod:`machdyn.explore.stage`) runs it for one-quantity tables and an exploration for several."""
+capability (:mod:`machdyn.studies.sweep.stage`) runs it for one-quantity tables and an exploration for several."""
 
 from __future__ import annotations
 
@@ -8,19 +8,19 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import ProblemFileError
-from ..limits import held_values_error
-from ..linkage import stack_designs
-from ..optimise.per_design import capability_results, evaluate_designs
-from ..pipeline import Outcome, StageContext
-from ..problem.build import build_mechanism, crank_angles
-from ..problem.errors import did_you_mean
-from ..problem.sweep import expand_sweep
-from ..results.catalogue import label
-from ..results.labels import Label
-from ..results.population import FAULTS, evaluate_population, result_names, result_unit, sweep_columns
-from .design_views import MAX_VIEWS, analysed, design_problem
-from .linkage_run import crank_range
+from ...errors import ProblemFileError
+from ...limits import held_values_error
+from ...linkage import stack_designs
+from ...pipeline import Outcome, StageContext
+from ...pipelines.linkage_run import crank_range
+from ...problem.build import build_mechanism, crank_angles
+from ...problem.errors import did_you_mean
+from ...results.catalogue import label
+from ...results.labels import Label
+from ...results.population import FAULTS, evaluate_population, result_names, result_unit, sweep_columns
+from ..designs import MAX_VIEWS, analysed, design_problem
+from ..per_design import capability_results, evaluate_designs
+from ..table import expand_sweep
 
 #: The per-design results a sweep ranks its designs by in the summary (the lowest of each is named).
 RANKED = ("driving_torque.max_abs", "frame_force.max")
@@ -84,7 +84,7 @@ def unknown_columns(problem: Any, mech: Any) -> list[tuple[str, str]]:
 
 def run_sweep(problem: Any, run_design: Any = None) -> SweepRun:
     """The design variants of a problem's ``[sweep]``, evaluated together by the population evaluator; the
-    columns that are results of the file's other tables (a capability's, :mod:`machdyn.optimise.per_design`)
+    columns that are results of the file's other tables (a capability's, :mod:`machdyn.studies.per_design`)
     by ``run_design`` running each regular variant through the file's stages."""
     plan, mechs = variants(problem)
     angles, _, _ = crank_range(problem)
@@ -119,7 +119,7 @@ def _shown(values: np.ndarray) -> list:
 
 
 def _played(done: SweepRun) -> SweepRun:
-    """The sweep with up to :data:`~machdyn.pipelines.design_views.MAX_VIEWS` regular designs, evenly spread
+    """The sweep with up to :data:`~machdyn.studies.designs.MAX_VIEWS` regular designs, evenly spread
     over the swept values, analysed for playback."""
 
     plan = done.plan

@@ -17,11 +17,11 @@ from typing import Any
 
 import numpy as np
 
-from ..explore.execution import announce_estimate
-from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
+from ...results.population import DEFAULT_MIN_TRANSMISSION_DEG
+from ..exploration.execution import announce_estimate
+from ..per_design import evaluate_designs
 from .constraints import CLOSES, violations
 from .evaluate import evaluate
-from .per_design import evaluate_designs
 from .result import History, NoFeasibleDesign
 
 #: Cost floor of infeasible designs; feasible objective values must stay far below it in magnitude.
@@ -59,7 +59,7 @@ class Evaluator:
         return self.wanted & set(self.per_design_keys)
 
     def design_results(self, problems, keys) -> dict[str, np.ndarray]:
-        """``keys`` of each design's run (:func:`~machdyn.optimise.per_design.evaluate_designs`)."""
+        """``keys`` of each design's run (:func:`~machdyn.studies.per_design.evaluate_designs`)."""
         if self.run_design is None:
             raise RuntimeError("results of a capability need a way to run a design (StageContext.run_design)")
         problems = list(problems)

@@ -12,8 +12,8 @@ from collections.abc import Iterable
 
 import numpy as np
 
-from ..linkage.model import Mechanism
-from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG, evaluate_population, result_names, result_unit
+from ...linkage.model import Mechanism
+from ...results.population import DEFAULT_MIN_TRANSMISSION_DEG, evaluate_population, result_names, result_unit
 
 __all__ = ["evaluate", "result_names", "result_unit"]
 

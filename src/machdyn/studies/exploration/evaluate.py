@@ -19,12 +19,12 @@ from typing import Any
 
 import numpy as np
 
-from .. import __version__
-from ..errors import ProblemFileError
-from ..linkage import stack_designs
-from ..problem.build import build_mechanism
-from ..problem.sweep import substitute
-from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG, evaluate_population, sweep_columns
+from ... import __version__
+from ...errors import ProblemFileError
+from ...linkage import stack_designs
+from ...problem.build import build_mechanism
+from ...results.population import DEFAULT_MIN_TRANSMISSION_DEG, evaluate_population, sweep_columns
+from ..table import substitute
 from .sampling import DesignSpace
 
 #: Changes when the columns an exploration keeps change, so that partitions stored before are not reused.
