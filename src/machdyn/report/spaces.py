@@ -1,7 +1,7 @@
 """Interactive design spaces of the report: a one-quantity sweep, an exploration and an optimisation.
 
 Each is a scatter the reader can re-plot against any column, hover for a design's numbers and click to open a
-design — its numbers and, for the designs the stage analysed for playback (:mod:`machdyn.studies.designs`),
+design — its numbers and, for the designs the stage analysed for playback (:mod:`machdyn.studies.views`),
 its animation. After an optimisation the optimum plays beside the nominal design on one slider.
 Only regular designs set the scatter's scale, so that a design near a dead position with enormous forces does
 not squash the others into a corner.

@@ -15,7 +15,7 @@ from ...pipeline import Capability, Outcome, StageContext
 from ...problem.build import crank_angles
 from ...results.catalogue import find, label
 from ...results.labels import Label
-from ..designs import analysed, design_problem
+from ..views import analysed, design_problem
 from .evaluate import result_unit
 from .pareto import spacing
 from .result import NoFeasibleDesign, OptimiseResult

@@ -18,9 +18,9 @@ from ...problem.errors import did_you_mean
 from ...results.catalogue import label
 from ...results.labels import Label
 from ...results.population import FAULTS, evaluate_population, result_names, result_unit, sweep_columns
-from ..designs import MAX_VIEWS, analysed, design_problem
 from ..per_design import capability_results, evaluate_designs
 from ..table import expand_sweep
+from ..views import MAX_VIEWS, analysed, design_problem
 
 #: The per-design results a sweep ranks its designs by in the summary (the lowest of each is named).
 RANKED = ("driving_torque.max_abs", "frame_force.max")
@@ -119,7 +119,7 @@ def _shown(values: np.ndarray) -> list:
 
 
 def _played(done: SweepRun) -> SweepRun:
-    """The sweep with up to :data:`~machdyn.studies.designs.MAX_VIEWS` regular designs, evenly spread
+    """The sweep with up to :data:`~machdyn.studies.views.MAX_VIEWS` regular designs, evenly spread
     over the swept values, analysed for playback."""
 
     plan = done.plan

@@ -12,11 +12,11 @@ from ...errors import ProblemFileError
 from ...pipeline import Capability, Outcome, StageContext
 from ...results.catalogue import find, label
 from ...results.labels import Label
-from ..designs import MAX_VIEWS, views_of
 from ..exploration.execution import workers_error
 from ..exploration.run import Exploration, explore, plan_exploration, store_in_file
 from ..exploration.sampling import is_power_of_two
 from ..table import SweepSpec
+from ..views import MAX_VIEWS, views_of
 from . import population as one_quantity
 from . import runs as sweep_runs
 
