@@ -17,8 +17,9 @@ from ...problem.build import build_mechanism, crank_angles
 from ...problem.errors import did_you_mean
 from ...results.catalogue import label
 from ...results.labels import Label
-from ...results.population import FAULTS, evaluate_population, result_names, result_unit, sweep_columns
-from ..per_design import capability_results, evaluate_designs
+from ...results.population import FAULTS, result_names, result_unit, sweep_columns
+from ..evaluator import PopulationEvaluator
+from ..per_design import capability_results
 from ..table import expand_sweep
 from ..views import MAX_VIEWS, analysed, design_problem
 
@@ -100,17 +101,11 @@ def run_sweep(problem: Any, run_design: Any = None) -> SweepRun:
     machine = getattr(problem.mechanism, "machine", None)
     by_run = {k: u for k, u in capability_results(problem).items() if k in problem.sweep.extra_columns}
     wanted = sweep_columns(mech, machine, extra=tuple(k for k in problem.sweep.extra_columns if k not in by_run))
-    columns = evaluate_population(mech, angles, speed, accel, wanted, about=about, machine=machine,
-                                  min_transmission_angle=problem.sweep.transmission_limit)
-    n = len(plan.problems)
-    # Variants that are all alike stack into one design: one entry per variant all the same.
-    columns = {k: np.broadcast_to(np.asarray(v), (n,)).copy() for k, v in columns.items()}
-    units = {k: result_unit(k, mech) for k in columns}
-    if by_run and run_design is not None:
-        regular = np.asarray(columns["regular"], dtype=bool)
-        columns |= evaluate_designs(run_design, (p if ok else None for p, ok in zip(plan.problems, regular,
-                                                                                  strict=True)), by_run, n)
-        units |= by_run
+    evaluator = PopulationEvaluator(angles, speed, accel, about, machine, problem.sweep.transmission_limit,
+                                    run_design=run_design)
+    per_design = by_run if run_design is not None else {}
+    columns = evaluator(mech, wanted, len(plan.problems), per_design, plan.problems.__getitem__)
+    units = {k: per_design[k] if k in per_design else result_unit(k, mech) for k in columns}
     return SweepRun(plan, columns, units)
 
 
