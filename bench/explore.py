@@ -44,7 +44,7 @@ def problem(designs: int, positions: int, partition: int | None = None):
 
 
 def _run(spec, workers: int | None) -> tuple[float, int]:
-    from machdyn.explore import explore
+    from machdyn.studies.exploration import explore
 
     with tempfile.TemporaryDirectory(prefix="machdyn-bench-") as folder:
         started = time.perf_counter()

@@ -7,7 +7,7 @@ plate angle gamma <= 20 deg and the transmission angle >= 45 deg, over 360 crank
 
 Rows, each run ``--repeats`` times (min / median / max of designs per second):
 
-- machdyn, vectorised: :func:`machdyn.optimise.optimise` (scipy differential evolution, ``vectorized=True``:
+- machdyn, vectorised: :func:`machdyn.studies.optimisation.optimise` (scipy differential evolution, ``vectorized=True``:
   each generation of ``--population`` designs is one engine call). Two cases: kinematics only (the same work
   as the peer) and with the full force analysis (the example's peak-torque constraint added).
 - machdyn, vectorised, with the exact flywheel: the forces case plus, for every design of every generation,
@@ -72,7 +72,7 @@ def machdyn_problem(forces: bool):
 
 
 def run_machdyn(population: int, generations: int, forces: bool) -> dict[str, Any]:
-    from machdyn.optimise import optimise
+    from machdyn.studies.optimisation import optimise
 
     problem, spec = machdyn_problem(forces)
     spec = spec.model_copy(update={"population": population, "generations": generations})
@@ -85,8 +85,8 @@ def run_machdyn_flywheel(population: int, generations: int) -> dict[str, Any]:
 
     from machdyn.dynamics.population_flywheel import exact_flywheel_inertia
     from machdyn.linkage.fused_population import run_population
-    from machdyn.optimise import setup
-    from machdyn.optimise.search import INFEASIBLE
+    from machdyn.studies.optimisation import setup
+    from machdyn.studies.optimisation.search import INFEASIBLE
 
     problem, spec = machdyn_problem(True)
     ev = setup(problem, spec)
@@ -131,7 +131,7 @@ def run_search_alone(population: int, generations: int) -> dict[str, Any]:
 def run_machdyn_one_at_a_time(population: int, generations: int) -> dict[str, Any]:
     from scipy.optimize import differential_evolution
 
-    from machdyn.optimise import setup
+    from machdyn.studies.optimisation import setup
 
     problem, spec = machdyn_problem(False)
     ev = setup(problem, spec)
@@ -162,7 +162,7 @@ def pylinkage_compactor():
 
 def compactor_score(loci: np.ndarray, l_plate: float) -> float:
     """Force gain k1*k2 (min over the window) penalised by the constraints' violations, from the loci
-    (steps x joints x 2) of O, C, A, B: the same definitions as machdyn.optimise.evaluate."""
+    (steps x joints x 2) of O, C, A, B: the same definitions as machdyn.studies.optimisation.evaluate."""
     a, b, c = loci[:, 2], loci[:, 3], loci[:, 1]
     phi = np.mod(np.arctan2(a[:, 1], a[:, 0]), 2 * math.pi)
     theta2 = np.arctan2(b[:, 1] - a[:, 1], b[:, 0] - a[:, 0])

@@ -15,6 +15,9 @@ _LAZY = {
 }
 
 
+__all__ = ["RunResult", "check_problem", "dump_problem", "load_problem", "run_problem"]
+
+
 def __getattr__(name: str):
     # Re-exports load on first use so that `machdyn --version` and `import machdyn` stay light.
     if name in _LAZY:

@@ -272,7 +272,7 @@ def run(
         raise _fail("error: give --workers or --scheduler, not both", EXIT_BAD_INPUT)
     _check_where(workers, scheduler)
     try:
-        from .explore.execution import execution
+        from .studies.exploration.execution import execution
 
         with execution(workers=workers, scheduler=scheduler, store=out / "sweep.parquet"), _run_guard(out, max_time):
             _run(file, out, format, quiet)
@@ -300,13 +300,13 @@ def _interrupted(stop: KeyboardInterrupt, out: Path) -> typer.Exit:
 def _check_where(workers: int | None, scheduler: str | None) -> None:
     """Exit 2 for a scheduler address that is none, or more local workers than the machine allows."""
     if scheduler is not None:
-        from .problem.sweep import scheduler_address_error
+        from .studies.table import scheduler_address_error
 
         problem = scheduler_address_error(scheduler)
         if problem is not None:
             raise _fail(f"error: --scheduler {problem}", EXIT_BAD_INPUT)
     if workers is not None:
-        from .explore.execution import workers_error
+        from .studies.exploration.execution import workers_error
 
         problem = workers_error(workers)
         if problem is not None:
@@ -447,7 +447,7 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
             if hasattr(type(loaded.spec), "model_fields") else ()
         progress.steps = steps_of(loaded.kind, tables)
         try:
-            from .explore.execution import execution
+            from .studies.exploration.execution import execution
 
             def partitions(done: int, total: int) -> None:
                 progress.step(f"design sweep {100 * done // max(total, 1)}%")

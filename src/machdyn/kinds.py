@@ -14,6 +14,7 @@ from typing import Any
 from pydantic import create_model
 
 from .pipeline import Capability, ProblemKind, import_object
+from .results.catalogue import OWN, RUN_TIME, Quantity, declared
 
 #: main table -> the :class:`~machdyn.pipeline.ProblemKind`
 KINDS: dict[str, str] = {
@@ -28,13 +29,13 @@ KINDS: dict[str, str] = {
 
 #: optional table -> the :class:`~machdyn.pipeline.Capability`
 CAPABILITIES: dict[str, str] = {
-    "sweep": "machdyn.explore.stage:CAPABILITY",
+    "sweep": "machdyn.studies.sweep.stage:CAPABILITY",
     "balance": "machdyn.balancing.stage:CAPABILITY",
     "frame": "machdyn.vibration.stage:FRAME",
     "signals": "machdyn.vibration.stage:SIGNALS",
     "follower_linkage": "machdyn.cams.linkage_stage:CAPABILITY",
     "flywheel": "machdyn.dynamics.stage:CAPABILITY",
-    "optimise": "machdyn.optimise.stage:CAPABILITY",
+    "optimise": "machdyn.studies.optimisation.stage:CAPABILITY",
     "drivetrain": "machdyn.drivetrain.stage:CAPABILITY",
     "parts": "machdyn.drivetrain.parts_stage:CAPABILITY",
     "field_records": "machdyn.shafts.record_stage:CAPABILITY",
@@ -86,3 +87,17 @@ def steps_of(kind_name: str, tables: tuple[str, ...] = ()) -> list[str]:
     steps = ["reading", *kind(kind_name).steps]
     steps += [c.step for c in capabilities_for(kind_name) if c.table in tables]
     return [*steps, "tables", "report"]
+
+
+@cache
+def catalogue() -> tuple[Quantity, ...]:
+    """Every quantity machdyn reports: the linkage results, the compactor's, the population checks
+    (:data:`machdyn.results.catalogue.OWN`), each registered problem kind's and capability's declared results
+    (their ``labels``; producer = the kind or the capability's table) and the keys made at run time."""
+    out = list(OWN)
+    seen = {q.key for q in out}
+    for name in KINDS:
+        out += declared(kind(name).labels, name, seen)
+    for table in CAPABILITIES:
+        out += declared(capability(table).labels, table, seen)
+    return (*out, *RUN_TIME)

@@ -2,7 +2,7 @@
 
 Each is checked before the work starts, by ``machdyn check`` as by ``machdyn run``, and refused with the field
 that sets it; none depends on the machine except the number of local worker processes
-(:func:`machdyn.explore.execution.worker_limit`).
+(:func:`machdyn.studies.exploration.execution.worker_limit`).
 """
 
 from __future__ import annotations

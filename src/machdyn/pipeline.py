@@ -112,6 +112,8 @@ class Capability:
     check : ``(problem, table, source) -> [(path, message), ...]``: the validations of the table that need more
         than its schema (run by ``check`` and by ``run`` alike); ``source`` is the problem file's path (None for
         TOML text), against whose folder relative file names resolve.
+    check_model : ``(model, table) -> [(path, message), ...]``: the validations of the table against the model the
+        kind built from the file (run by ``check`` and by ``run`` alike, when the model was built without problems).
     after : tables whose outcome this stage reads (they run first), through :meth:`StageContext.result_of`.
     result_type : the type of the stage's ``Outcome.results`` (the typed contract its readers and its report rely
         on); the runner checks it after every run. None only for a stage whose results object is None.
@@ -125,6 +127,7 @@ class Capability:
     labels: Mapping[str, Label] = field(default_factory=dict)
     report: str | None = None
     check: Callable[[Any, Any, str | None], list[tuple[str, str]]] | None = None
+    check_model: Callable[[Any, Any], list[tuple[str, str]]] | None = None
     after: tuple[str, ...] = ()
     result_type: type | tuple[type, ...] | None = None
 

@@ -68,8 +68,7 @@ def validate(data: dict[str, Any], kind_name: str, source: str | None = None) ->
     """(problem, model) of parsed tables of the given kind, or one ProblemFileError with every mistake."""
     k = kind(kind_name)
     if k.validate is not None:
-        spec = k.validate(data, source)
-        return spec, None
+        return _validate_alone(k, data, kind_name, source), None
     schema = problem_model(kind_name)
     allowed = tuple(schema.model_fields)
     problems = top_level_problems(data, allowed)
@@ -87,9 +86,43 @@ def validate(data: dict[str, Any], kind_name: str, source: str | None = None) ->
             table = getattr(spec, cap.table, None)
             if table is not None and cap.check is not None and model is not None:
                 problems += cap.check(spec, table, source)
+            if table is not None and cap.check_model is not None and model is not None and not found:
+                problems += cap.check_model(model, table)
     if problems:
         raise ProblemFileError(problems, source)
     return spec, model
+
+
+def _machine_kinds() -> list[str]:
+    return [k for k in KINDS if k not in CAPABILITIES]
+
+
+def _machine_tables() -> set[str]:
+    """The tables of the files of the kinds that describe a machine, by their schemas (capabilities included)."""
+    tables = set(CAPABILITIES)
+    for name in _machine_kinds():
+        model = problem_model(name) if kind(name).schema is not None else None
+        tables |= set(getattr(model, "model_fields", {}))
+    return tables
+
+
+def _validate_alone(k: Any, data: dict[str, Any], kind_name: str, source: str | None) -> Any:
+    """The problem of a kind that validates its tables itself; a file whose main table is also a capability's
+    (``[signals]``: records judged alone) and that holds a machine's tables has lost (or misspelt) the machine's
+    main table, which is said first, with the kind's own mistakes in the other tables."""
+    machine = sorted(t for t in data if t in _machine_tables() - {"meta", kind_name}) if kind_name in CAPABILITIES \
+        else []
+    if not machine:
+        return k.validate(data, source)
+    mains = ", ".join(f"[{m}]" for m in _machine_kinds())
+    problems = [("", f"the tables {', '.join('[' + t + ']' for t in machine)} describe a machine, but the file has "
+                     f"no machine's main table ({mains}); a file with [{kind_name}] and no machine holds only "
+                     f"[meta] and [{kind_name}]")]
+    try:
+        k.validate({t: v for t, v in data.items() if t not in machine}, source)
+    except ProblemFileError as exc:
+        problems += exc.problems
+    raise ProblemFileError(problems, source)
 
 
 def _build_problems_of_valid_tables(k: Any, schema: Any, data: dict[str, Any], allowed: tuple[str, ...],

@@ -187,7 +187,7 @@ def test_the_sweep_reports_its_progress_and_estimates_its_time(monkeypatch):
     from its first variant's time (announced here however short, the threshold set to 0 s)."""
     import importlib
 
-    ex = importlib.import_module("machdyn.explore.execution")
+    ex = importlib.import_module("machdyn.studies.exploration.execution")
     monkeypatch.setattr(ex, "ANNOUNCE_AFTER", 0.0)
     moved: list[tuple[int, int]] = []
     said: list[str] = []

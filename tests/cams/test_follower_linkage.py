@@ -165,7 +165,7 @@ def test_the_flywheel_sees_the_linkage_reduced_inertia_and_the_work_of_its_loads
     text = EXAMPLE.read_text().replace("positions = 720", "positions = 360")
     result = run_problem(load_problem(text)).outcomes["follower_linkage"].results
     base = result.cam.machine(360)
-    machine = result.machine(base, 360)
+    machine = result.added_to(base, 360)
     problem, model, mech, phi = _setup(positions=360)
     omega = float(problem.cam.speed)
     here = _load(problem, model, mech, phi)

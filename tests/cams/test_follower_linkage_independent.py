@@ -227,7 +227,7 @@ def test_the_flywheels_reduced_machine_has_the_linkages_inertia_potential_and_lo
     at the 360 nodes of the reduced machine."""
     res = run_problem(load_problem(TEXT)).outcomes["follower_linkage"].results
     base = res.cam.machine(360)
-    machine = res.machine(base, 360)
+    machine = res.added_to(base, 360)
     phi = res.cam_angle
     mc = _Machine("oscillating", 1)
     (c, c1, _), (_, b1, _), (s, s1, _) = _derivatives(lambda p: mc.place(_motion(p, mc.lift)[0]), phi)

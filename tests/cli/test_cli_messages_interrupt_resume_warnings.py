@@ -47,7 +47,7 @@ stop = "0.8 kg"
 
 
 def test_interrupted_exploration_says_what_is_on_disk_and_how_to_resume(tmp_path, monkeypatch):
-    from machdyn.explore import run as explore_run
+    from machdyn.studies.exploration import run as explore_run
 
     path = tmp_path / "explore.toml"
     path.write_text(EXPLORATION)

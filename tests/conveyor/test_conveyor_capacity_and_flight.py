@@ -31,8 +31,8 @@ def test_capacity_deducts_the_pipe_as_cema_capacity_tables_do(screw, pipe, table
     8-20 % above every row (12 in: 21.2): the tables assume the deduction.
     """
     d, d_o = screw * INCH, pipe * INCH
-    annulus = design.volume_capacity(d, d, design.RPM, 0.45, 1.0, d_o) / FT3_PER_H  # at 1 rpm
-    circle = design.volume_capacity(d, d, design.RPM, 0.45, 1.0) / FT3_PER_H
+    annulus = design.volume_capacity(d, d, speed_rpm=1.0, filling=0.45, pipe_diameter=d_o) / FT3_PER_H  # at 1 rpm
+    circle = design.volume_capacity(d, d, speed_rpm=1.0, filling=0.45) / FT3_PER_H
     assert annulus == pytest.approx(table, rel=0.02)
     assert circle > 1.07 * table
 
@@ -60,7 +60,7 @@ def test_capacity_section_of_the_seed_example():
 def test_design_from_duty_with_a_fixed_pipe_carries_the_duty_at_the_speed_limit(q, s, k, phi, pipe):
     d = design.diameter_for_duty(q, s, k, phi, 1.0, pipe_diameter=pipe)
     assert d > pipe
-    cap = design.volume_capacity(d, s * d, design.speed_limit(d, k), phi, 1.0, pipe)
+    cap = design.volume_capacity(d, s * d, angular_speed=design.speed_limit(d, k), filling=phi, pipe_diameter=pipe)
     assert cap == pytest.approx(q, rel=1e-9)
 
 
@@ -68,7 +68,8 @@ def test_design_from_duty_with_a_fixed_pipe_carries_the_duty_at_the_speed_limit(
 @given(q=st.floats(1e-4, 0.2), eta=st.floats(0.0, 0.6))
 def test_design_from_duty_with_a_pipe_in_proportion_carries_the_duty(q, eta):
     d = design.diameter_for_duty(q, 0.8, 45.0, 0.4, 0.8, pipe_ratio=eta)
-    cap = design.volume_capacity(d, 0.8 * d, design.speed_limit(d, 45.0), 0.4, 0.8, eta * d)
+    cap = design.volume_capacity(d, 0.8 * d, angular_speed=design.speed_limit(d, 45.0), filling=0.4,
+                                 inclination_factor=0.8, pipe_diameter=eta * d)
     assert cap == pytest.approx(q, rel=1e-12)
 
 

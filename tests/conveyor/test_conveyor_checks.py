@@ -23,9 +23,9 @@ def test_axial_force_rejects_self_locking_geometry():
 
 
 def test_torque_from_power():
-    assert ck.torque_from_power(1000.0, 1.0) == pytest.approx(1000.0)  # 1 kW at 1 rad/s
+    assert ck.torque_from_power(1000.0, angular_speed=1.0) == pytest.approx(1000.0)  # 1 kW at 1 rad/s
     with pytest.raises(InputError, match=re.escape("The screw speed must be > 0 rad/s; got 0 rad/s.")):
-        ck.torque_from_power(1000.0, 0.0)
+        ck.torque_from_power(1000.0, angular_speed=0.0)
 
 
 def test_tube_section_and_twist():

@@ -12,7 +12,8 @@ from machdyn.errors import InputError
 def test_diameter_for_duty_inverts_capacity_at_the_speed_limit():
     d = design.diameter_for_duty(0.01, 1.0, 60, 0.3, 0.9)
     n = design.speed_limit(d, 60)
-    assert design.volume_capacity(d, d, n, 0.3, 0.9) == pytest.approx(0.01, rel=1e-12)
+    capacity = design.volume_capacity(d, d, angular_speed=n, filling=0.3, inclination_factor=0.9)
+    assert capacity == pytest.approx(0.01, rel=1e-12)
 
 
 def test_design_meets_duty_and_standard_size():

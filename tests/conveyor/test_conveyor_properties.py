@@ -62,7 +62,8 @@ def test_design_meets_its_own_duty(m, rho, phi, k, s, c):
     except InputError:
         # only when even the largest standard screw at its speed limit cannot carry the duty
         big = tables.standard_diameters()[-1]
-        assert design.volume_capacity(big, s * big, design.speed_limit(big, k), phi, c) * rho < m
+        assert design.volume_capacity(big, s * big, angular_speed=design.speed_limit(big, k), filling=phi,
+                                          inclination_factor=c) * rho < m
         return
     assert des.capacity_mass >= m * (1 - 1e-9)
     assert des.speed <= des.speed_limit * (1 + 1e-12)
@@ -70,5 +71,6 @@ def test_design_meets_its_own_duty(m, rho, phi, k, s, c):
     assert des.filling_actual <= phi * (1 + 1e-9)
     # the required diameter is exactly the one that carries the duty at the speed limit
     d = des.diameter_required
-    cap = design.volume_capacity(d, s * d, design.speed_limit(d, k), phi, c) * rho
+    cap = design.volume_capacity(d, s * d, angular_speed=design.speed_limit(d, k), filling=phi,
+                                 inclination_factor=c) * rho
     assert math.isclose(cap, m, rel_tol=1e-9)

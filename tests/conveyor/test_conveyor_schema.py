@@ -123,7 +123,8 @@ def test_the_screw_speed_is_read_in_rpm_and_kept_in_rad_per_s(base_problem):
 @pytest.mark.parametrize("example", CONVEYORS, ids=lambda p: p.stem)
 def test_the_conveyor_drive_is_the_shared_selection_from_the_one_motor_table(example):
     """The motor rating of every shipped conveyor is the shared selection's smallest IEC 60072-1 rating that
-    gives the power the drive needs; the conveyor keeps no table or selection of its own."""
+    gives the power the drive needs; the conveyor keeps no table or selection of its own (its old name
+    ``select_motor`` is a deprecated alias of the shared selection)."""
     import machdyn.conveyor as conveyor
     from machdyn.dynamics.motors import smallest_rating, standard_ratings
     from machdyn.runner import run_problem
@@ -134,5 +135,6 @@ def test_the_conveyor_drive_is_the_shared_selection_from_the_one_motor_table(exa
     assert rating >= needed and rating in standard_ratings()
     smaller = [r for r in standard_ratings() if r < rating]
     assert not smaller or smaller[-1] < needed
-    assert not hasattr(conveyor, "select_motor")
+    with pytest.warns(DeprecationWarning, match="smallest_rating"):
+        assert conveyor.select_motor(needed) == rating
     assert not (Path(conveyor.__file__).parent / "data" / "motor_ratings_iec.csv").exists()

@@ -9,9 +9,9 @@ import json
 import numpy as np
 import pytest
 
-from machdyn.optimise import optimise
-from machdyn.optimise.pareto import hypervolume_converged, hypervolumes, spacing
 from machdyn.reading import load_problem
+from machdyn.studies.optimisation import optimise
+from machdyn.studies.optimisation.pareto import hypervolume_converged, hypervolumes, spacing
 
 from .helpers import ROOT, check_and_run, invoke
 

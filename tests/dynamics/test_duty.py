@@ -139,7 +139,7 @@ def test_bad_duty_input_names_the_rule(call, message):
 
 
 def test_duty_results_are_in_the_catalogue():
-    from machdyn.results.catalogue import catalogue
+    from machdyn.kinds import catalogue
 
     keys = {q.key: q for q in catalogue()}
     for key in ("flywheel.motor_duty_load", "flywheel.motor_duty_rated_torque", "flywheel.motor_start_rotor_loss",

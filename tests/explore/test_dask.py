@@ -10,9 +10,9 @@ import time
 import numpy as np
 import pandas as pd
 
-from machdyn.explore import explore
-from machdyn.explore.population import evaluate_population
 from machdyn.reading import load_problem
+from machdyn.studies.exploration import explore
+from machdyn.studies.exploration.population import evaluate_population
 
 from .conftest import explore_text
 

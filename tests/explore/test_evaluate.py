@@ -8,12 +8,12 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from machdyn.explore import explore, plan_exploration
-from machdyn.explore.evaluate import evaluate_partition
-from machdyn.explore.sampling import partition_designs
 from machdyn.linkage import crank_angles, kinetostatics
 from machdyn.problem.build import build_mechanism
 from machdyn.reading import load_problem
+from machdyn.studies.exploration import explore, plan_exploration
+from machdyn.studies.exploration.evaluate import evaluate_partition
+from machdyn.studies.exploration.sampling import partition_designs
 
 from .conftest import BASE, explore_text
 

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from machdyn.errors import ProblemFileError
-from machdyn.explore import explore, plan_exploration
 from machdyn.reading import load_problem
+from machdyn.studies.exploration import explore, plan_exploration
 
 from .conftest import BASE
 

@@ -7,9 +7,9 @@ import numpy as np
 import pytest
 
 from machdyn.errors import InputError, ProblemFileError
-from machdyn.explore import explore
-from machdyn.explore.population import evaluate_population
 from machdyn.reading import load_problem
+from machdyn.studies.exploration import explore
+from machdyn.studies.exploration.population import evaluate_population
 
 from .conftest import explore_text
 

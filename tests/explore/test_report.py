@@ -6,11 +6,11 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from machdyn.explore import explore
-from machdyn.explore.digest import SAMPLE
-from machdyn.explore.stage import outcome
 from machdyn.reading import load_problem
 from machdyn.report.explore import exploration_section, plot_design_space, sections
+from machdyn.studies.exploration import explore
+from machdyn.studies.exploration.digest import SAMPLE
+from machdyn.studies.sweep.stage import outcome
 
 from .conftest import explore_text
 

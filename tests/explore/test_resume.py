@@ -10,8 +10,8 @@ import pandas as pd
 import pyarrow.parquet as pq
 import pytest
 
-from machdyn.explore import explore
 from machdyn.reading import load_problem
+from machdyn.studies.exploration import explore
 
 from .conftest import explore_text
 
@@ -85,7 +85,7 @@ def test_parquet_columns_carry_their_units(tmp_path):
 
 
 def test_store_named_in_the_file_is_relative_to_the_file(tmp_path):
-    from machdyn.explore import execution
+    from machdyn.studies.exploration import execution
 
     path = tmp_path / "problem.toml"
     path.write_text(explore_text(samples=64, partition=64, extra='store = "designs.parquet"\n'))

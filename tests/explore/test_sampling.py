@@ -12,8 +12,8 @@ from hypothesis import strategies as st
 from scipy.stats import qmc
 
 from machdyn.errors import InputError
-from machdyn.explore import DesignSpace, designs, partition_designs
-from machdyn.problem.sweep import QuantityRange
+from machdyn.studies.exploration import DesignSpace, designs, partition_designs
+from machdyn.studies.table import QuantityRange
 
 
 def _ranged(*bounds: tuple[float, float]) -> tuple[QuantityRange, ...]:

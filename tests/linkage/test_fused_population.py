@@ -95,8 +95,8 @@ def test_fused_population_flags_designs_that_fail():
 def test_fused_population_equals_numpy_for_the_compactor():
     # the seed 003 compactor's population as the optimiser builds it, bounds widened so that some designs do
     # not close or break the transmission rule: the compactor's figures over its pressing window too
-    from machdyn.optimise.study import setup
     from machdyn.reading import load_problem
+    from machdyn.studies.optimisation.study import setup
 
     problem = load_problem(ROOT / "examples" / "compactor_optimise.toml")
     ev = setup(problem, problem.optimise)

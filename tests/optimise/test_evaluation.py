@@ -8,9 +8,9 @@ import pytest
 
 from machdyn.linkage import diagnose
 from machdyn.machines.compactor import Compactor
-from machdyn.optimise import setup
-from machdyn.optimise.evaluate import evaluate, result_names
 from machdyn.problem.build import build_mechanism
+from machdyn.studies.optimisation import setup
+from machdyn.studies.optimisation.evaluate import evaluate, result_names
 
 from .conftest import problem_with
 

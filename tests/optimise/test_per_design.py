@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 
 from machdyn.errors import ProblemFileError
-from machdyn.optimise.per_design import capability_results, evaluate_designs
 from machdyn.reading import load_problem
 from machdyn.runner import check_problem, run_problem
+from machdyn.studies.per_design import capability_results, evaluate_designs
 
 STUDY = """
 [meta]

@@ -5,9 +5,9 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from machdyn.optimise import optimise
 from machdyn.pipeline import Outcome
 from machdyn.report.optimise import plot_convergence, plot_pareto, sections
+from machdyn.studies.optimisation import optimise
 
 from .conftest import problem_with
 

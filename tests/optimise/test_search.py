@@ -7,8 +7,8 @@ import pytest
 
 from machdyn.errors import InputError, ProblemFileError
 from machdyn.machines.compactor import GAMMA_LIMIT, Compactor
-from machdyn.optimise import NoFeasibleDesign, optimise
 from machdyn.reading import load_problem
+from machdyn.studies.optimisation import NoFeasibleDesign, optimise
 
 from .conftest import problem_with
 

@@ -7,9 +7,9 @@ import pytest
 
 from machdyn.errors import ProblemFileError
 from machdyn.linkage import stack_designs
-from machdyn.optimise import OptimiseSpec
-from machdyn.optimise.variables import assign, search_space
 from machdyn.problem.build import build_mechanism
+from machdyn.studies.optimisation import OptimiseSpec
+from machdyn.studies.optimisation.variables import assign, search_space
 
 from .conftest import FOUR_BAR, problem_with
 
@@ -56,7 +56,7 @@ def test_a_formula_may_not_run_code():
 
 def test_stacked_population_equals_each_design_built_alone_and_stacked(monkeypatch):
     """The fast path (arrays handed to the builder) builds the same model as building each variant."""
-    from machdyn.optimise.variables import SearchSpace
+    from machdyn.studies.optimisation.variables import SearchSpace
 
     def no_fallback(*_args):
         raise AssertionError("the population was built design by design, not in one build")
@@ -123,8 +123,8 @@ def test_best_design_problem_is_validated_and_has_no_optimise_table():
 
 def test_the_compactor_examples_population_is_built_in_one_go(monkeypatch, compactor):
     """Free variables, derived link lengths, a derived coupler-point coordinate and derived loads: one build."""
-    from machdyn.optimise import setup
-    from machdyn.optimise.variables import SearchSpace
+    from machdyn.studies.optimisation import setup
+    from machdyn.studies.optimisation.variables import SearchSpace
 
     def no_fallback(*_args):
         raise AssertionError("the population was built design by design, not in one build")

@@ -10,8 +10,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from machdyn.errors import InputError
-from machdyn.optimise.formula import MAX_FORMULA_TEXT, compile_formula
 from machdyn.problem.fields import FieldError, Unit
+from machdyn.studies.optimisation.formula import MAX_FORMULA_TEXT, compile_formula
 from machdyn.units import MAX_QUANTITY_TEXT, parse_quantity
 
 from .conftest import FOUR_BAR, machdyn

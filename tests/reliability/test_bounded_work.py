@@ -11,7 +11,7 @@ import pytest
 from typer.testing import CliRunner
 
 from machdyn.cli import app
-from machdyn.explore.execution import worker_limit, workers_error
+from machdyn.studies.exploration.execution import worker_limit, workers_error
 
 from .conftest import FOUR_BAR, ROOT, machdyn, sweep_text
 

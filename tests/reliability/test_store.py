@@ -18,9 +18,9 @@ import pandas as pd
 import pytest
 
 from machdyn.errors import OperationalError
-from machdyn.explore import explore
-from machdyn.explore.store import PartitionStore
 from machdyn.outputs import LOCK, OutputSet, acquire_lock, release_lock
+from machdyn.studies.exploration import explore
+from machdyn.studies.exploration.store import PartitionStore
 
 from .conftest import ROOT, machdyn, sweep_text
 
@@ -144,7 +144,7 @@ def test_a_second_run_on_the_same_output_folder_is_refused_at_once(tmp_path):
 def test_a_second_exploration_of_the_same_store_is_refused(tmp_path):
     first = PartitionStore(tmp_path / "s.parquet", "f" * 64, {})
     try:
-        code = ("from machdyn.explore.store import PartitionStore as P; "
+        code = ("from machdyn.studies.exploration.store import PartitionStore as P; "
                 f"P({str(tmp_path / 's.parquet')!r}, 'f' * 64, {{}})")
         done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                               env={**os.environ, "PYTHONPATH": str(ROOT / "src")}, timeout=60)

@@ -10,6 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from machdyn.kinds import catalogue
 from machdyn.problem.build import build_mechanism, crank_angles
 from machdyn.reading import load_problem
 from machdyn.results.catalogue import (
@@ -18,7 +19,6 @@ from machdyn.results.catalogue import (
     RUN_TIME,
     STATUS,
     canonical,
-    catalogue,
     find,
     population_quantities,
 )
@@ -98,10 +98,10 @@ def test_every_mechanism_quantity_can_be_named_a_sweep_column_and_an_objective()
     """Each per-design quantity of the mechanism kind (and of the compactor) is a result of some shipped
     mechanism, is accepted as ``[sweep] objective`` and as an ``[optimise]`` objective, and is a column of
     that mechanism's sweep."""
-    from machdyn.optimise.objectives import parse_objectives
-    from machdyn.optimise.schema import ObjectiveSpec
-    from machdyn.problem.sweep import SweepSpec
     from machdyn.results.population import result_unit, sweep_columns
+    from machdyn.studies.optimisation.objectives import parse_objectives
+    from machdyn.studies.optimisation.schema import ObjectiveSpec
+    from machdyn.studies.table import SweepSpec
 
     named: dict[str, list[str]] = {}
     for name in MECHANISMS:

@@ -49,7 +49,7 @@ D, PITCH, N, RHO, PHI, C, L, LAM, H = 0.300, 0.300, 20.0, 1250.0, 0.8, 1.0, 5.0,
 
 
 def _mass_flow():
-    return design.volume_capacity(D, PITCH, N * design.RPM, PHI, C) * RHO  # kg/s; N in rpm
+    return design.volume_capacity(D, PITCH, speed_rpm=N, filling=PHI, inclination_factor=C) * RHO  # kg/s; N in rpm
 
 
 def test_alexandrov_capacity():

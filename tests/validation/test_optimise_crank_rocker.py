@@ -18,8 +18,8 @@ import math
 
 import pytest
 
-from machdyn.optimise import optimise
 from machdyn.reading import load_problem
+from machdyn.studies.optimisation import optimise
 
 PROBLEM = """
 [meta]

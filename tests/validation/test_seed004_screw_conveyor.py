@@ -63,7 +63,8 @@ def test_speed_101_rpm():
 
 def test_capacity_at_200_mm_covers_the_duty():
     """Not in the paper: 15 pi D^2 S n rho phi C at D = 0.2 m = 11.653 t/h >= 7.2 t/h (reference row 18)."""
-    q = design.volume_capacity(0.2, 0.16, design.speed_limit(0.2, 45), 0.4, 0.8) * 1.2 * 3600
+    q = design.volume_capacity(0.2, 0.16, angular_speed=design.speed_limit(0.2, 45), filling=0.4,
+                               inclination_factor=0.8) * 1.2 * 3600
     assert q == pytest.approx(11.653, abs=5e-4)
 
 
@@ -76,7 +77,7 @@ def test_torque_2_90_reproduces_and_2_85_does_not():
     # 9.55e6 is the paper's rounding of 60e6/(2 pi) = 9.5493e6; the printed value uses 9.55e6
     t_paper_constant = 9.55e6 * 1.123 / 101
     assert t_paper_constant == pytest.approx(106184.65, abs=0.01)
-    t = ck.torque_from_power(1123.0, 101.0 * math.pi / 30) * 1000  # N mm, exact 60/(2 pi)
+    t = ck.torque_from_power(1123.0, angular_speed=101.0 * math.pi / 30) * 1000  # N mm, exact 60/(2 pi)
     assert t == pytest.approx(106184.65, rel=1e-3)
     assert abs(t_paper_constant - 103864) > 2000  # the 2.85 value is not reproduced
 

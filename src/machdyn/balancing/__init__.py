@@ -4,3 +4,8 @@ general counterweight optimisation, spring compensation and balance over several
 Every balancing method takes an engine model (:class:`machdyn.linkage.Mechanism`) and returns a
 :class:`~machdyn.balancing.frame.BalanceResult`: the balanced model plus a before/after table of the frame loads.
 """
+
+#: The package's public API is its modules (``from machdyn.balancing import berkof_lowen``).
+__all__ = [
+    "berkof_lowen", "counterweights", "frame", "general", "methods", "robust", "springs", "stage", "substitution"
+]

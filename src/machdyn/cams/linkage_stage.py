@@ -19,6 +19,7 @@ from typing import Any
 
 import numpy as np
 
+from ..dynamics.contributions import ShaftContribution
 from ..errors import InputError, ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext
 from ..results.labels import Label
@@ -78,7 +79,7 @@ SUMMARY = tuple(P + k for k in ("output_stroke", "follower_load.max", "linkage_t
 
 
 @dataclass(frozen=True)
-class FollowerLinkageResult:
+class FollowerLinkageResult(ShaftContribution):
     """What the stage computed (SI), for the report, the Python API and ``[flywheel]``.
 
     cam : the cam's own result; load : the linkage's kinetostatics and its load on the follower and the camshaft;
@@ -105,11 +106,11 @@ class FollowerLinkageResult:
     def cam_angle(self) -> np.ndarray:
         return self.load.drive.phi
 
-    def machine(self, cam_machine: Any, positions: int) -> Any:
+    def added_to(self, machine: Any, positions: int) -> Any:
         """The cam's reduced machine with the linkage's reduced quantities added
         (:func:`~machdyn.cams.follower_linkage.with_linkage`)."""
         m = self.cam.model
-        return with_linkage(cam_machine, self.mechanism, m.program, m.follower, self.cam.clockwise, positions)
+        return with_linkage(machine, self.mechanism, m.program, m.follower, self.cam.clockwise, positions)
 
 
 def _prepare(problem: CamProblem, table: FollowerLinkageTable,

@@ -13,10 +13,12 @@ reduced quantities of a one-degree-of-freedom machine add).
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass, fields
 from typing import Any
 
 import numpy as np
 
+from ..dynamics.contributions import ShaftContribution
 from ..dynamics.equivalent import EquivalentMachine
 from ..dynamics.tables import PeriodicCurve
 from ..errors import ProblemFileError
@@ -32,6 +34,17 @@ PREFIX = "shaft_cam."
 
 def _rename(text: str) -> str:
     return re.sub(r"\bcam\.", PREFIX, text)
+
+
+@dataclass(frozen=True)
+class ShaftCamResult(CamResult, ShaftContribution):
+    """A cam's result on the crank shaft, at ``phase`` [rad] (cam angle = crank angle + phase): its reduced
+    quantities add to the linkage's machine for ``[flywheel]``."""
+
+    phase: float = 0.0
+
+    def added_to(self, machine: Any, positions: int) -> Any:
+        return with_shaft_cam(machine, self, self.phase, positions)
 
 
 def _as_cam_problem(problem: Any, table: ShaftCamTable) -> CamProblem:
@@ -68,7 +81,8 @@ def run(ctx: StageContext) -> Outcome:
     if problems:
         raise ProblemFileError(problems, ctx.source)
     out = analyse(cp, model, no_step)
-    r = out.results
+    r = ShaftCamResult(**{f.name: getattr(out.results, f.name) for f in fields(out.results)},
+                       phase=table.phase)
     scalars = {_rename(k): v for k, v in out.scalars.items()}
     labels = {_rename(k): Label(f"Shaft cam: {lab.text}", lab.unit, lab.display,
                                 None if lab.zero_below is None else _rename(lab.zero_below))
@@ -135,5 +149,5 @@ CAPABILITY = Capability(
             "shaft_cam.linkage_peak_torque": Label("Shaft: peak driving torque of the linkage alone", "N*m")},
     report="machdyn.report.cams:shaft_sections",
     check=check,
-    result_type=CamResult,
+    result_type=ShaftCamResult,
 )

@@ -9,6 +9,7 @@ from typing import Any
 
 import numpy as np
 
+from ..dynamics.contributions import ReducedMachineSource
 from ..errors import InputError, ProblemFileError
 from ..pipeline import Outcome, ProblemKind, Step
 from ..results.labels import Label
@@ -78,7 +79,7 @@ class CamModel:
 
 
 @dataclass(frozen=True)
-class CamResult:
+class CamResult(ReducedMachineSource):
     """Everything the analysis computed (SI), for the report and the Python API."""
 
     model: CamModel

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -20,6 +21,7 @@ from .core import (  # noqa: F401 - re-exported: the seed's screw-core formulas
     screw_equivalent_stress_from_pressure,
     screw_torque_from_pressure,
 )
+from .design import angular_speed_of
 from .fastening import (  # noqa: F401 - re-exported: the checks of the drive's fastenings
     base_bolt_max_force,
     bolt_minor_diameter_required,
@@ -70,15 +72,17 @@ class Check:
 # --------------------------------------------------------------------------------------------- torque
 
 
-def torque_from_power(power: float, speed: float) -> float:
+def torque_from_power(power: Any, *old: Any, angular_speed: Any = None, speed_rpm: Any = None) -> Any:
     """Shaft torque T = P/ω [N·m] (seed 004, eq 2.85: T = 9.55·10⁶·P/n with T in N·mm, P in kW).
 
     Parameters
     ----------
     power : float or array
         Shaft power P [W], >= 0.
-    speed : float or array
-        Screw angular speed ω [rad/s], > 0.
+    angular_speed : float or array, keyword
+        Screw angular speed ω [rad/s], > 0; or ``speed_rpm`` [rpm], keyword: one of the two. The form of the
+        releases before 0.1.0, ``torque_from_power(P, n)`` with n in rpm by position, still reads n in rpm and
+        warns (DeprecationWarning); it goes in 0.3.0.
 
     Returns
     -------
@@ -88,9 +92,12 @@ def torque_from_power(power: float, speed: float) -> float:
     Examples
     --------
     >>> # seed 004, eq 2.90 at 101 rpm: 106 184.65 N·mm with 9.55e6 for 30e6/π
-    >>> round(torque_from_power(1123.0, 101.0 * math.pi / 30) * 1000, 2)
+    >>> round(torque_from_power(1123.0, speed_rpm=101.0) * 1000, 2)
     106176.83
     """
+    if len(old) > 1:
+        raise TypeError(f"torque_from_power() takes at most 2 positional arguments; got {1 + len(old)}")
+    speed = angular_speed_of("torque_from_power", angular_speed, speed_rpm, old[0] if old else None)
     if np.any(np.asarray(speed) <= 0):
         raise InputError(f"The screw speed must be > 0 rad/s; got {np.min(speed):g} rad/s.")
     return power / speed

@@ -8,6 +8,7 @@ turns it into a speed in rad/s.
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 from typing import Any
 
@@ -20,8 +21,26 @@ from . import tables
 RPM = math.pi / 30.0
 
 
-def volume_capacity(diameter: float, pitch: float, speed: float, filling: float,
-                    inclination_factor: float = 1.0, pipe_diameter: float = 0.0) -> float:
+def angular_speed_of(function: str, angular_speed: Any, speed_rpm: Any, old_rpm: Any = None,
+                     old: str = "a speed given by position") -> Any:
+    """The one speed [rad/s] a function was given: ``angular_speed`` [rad/s] or ``speed_rpm`` [rpm] by keyword, or
+    ``old_rpm``, the speed a call gave in the form of the releases before 0.1.0 (``old`` says how), read in rpm
+    as it was then, with a DeprecationWarning (the position held rpm, then rad/s: a unit never changes silently in one
+    place, so the position keeps its first unit until the form goes in 0.3.0)."""
+    given = [v is not None for v in (angular_speed, speed_rpm, old_rpm)]
+    if sum(given) != 1:
+        raise TypeError(f"{function}() takes the speed once, by keyword: angular_speed= [rad/s] or speed_rpm= [rpm]"
+                        f"{'; got it ' + str(sum(given)) + ' times' if sum(given) else ''}")
+    if old_rpm is not None:
+        warnings.warn(f"{function}(): {old} is read in rpm (its unit before 0.1.0); give it by "
+                      f"keyword, angular_speed= [rad/s] or speed_rpm= [rpm]; the positional form goes in 0.3.0",
+                      DeprecationWarning, stacklevel=3)
+        return old_rpm * RPM
+    return angular_speed if angular_speed is not None else speed_rpm * RPM
+
+
+def volume_capacity(diameter: Any, pitch: Any, *old: Any, angular_speed: Any = None, speed_rpm: Any = None,
+                    filling: Any = None, inclination_factor: float = 1.0, pipe_diameter: Any = 0.0) -> Any:
     """Volumetric capacity of a screw conveyor Q_v = (π/4)·(D² − d_o²)·S·(ω/2π)·φ·C [m³/s] (ω/2π = n/60 the
     turns per second of a speed n [rpm]).
 
@@ -40,9 +59,9 @@ def volume_capacity(diameter: float, pitch: float, speed: float, filling: float,
         Screw diameter D [m].
     pitch : float or array
         Pitch S [m].
-    speed : float or array
-        Angular speed ω [rad/s].
-    filling : float or array
+    angular_speed : float or array, keyword
+        Angular speed ω [rad/s]; or ``speed_rpm`` [rpm], keyword: one of the two.
+    filling : float or array, keyword
         Filling coefficient φ [-], 0 < φ <= 1.
     inclination_factor : float
         C [-] (1.0 horizontal … 0.65 at 20°).
@@ -56,11 +75,28 @@ def volume_capacity(diameter: float, pitch: float, speed: float, filling: float,
 
     Examples
     --------
-    >>> round(volume_capacity(0.2, 0.16, 100.62306 * RPM, 0.4, 0.8) * 3600, 4)  # seed 004: 9.71 m³/h at 100.6 rpm
+    >>> q = volume_capacity(0.2, 0.16, speed_rpm=100.62306, filling=0.4, inclination_factor=0.8)
+    >>> round(q * 3600, 4)  # seed 004: 9.71 m³/h at 100.6 rpm
     9.7111
-    >>> round(volume_capacity(0.2, 0.16, 100.62306 * RPM, 0.4, 0.8, 0.1) * 3600, 4)  # the 100 mm pipe deducted
+    >>> q = volume_capacity(0.2, 0.16, angular_speed=100.62306 * RPM, filling=0.4, inclination_factor=0.8,
+    ...                     pipe_diameter=0.1)
+    >>> round(q * 3600, 4)  # the 100 mm pipe deducted
     7.2833
+
+    The form of the releases before 0.1.0, ``volume_capacity(D, S, n, φ, C, d_o)`` with n in rpm by position,
+    still reads n in rpm and warns (DeprecationWarning); it goes in 0.3.0.
     """
+    if len(old) > 4:
+        raise TypeError(f"volume_capacity() takes at most 6 positional arguments; got {2 + len(old)}")
+    if old:  # the old form: (diameter, pitch, speed_rpm, filling, inclination_factor, pipe_diameter)
+        if filling is not None and len(old) > 1:
+            raise TypeError("volume_capacity() got filling by position and by keyword")
+        filling = old[1] if len(old) > 1 else filling
+        inclination_factor = old[2] if len(old) > 2 else inclination_factor
+        pipe_diameter = old[3] if len(old) > 3 else pipe_diameter
+    speed = angular_speed_of("volume_capacity", angular_speed, speed_rpm, old[0] if old else None)
+    if filling is None:
+        raise TypeError("volume_capacity() needs filling= (the filling coefficient φ)")
     turns_per_second = speed / (2.0 * math.pi)
     return math.pi / 4.0 * (diameter**2 - pipe_diameter**2) * pitch * turns_per_second * filling * inclination_factor
 
@@ -189,12 +225,15 @@ class ScrewDesign:
 
 def design_screw(*, mass_flow: float, bulk_density: float, filling: float, speed_coefficient: float,
                  pitch_ratio: float, inclination_factor: float, diameter: float | None = None,
-                 speed: float | None = None, pipe_diameter: float = 0.0, pipe_ratio: float = 0.0) -> ScrewDesign:
+                 angular_speed: float | None = None, speed_rpm: float | None = None, pipe_diameter: float = 0.0,
+                 pipe_ratio: float = 0.0, speed: float | None = None) -> ScrewDesign:
     """Size the screw for a duty: required and standard diameter, pitch, speed, capacity.
 
     mass_flow [kg/s], bulk_density [kg/m³], filling φ [-] (≤ 1), speed_coefficient k [rpm·m^0.5],
     pitch_ratio S/D [-], inclination_factor C [-]; ``diameter`` [m] forces a size (otherwise the next
-    standard size), ``speed`` [rad/s] forces a speed (otherwise the speed limit k/√D, as in seed 004).
+    standard size), ``angular_speed`` [rad/s] or ``speed_rpm`` [rpm] forces a speed (otherwise the speed limit
+    k/√D, as in seed 004); ``speed``, the name of the releases before 0.1.0, is read in rpm as it was then and
+    warns (DeprecationWarning; it goes in 0.3.0).
     ``pipe_diameter`` [m] (a given pipe) or ``pipe_ratio`` d_o/D [-] (a pipe scaling with the screw) is deducted
     from the capacity (:func:`volume_capacity`); both 0: the whole circle, as in seed 004.
     """
@@ -220,7 +259,8 @@ def design_screw(*, mass_flow: float, bulk_density: float, filling: float, speed
         if d_req > sizes[-1]:
             biggest = sizes[-1]
             n_big = speed_limit(biggest, speed_coefficient)
-            cap = volume_capacity(biggest, pitch_ratio * biggest, n_big, filling, inclination_factor, pipe(biggest))
+            cap = volume_capacity(biggest, pitch_ratio * biggest, angular_speed=n_big, filling=filling,
+                                  inclination_factor=inclination_factor, pipe_diameter=pipe(biggest))
             raise InputError(
                 f"The throughput {mass_flow * 3.6:.4g} t/h ({volume_flow * 3600:.4g} m^3/h) exceeds the "
                 f"capacity of the largest standard screw ({biggest * 1000:.0f} mm at {n_big / RPM:.1f} rpm): "
@@ -232,9 +272,11 @@ def design_screw(*, mass_flow: float, bulk_density: float, filling: float, speed
         d = diameter
     pitch = pitch_ratio * d
     n_lim = speed_limit(d, speed_coefficient)
-    n = n_lim if speed is None else speed
+    forced = (angular_speed, speed_rpm, speed)
+    n = n_lim if forced == (None, None, None) else angular_speed_of("design_screw", *forced, old="speed=")
     check_positive("screw speed", n, "rad/s")
-    cap_v = volume_capacity(d, pitch, n, filling, inclination_factor, min(pipe(d), d))
+    cap_v = volume_capacity(d, pitch, angular_speed=n, filling=filling, inclination_factor=inclination_factor,
+                            pipe_diameter=min(pipe(d), d))
     return ScrewDesign(
         diameter_required=d_req, diameter=d, pitch=pitch, speed_limit=n_lim, speed=n,
         inclination_factor=inclination_factor, filling=filling, volume_flow=volume_flow,

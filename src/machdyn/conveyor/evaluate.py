@@ -94,11 +94,12 @@ def choose_screw(p: ConveyorProblem) -> ScrewDesign:
     if mass_flow is None:
         if p.diameter is None or p.speed is None:
             raise InputError("The throughput is required unless screw.diameter and screw.speed are given.")
-        mass_flow = volume_capacity(p.diameter, p.pitch_ratio * p.diameter, p.speed, p.filling,
-                                    p.inclination_factor, min(pipe or ratio * p.diameter, p.diameter)) * p.bulk_density
+        mass_flow = volume_capacity(p.diameter, p.pitch_ratio * p.diameter, angular_speed=p.speed, filling=p.filling,
+                                    inclination_factor=p.inclination_factor,
+                                    pipe_diameter=min(pipe or ratio * p.diameter, p.diameter)) * p.bulk_density
     return design_screw(mass_flow=mass_flow, bulk_density=p.bulk_density, filling=p.filling,
                         speed_coefficient=p.speed_coefficient, pitch_ratio=p.pitch_ratio,
-                        inclination_factor=p.inclination_factor, diameter=p.diameter, speed=p.speed,
+                        inclination_factor=p.inclination_factor, diameter=p.diameter, angular_speed=p.speed,
                         pipe_diameter=pipe, pipe_ratio=ratio)
 
 
@@ -145,7 +146,7 @@ def evaluate(problem: ConveyorProblem, *, bending: bool = True) -> ConveyorResul
         raise InputError(f"The power method '{p.power_method}' that sizes the drive is not applicable here "
                          f"({'; '.join(w for w in warnings if 'skipped' in w)}); choose another power_method.")
     if p.torque is not None:
-        derived = ck.torque_from_power(powers[p.power_method].shaft_power, design.speed)
+        derived = ck.torque_from_power(powers[p.power_method].shaft_power, angular_speed=design.speed)
         warnings.append(f"Torque given directly ({p.torque:.4g} N*m) is used for the loads and the shaft checks; "
                         f"the power method gives {derived:.4g} N*m.")
     scalars = {k: float(v) for k, v in st.items() if not k.startswith(("_", "check.", "limit.", "power."))}

@@ -114,7 +114,8 @@ def screw_states(problem: ConveyorProblem, diameter: Any, pitch: Any, speed: Any
     t_f: Any
     d_o = p.pipe_outer_diameter if p.pipe_outer_diameter is not None else 0.5 * d
     deducted = d_o if p.capacity_section == "annulus" else 0.0 * d_o
-    cap_v = volume_capacity(d, s, n, phi, p.inclination_factor, deducted)
+    cap_v = volume_capacity(d, s, angular_speed=n, filling=phi, inclination_factor=p.inclination_factor,
+                            pipe_diameter=deducted)
     v_dot = m_dot / p.bulk_density
     fill_actual = phi * v_dot / cap_v
     n_lim = speed_limit(d, p.speed_coefficient)
@@ -122,7 +123,7 @@ def screw_states(problem: ConveyorProblem, diameter: Any, pitch: Any, speed: Any
     shaft = powers[p.power_method]["power"] if p.power_method in powers else np.nan * d
     motor_required = shaft / p.drive_efficiency
     motor = np.asarray(smallest_rating(motor_required))
-    torque = ck.torque_from_power(shaft, n) if p.torque is None else p.torque + 0 * d
+    torque = ck.torque_from_power(shaft, angular_speed=n) if p.torque is None else p.torque + 0 * d
 
     wall = p.pipe_wall if p.pipe_wall is not None else d_o / 12.0
     d_i = d_o - 2 * wall

@@ -4,6 +4,8 @@ and energy-mass), drives and motors, periodic steady state, start-up, and the fo
 See ``docs/dynamics.md``. Heavy libraries (scipy) are imported inside the functions that use them.
 """
 
+import warnings
+
 from .drives import (
     ConstantSpeed,
     ConstantTorque,
@@ -35,4 +37,14 @@ __all__ = [
     "equivalent_machine",
     "flywheel_inertia_classic", "indicator_crank_effort", "kloss_breakdown_slip", "kloss_torque", "rim_flywheel",
     "rim_speed_limit", "simulate", "size_flywheel", "speed_limits", "start_up", "steady_state", "torque_table",
+    "energy_fluctuation",
 ]
+
+
+def energy_fluctuation(curve, mean=None, samples_per_piece: int = 32):
+    """Deprecated name of :func:`diagram_energy_fluctuation` (renamed in 0.1.0 beside
+    :func:`machdyn.linkage.energy_fluctuation`, which reads samples); it warns and delegates, and goes in 0.3.0."""
+    warnings.warn("machdyn.dynamics.energy_fluctuation is deprecated and goes in 0.3.0: use "
+                  "machdyn.dynamics.diagram_energy_fluctuation (a diagram) or machdyn.linkage.energy_fluctuation "
+                  "(samples)", DeprecationWarning, stacklevel=2)
+    return diagram_energy_fluctuation(curve, mean, samples_per_piece)

@@ -13,9 +13,6 @@ from typing import Any, Literal
 import numpy as np
 from pydantic import Field, model_validator
 
-from ..cams.linkage_stage import FollowerLinkageResult
-from ..cams.shaft import with_shaft_cam
-from ..cams.stage import CamResult
 from ..errors import InputError, ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext
 from ..problem.fields import (
@@ -34,6 +31,7 @@ from ..problem.fields import Volume as Displacement
 from ..problem.fields import VolumeFlow as Flow
 from ..problem.schema import Spec
 from ..results.labels import Label
+from .contributions import ReducedMachineSource, ShaftContribution
 from .drive_choice import choose_drive, duty_of, overloaded
 from .driveline import DriveLine
 from .driveline_file import line_of, line_problems, motor_on_line
@@ -256,23 +254,22 @@ def run_flywheel(ctx: StageContext) -> Outcome:
     line = line_of(ctx.problem, table)
     added = line.shaft_inertia  # every shaft of the drive line, at the crank: it turns with the flywheel
     motor_table = motor_on_line(table.motor, line)
-    cam = ctx.result_of("cam", CamResult)
+    cam = ctx.result_of("cam", ReducedMachineSource)
     if cam is not None:  # a cam machine: the camshaft is the crank, its reduced machine comes from the cam
         speed = float(cam.speed)
         machine = cam.machine(table.positions)
-        linked = ctx.result_of("follower_linkage", FollowerLinkageResult)
+        linked = ctx.result_of("follower_linkage", ShaftContribution)
         if linked is not None:  # the linkage the follower drives adds its reduced quantities at the camshaft
-            machine = linked.machine(machine, table.positions)
+            machine = linked.added_to(machine, table.positions)
     else:
         speed = float(ctx.problem.drive.speed)
         if not speed > 0:
             raise ProblemFileError([("drive.speed", f"must be > 0 for [flywheel] (the crank turns "
                                                     f"counter-clockwise); got {speed:g} rad/s")])
         machine = equivalent_machine(mech, table.positions, speed_loads=speed_loads(table))
-        shaft_cam = ctx.result_of("shaft_cam", CamResult)
+        shaft_cam = ctx.result_of("shaft_cam", ShaftContribution)
         if shaft_cam is not None:  # a cam on the crank shaft: its reduced quantities add to the linkage's
-            machine = with_shaft_cam(machine, shaft_cam, ctx.problem.shaft_cam.phase,
-                                     table.positions)
+            machine = shaft_cam.added_to(machine, table.positions)
     target = table.delta if table.delta is not None else 0.02
     sizing = size_flywheel(machine, speed, target)
     if table.inertia is not None:

@@ -8,3 +8,8 @@ The rotary grading screen (seed 002) is a problem kind of its own, gathered in o
 Each formula function takes and returns SI floats or numpy arrays; the docstrings name the paper's equation
 and, where the paper is wrong, the correction applied.
 """
+
+#: The package's public API is its modules (``from machdyn.machines import compactor``).
+__all__ = [
+    "compactor", "tamper"
+]

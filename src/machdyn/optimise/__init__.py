@@ -1,12 +1,27 @@
-"""Design optimisation: design variables addressed by problem-file path, objectives and constraints on any
-per-design result, a global search that evaluates each generation in one vectorised engine call
-(differential evolution) and a Pareto front for several objectives (NSGA-II). See ``docs/optimise.md``."""
+"""Deprecated: design optimisation is :mod:`machdyn.studies` (``machdyn.studies.optimisation``).
 
-from .result import History, NoFeasibleDesign, OptimiseResult
-from .schema import ConstraintSpec, ObjectiveSpec, OptimiseSpec, VariableSpec
-from .study import optimise, setup, verify
+This module re-exports the public names it had and warns on import; it will be removed in 0.3.0.
+"""
+
+import warnings
+
+from ..studies.optimisation import (
+    ConstraintSpec,
+    History,
+    NoFeasibleDesign,
+    ObjectiveSpec,
+    OptimiseResult,
+    OptimiseSpec,
+    VariableSpec,
+    optimise,
+    setup,
+    verify,
+)
 
 __all__ = [
     "ConstraintSpec", "History", "NoFeasibleDesign", "ObjectiveSpec", "OptimiseResult", "OptimiseSpec",
     "VariableSpec", "optimise", "setup", "verify",
 ]
+
+warnings.warn("machdyn.optimise is deprecated and will be removed in 0.3.0; import from machdyn.studies",
+              DeprecationWarning, stacklevel=2)

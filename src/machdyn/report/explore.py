@@ -9,8 +9,8 @@ from typing import Any
 import numpy as np
 from markupsafe import escape
 
-from ..explore.run import Exploration
 from ..results.labels import display_factor
+from ..studies.exploration.run import Exploration
 from .html import _render, format_value, pretty_unit
 from .spaces import exploration_space
 from .sweep import sections as one_quantity

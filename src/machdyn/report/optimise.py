@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 from markupsafe import escape
 
-from ..optimise.study import show_value
+from ..studies.optimisation.study import show_value
 from .html import _render, figures_html, format_value, rows_html
 from .spaces import optimum_beside_nominal, pareto_space
 

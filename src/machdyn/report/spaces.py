@@ -1,8 +1,8 @@
 """Interactive design spaces of the report: a one-quantity sweep, an exploration and an optimisation.
 
 Each is a scatter the reader can re-plot against any column, hover for a design's numbers and click to open a
-design — its numbers and, for the designs the stage analysed for playback (:mod:`machdyn.pipelines.
-design_views`), its animation. After an optimisation the optimum plays beside the nominal design on one slider.
+design — its numbers and, for the designs the stage analysed for playback (:mod:`machdyn.studies.views`),
+its animation. After an optimisation the optimum plays beside the nominal design on one slider.
 Only regular designs set the scatter's scale, so that a design near a dead position with enormous forces does
 not squash the others into a corner.
 """
@@ -31,7 +31,7 @@ def _rows_of(views: Iterable[Any], designs: Any) -> dict[int, dict[str, Any]]:
 
 
 def sweep_space(done: Any) -> Markup:
-    """The interactive scatter of a one-quantity ``[sweep]`` (:class:`machdyn.pipelines.sweep.SweepRun`): every
+    """The interactive scatter of a one-quantity ``[sweep]`` (:class:`machdyn.studies.sweep.population.SweepRun`): every
     per-design column of the catalogue, in its display unit, against the swept value."""
     plan = done.plan
     values = np.asarray(plan.values_display, dtype=float)

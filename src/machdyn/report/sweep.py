@@ -7,9 +7,9 @@ from typing import Any
 import numpy as np
 from markupsafe import escape
 
-from ..pipelines.sweep_runs import column_label
 from ..results.catalogue import label
 from ..results.labels import display_factor
+from ..studies.sweep.runs import column_label
 from . import plots
 from .html import _render, format_value, pretty_unit
 from .spaces import sweep_space

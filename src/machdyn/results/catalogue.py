@@ -21,7 +21,6 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from functools import cache
 
-from ..kinds import CAPABILITIES, KINDS, capability, kind
 from .labels import Label
 
 #: How a quantity is reduced over the crank positions of one design.
@@ -181,7 +180,7 @@ STATUS: tuple[Quantity, ...] = tuple(
 )
 
 #: Results of the capabilities and kinds whose keys are made at run time (their fixed keys are declared in each
-#: capability's ``labels``, gathered by :func:`catalogue`).
+#: capability's ``labels``, gathered by :func:`machdyn.kinds.catalogue`).
 RUN_TIME: tuple[Quantity, ...] = (
     Quantity("sweep.lowest_<column*>", "Sweep: lowest {column}", producer="sweep"),
     Quantity("sweep.best.<column*>", "Sweep: best design, {column}", producer="sweep"),
@@ -290,10 +289,13 @@ def _exact(entries: tuple[Quantity, ...]) -> dict[str, Quantity]:
     return {q.key: q for q in entries if not q.is_pattern}
 
 
-_OWN = MECHANISM + COMPACTOR + STATUS
+OWN = MECHANISM + COMPACTOR + STATUS
+"""The quantities this module declares itself: the linkage results, the compactor's and the population checks.
+The whole catalogue, with every registered kind's and capability's declared results, is
+:func:`machdyn.kinds.catalogue` (the registry sits above the catalogue)."""
 
 
-def find(key: str, entries: tuple[Quantity, ...] = _OWN) -> tuple[Quantity, dict[str, str]] | None:
+def find(key: str, entries: tuple[Quantity, ...] = OWN) -> tuple[Quantity, dict[str, str]] | None:
     """The quantity ``key`` names and the parts of its pattern (``{}`` for an exact key), else None."""
     exact = _exact(entries)
     if key in exact:
@@ -328,20 +330,9 @@ def labels(entries: Iterable[Quantity]) -> dict[str, Label]:
     return {q.key: q.label() for q in entries if not q.is_pattern}
 
 
-@cache
-def catalogue() -> tuple[Quantity, ...]:
-    """Every quantity: the linkage results, the compactor's, the population checks, and each registered problem
-    kind's and capability's declared results (their ``labels``), producer = the kind or the capability's table."""
-    out = list(_OWN)
-    seen = {q.key for q in out}
-    for name in KINDS:
-        out += _declared(kind(name).labels, name, seen)
-    for table in CAPABILITIES:
-        out += _declared(capability(table).labels, table, seen)
-    return tuple(out) + RUN_TIME
-
-
-def _declared(known: Mapping[str, Label], producer: str, seen: set[str]) -> list[Quantity]:
+def declared(known: Mapping[str, Label], producer: str, seen: set[str]) -> list[Quantity]:
+    """The quantities of the declared ``labels`` of a problem kind or capability (``producer``) whose keys are
+    not in ``seen`` yet (added to it)."""
     out = []
     for key, lab in known.items():
         if key not in seen:

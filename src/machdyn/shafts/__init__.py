@@ -6,3 +6,9 @@ grades (:mod:`.grades`); in-line, V, opposed and radial engines with exact and t
 forces and couples (:mod:`.reciprocating`); a locomotive's partial balance (:mod:`.locomotive`); field balancing
 by influence coefficients (:mod:`.field`); and the ``[shaft_line]`` problem kind (:mod:`.kind`).
 """
+
+#: The package's public API is its modules (``from machdyn.shafts import balance``).
+__all__ = [
+    "balance", "field", "frame6", "grades", "kind", "linkages", "locomotive", "model", "phases", "reciprocating",
+    "record_stage", "records", "rotating", "schema"
+]

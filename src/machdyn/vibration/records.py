@@ -16,7 +16,6 @@ from typing import Any
 from pydantic import PrivateAttr, ValidationError
 
 from ..errors import InputError, ProblemFileError
-from ..kinds import CAPABILITIES, KINDS, kind, problem_model
 from ..pipeline import Outcome, ProblemKind, Step
 from ..problem.errors import problems_from
 from ..problem.loader import top_level_problems
@@ -50,13 +49,6 @@ def validate(data: dict[str, Any], source: str | None = None) -> SignalsProblem:
     raises one :class:`~machdyn.errors.ProblemFileError` with every mistake."""
     allowed = tuple(SignalsProblem.model_fields)
     problems = top_level_problems(data, allowed)
-    machine = sorted(k for k in data if k not in allowed and k in _machine_tables())
-    if machine:  # tables of a machine's file whose main table is missing (or misspelled)
-        mains = ", ".join(f"[{k}]" for k in _machine_kinds())
-        problems = [(k, m) for k, m in problems if k not in machine]
-        problems.insert(0, ("", f"the tables {', '.join('[' + k + ']' for k in machine)} describe a machine, but the "
-                                f"file has no machine's main table ({mains}); a file with [signals] and no "
-                                f"machine holds only [meta] and [signals]"))
     try:
         problem = SignalsProblem.model_validate({k: v for k, v in data.items() if k in allowed})
     except ValidationError as exc:
@@ -66,19 +58,6 @@ def validate(data: dict[str, Any], source: str | None = None) -> SignalsProblem:
     if problems:
         raise ProblemFileError(problems, source)
     return problem
-
-
-def _machine_kinds() -> list[str]:
-    return [k for k in KINDS if k not in CAPABILITIES]
-
-
-def _machine_tables() -> set[str]:
-    """The tables of the files of the kinds that describe a machine, by their schemas (capabilities included)."""
-    tables = set(CAPABILITIES)
-    for name in _machine_kinds():
-        model = problem_model(name) if kind(name).schema is not None else None
-        tables |= set(getattr(model, "model_fields", {}))
-    return tables - {"meta", "signals"}
 
 
 def _study(problem: SignalsProblem) -> Any:

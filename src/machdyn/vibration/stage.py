@@ -11,8 +11,7 @@ import math
 import numpy as np
 
 from ..balancing.frame import BalanceRun
-from ..errors import InputError, ProblemFileError
-from ..kinds import kind
+from ..errors import InputError
 from ..pipeline import Capability, Outcome, StageContext
 from ..results.labels import Label
 from .modes import check_supported
@@ -183,8 +182,8 @@ def run_signals(ctx: StageContext) -> Outcome:
 
 
 def check_frame(problem, table, source: str | None = None) -> list[tuple[str, str]]:
-    """What ``machdyn check`` can tell without analysing: the mounts support the frame, and the variant's
-    counterweights and springs sit on bodies and points of the mechanism."""
+    """What ``machdyn check`` can tell without analysing: the mounts support the frame (the variant's
+    counterweights and springs are checked against the built mechanism by :func:`check_frame_model`)."""
     problems: list[tuple[str, str]] = []
     speed = float(problem.drive.speed)
     if not speed > 0:
@@ -198,20 +197,19 @@ def check_frame(problem, table, source: str | None = None) -> list[tuple[str, st
             check_resonance(frame, orders * speed, orders)
     except InputError as exc:
         problems.append(("frame.mounts", str(exc)))
-    if table.after is not None:
-        owner = next((kind(k) for k in FRAME.kinds if kind(k).owns(problem)), None)
-        try:
-            mechanism, found = owner.build(problem) if owner is not None else (None, [])
-        except (ProblemFileError, InputError):
-            return problems  # the kind reports its own model's problems
-        if mechanism is None or found:
-            return problems
-        try:
-            with_variant(mechanism, table.after)
-        except InputError as exc:
-            where, _, message = str(exc).partition(": ")
-            problems.append((where, message))
     return problems
+
+
+def check_frame_model(mechanism, table) -> list[tuple[str, str]]:
+    """The variant's counterweights and springs sit on bodies and points of the file's built mechanism."""
+    if table.after is None:
+        return []
+    try:
+        with_variant(mechanism, table.after)
+    except InputError as exc:
+        where, _, message = str(exc).partition(": ")
+        return [(where, message)]
+    return []
 
 
 def check_signals(problem, table, source: str | None = None) -> list[tuple[str, str]]:
@@ -237,6 +235,7 @@ def check_signals(problem, table, source: str | None = None) -> list[tuple[str, 
 
 FRAME = Capability(
     table="frame", schema=FrameTable, run=run_frame, step="frame vibration", check=check_frame,
+    check_model=check_frame_model,
     kinds=("mechanism", "rotary_screen"), report="machdyn.report.vibration:frame_sections", after=("balance",),
     result_type=FrameStudy,
 )

@@ -18,7 +18,8 @@ from typing import Any
 import numpy as np
 
 from ..errors import MachdynError
-from ..results.catalogue import catalogue, find
+from ..kinds import catalogue
+from ..results.catalogue import find
 
 #: The tables whose results are not a design's: the studies themselves.
 STUDIES = ("sweep", "optimise")

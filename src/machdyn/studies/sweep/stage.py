@@ -8,17 +8,17 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import ProblemFileError
-from ..pipeline import Capability, Outcome, StageContext
-from ..pipelines import sweep as one_quantity
-from ..pipelines import sweep_runs
-from ..pipelines.design_views import MAX_VIEWS, views_of
-from ..problem.sweep import SweepSpec
-from ..results.catalogue import find, label
-from ..results.labels import Label
-from .execution import workers_error
-from .run import Exploration, explore, plan_exploration, store_in_file
-from .sampling import is_power_of_two
+from ...errors import ProblemFileError
+from ...pipeline import Capability, Outcome, StageContext
+from ...results.catalogue import find, label
+from ...results.labels import Label
+from ..exploration.execution import workers_error
+from ..exploration.run import Exploration, explore, plan_exploration, store_in_file
+from ..exploration.sampling import is_power_of_two
+from ..table import SweepSpec
+from ..views import MAX_VIEWS, views_of
+from . import population as one_quantity
+from . import runs as sweep_runs
 
 LABELS = dict(one_quantity.LABELS) | {
     "sweep.assembled_count": Label("Sweep: designs that assemble at every crank angle"),
@@ -29,7 +29,7 @@ LABELS = dict(one_quantity.LABELS) | {
 def check(problem: Any, table: Any, source: str | None = None) -> list[tuple[str, str]]:
     """Every mistake of the table that its schema cannot see: paths, units and signs of the values, designs
     that cannot be built, the objective; in a file with no linkage (a cam, a shaft line), the checks of a sweep
-    run variant by variant (:mod:`machdyn.pipelines.sweep_runs`)."""
+    run variant by variant (:mod:`machdyn.studies.sweep.runs`)."""
     if _by_runs(problem):
         return sweep_runs.check(problem, table)
     if not table.is_exploration:
@@ -49,9 +49,10 @@ def check(problem: Any, table: Any, source: str | None = None) -> list[tuple[str
 
 
 def run(ctx: StageContext) -> Outcome:
-    """The sweep of ``ctx.problem``: one quantity as before, or an exploration (:func:`machdyn.explore.explore`)
-    with the execution settings in force (``--workers``, ``--scheduler``, the output folder); in a file with no
-    linkage (a cam, a shaft line), each variant run whole through the file's stages."""
+    """The sweep of ``ctx.problem``: one quantity as before, or an exploration
+    (:func:`machdyn.studies.exploration.explore`) with the execution settings in force (``--workers``,
+    ``--scheduler``, the output folder); in a file with no linkage (a cam, a shaft line), each variant run whole
+    through the file's stages."""
     if _by_runs(ctx.problem):
         return sweep_runs.run(ctx)
     if not ctx.table.is_exploration:

@@ -1,7 +1,7 @@
 """A one-quantity ``[sweep]`` in a file of a kind with no linkage population — a cam, a shaft line: each variant
 is written out and read back (every field's rule checked as for a file) and run whole through the file's own
-stages, as ``[optimise]`` runs its designs (:mod:`machdyn.optimise.by_runs`). The columns are results the file's
-tables declare in the catalogue, named by their keys (``cam.max_pressure_angle``,
+stages, as ``[optimise]`` runs its designs (:mod:`machdyn.studies.optimisation.by_runs`). The columns are
+results the file's tables declare in the catalogue, named by their keys (``cam.max_pressure_angle``,
 ``shaft.engine.primary_couple`` ...).
 
 ```toml
@@ -28,17 +28,17 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import MachdynError, ProblemFileError
-from ..explore.execution import announce_estimate, current
-from ..kinds import KINDS
-from ..optimise.per_design import KnownResults, capability_results, unit_of
-from ..pipeline import Outcome, StageContext
-from ..problem.errors import did_you_mean
-from ..problem.paths import design_problem
-from ..problem.sweep import expand_sweep
-from ..results.catalogue import catalogue, find
-from ..results.labels import Label
-from .sweep import SweepRun
+from ...errors import MachdynError, ProblemFileError
+from ...kinds import KINDS, catalogue
+from ...pipeline import Outcome, StageContext
+from ...problem.errors import did_you_mean
+from ...problem.paths import design_problem
+from ...results.catalogue import find
+from ...results.labels import Label
+from ..exploration.execution import announce_estimate, current
+from ..per_design import KnownResults, capability_results, unit_of
+from ..table import expand_sweep
+from .population import SweepRun
 
 #: A sweep that runs each variant whole takes at most this many variants (a cam's run takes about half a second).
 MAX_VARIANTS = 1000

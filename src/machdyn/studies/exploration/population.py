@@ -3,7 +3,7 @@ same engine call as an exploration, here or on Dask, the results in memory.
 
 ```python
 import numpy as np
-from machdyn.explore.population import evaluate_population
+from machdyn.studies.exploration.population import evaluate_population
 from machdyn.reading import load_problem
 problem = load_problem("examples/four_bar.toml")
 values = np.array([[0.035, -1.0], [0.04, -2.0]])   # SI: m, N*m
@@ -20,9 +20,9 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InputError
-from ..problem.build import crank_angles
-from ..problem.sweep import DEFAULT_OBJECTIVE, QuantityRange, sweep_unit
+from ...errors import InputError
+from ...problem.build import crank_angles
+from ..table import DEFAULT_OBJECTIVE, QuantityRange, sweep_unit
 from .evaluate import ExplorePlan, check_vectorised_build, evaluate_designs
 from .execution import run_tasks
 from .sampling import DEFAULT_PARTITION, DesignSpace

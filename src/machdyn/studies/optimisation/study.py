@@ -8,15 +8,15 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import ProblemFileError
-from ..problem.build import build_mechanism, crank_angles
-from ..problem.dumper import dump_problem
-from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
+from ...errors import ProblemFileError
+from ...problem.build import build_mechanism, crank_angles
+from ...problem.dumper import dump_problem
+from ...results.population import DEFAULT_MIN_TRANSMISSION_DEG
+from ..per_design import RunDesign, capability_results
 from .by_runs import RunEvaluator, setup_by_runs, verify_by_runs
 from .constraints import parse_goals, violations
 from .evaluate import evaluate, result_names, result_unit
 from .pareto import hypervolume_converged, nsga2
-from .per_design import RunDesign, capability_results
 from .result import OptimiseResult
 from .schema import OptimiseSpec
 from .search import Evaluator, differential_evolution
@@ -44,11 +44,11 @@ def show_value(unit: str):
 
 
 def setup(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None = None) -> Evaluator:
-    """The :class:`~machdyn.optimise.search.Evaluator` of a problem and its ``[optimise]`` table; every
+    """The :class:`~machdyn.studies.optimisation.search.Evaluator` of a problem and its ``[optimise]`` table; every
     mistake of the table is reported at once (:class:`~machdyn.errors.ProblemFileError`). Objectives and
     constraints may name the linkage's results (computed for the whole population at once) and the results of
     the file's capability tables (``flywheel.mass``, ``parts...``: each design run by ``run_design``, see
-    :mod:`machdyn.optimise.per_design`)."""
+    :mod:`machdyn.studies.per_design`)."""
     if getattr(problem, "mechanism", None) is None:  # a shaft line, a cam: every design run whole
         return setup_by_runs(problem, spec, run_design)
     problems: list[tuple[str, str]] = []
@@ -87,9 +87,9 @@ def _show(constraint):
 def optimise(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None = None) -> OptimiseResult:
     """Optimise ``problem`` (a validated linkage problem) as ``spec`` (its ``[optimise]`` table) says.
 
-    One objective: differential evolution (:mod:`machdyn.optimise.search`); several: the Pareto front by
-    NSGA-II (:mod:`machdyn.optimise.pareto`), whose member best in the first objective is reported as the
-    best design. Raises :class:`~machdyn.optimise.result.NoFeasibleDesign` listing the tightest constraints
+    One objective: differential evolution (:mod:`machdyn.studies.optimisation.search`); several: the Pareto front by
+    NSGA-II (:mod:`machdyn.studies.optimisation.pareto`), whose member best in the first objective is reported as the
+    best design. Raises :class:`~machdyn.studies.optimisation.result.NoFeasibleDesign` listing the tightest constraints
     when no design meets them all. A search that stops without converging is reported in ``converged``,
     ``message`` and ``warnings``.
     """

@@ -16,12 +16,12 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InputError, ProblemFileError
-from ..linkage import stack_designs
-from ..problem.build import build_mechanism
-from ..problem.fields import FieldError, Unit, to_si
-from ..problem.paths import assign, design_problem, quantity_unit, value_at
-from ..units import quantity_of_text, unit_of_text, ureg
+from ...errors import InputError, ProblemFileError
+from ...linkage import stack_designs
+from ...problem.build import build_mechanism
+from ...problem.fields import FieldError, Unit, to_si
+from ...problem.paths import assign, design_problem, quantity_unit, value_at
+from ...units import quantity_of_text, unit_of_text, ureg
 from .formula import FORMULA_CONSTANTS, FORMULA_FUNCTIONS, Formula, compile_formula
 from .schema import OptimiseSpec
 

@@ -12,7 +12,7 @@ lower = "20 mm"
 upper = "60 mm"
 
 [[optimise.objectives]]
-result = "driving_torque.max_abs"     # any per-design result (see machdyn.optimise.results)
+result = "driving_torque.max_abs"     # any per-design result (see machdyn.studies.optimisation.results)
 sense = "minimise"                    # or "maximise", or target = "45 deg"
 
 [[optimise.constraints]]
@@ -29,7 +29,7 @@ from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
-from ..problem.fields import Angle
+from ...problem.fields import Angle
 
 
 class _Spec(BaseModel):

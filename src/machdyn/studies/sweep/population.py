@@ -1,5 +1,5 @@
 """A ``[sweep]`` of one quantity: its design variants analysed together in one vectorised call. The ``[sweep]``
-capability (:mod:`machdyn.explore.stage`) runs it for one-quantity tables and an exploration for several."""
+capability (:mod:`machdyn.studies.sweep.stage`) runs it for one-quantity tables and an exploration for several."""
 
 from __future__ import annotations
 
@@ -8,19 +8,20 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import ProblemFileError
-from ..limits import held_values_error
-from ..linkage import stack_designs
-from ..optimise.per_design import capability_results, evaluate_designs
-from ..pipeline import Outcome, StageContext
-from ..problem.build import build_mechanism, crank_angles
-from ..problem.errors import did_you_mean
-from ..problem.sweep import expand_sweep
-from ..results.catalogue import label
-from ..results.labels import Label
-from ..results.population import FAULTS, evaluate_population, result_names, result_unit, sweep_columns
-from .design_views import MAX_VIEWS, analysed, design_problem
-from .linkage_run import crank_range
+from ...errors import ProblemFileError
+from ...limits import held_values_error
+from ...linkage import stack_designs
+from ...pipeline import Outcome, StageContext
+from ...pipelines.linkage_run import crank_range
+from ...problem.build import build_mechanism, crank_angles
+from ...problem.errors import did_you_mean
+from ...results.catalogue import label
+from ...results.labels import Label
+from ...results.population import FAULTS, result_names, result_unit, sweep_columns
+from ..evaluator import PopulationEvaluator
+from ..per_design import capability_results
+from ..table import expand_sweep
+from ..views import MAX_VIEWS, analysed, design_problem
 
 #: The per-design results a sweep ranks its designs by in the summary (the lowest of each is named).
 RANKED = ("driving_torque.max_abs", "frame_force.max")
@@ -84,7 +85,7 @@ def unknown_columns(problem: Any, mech: Any) -> list[tuple[str, str]]:
 
 def run_sweep(problem: Any, run_design: Any = None) -> SweepRun:
     """The design variants of a problem's ``[sweep]``, evaluated together by the population evaluator; the
-    columns that are results of the file's other tables (a capability's, :mod:`machdyn.optimise.per_design`)
+    columns that are results of the file's other tables (a capability's, :mod:`machdyn.studies.per_design`)
     by ``run_design`` running each regular variant through the file's stages."""
     plan, mechs = variants(problem)
     angles, _, _ = crank_range(problem)
@@ -100,17 +101,11 @@ def run_sweep(problem: Any, run_design: Any = None) -> SweepRun:
     machine = getattr(problem.mechanism, "machine", None)
     by_run = {k: u for k, u in capability_results(problem).items() if k in problem.sweep.extra_columns}
     wanted = sweep_columns(mech, machine, extra=tuple(k for k in problem.sweep.extra_columns if k not in by_run))
-    columns = evaluate_population(mech, angles, speed, accel, wanted, about=about, machine=machine,
-                                  min_transmission_angle=problem.sweep.transmission_limit)
-    n = len(plan.problems)
-    # Variants that are all alike stack into one design: one entry per variant all the same.
-    columns = {k: np.broadcast_to(np.asarray(v), (n,)).copy() for k, v in columns.items()}
-    units = {k: result_unit(k, mech) for k in columns}
-    if by_run and run_design is not None:
-        regular = np.asarray(columns["regular"], dtype=bool)
-        columns |= evaluate_designs(run_design, (p if ok else None for p, ok in zip(plan.problems, regular,
-                                                                                  strict=True)), by_run, n)
-        units |= by_run
+    evaluator = PopulationEvaluator(angles, speed, accel, about, machine, problem.sweep.transmission_limit,
+                                    run_design=run_design)
+    per_design = by_run if run_design is not None else {}
+    columns = evaluator(mech, wanted, len(plan.problems), per_design, plan.problems.__getitem__)
+    units = {k: per_design[k] if k in per_design else result_unit(k, mech) for k in columns}
     return SweepRun(plan, columns, units)
 
 
@@ -119,7 +114,7 @@ def _shown(values: np.ndarray) -> list:
 
 
 def _played(done: SweepRun) -> SweepRun:
-    """The sweep with up to :data:`~machdyn.pipelines.design_views.MAX_VIEWS` regular designs, evenly spread
+    """The sweep with up to :data:`~machdyn.studies.views.MAX_VIEWS` regular designs, evenly spread
     over the swept values, analysed for playback."""
 
     plan = done.plan

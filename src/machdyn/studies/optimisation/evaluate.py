@@ -12,8 +12,9 @@ from collections.abc import Iterable
 
 import numpy as np
 
-from ..linkage.model import Mechanism
-from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG, evaluate_population, result_names, result_unit
+from ...linkage.model import Mechanism
+from ...results.population import DEFAULT_MIN_TRANSMISSION_DEG, result_names, result_unit
+from ..evaluator import PopulationEvaluator
 
 __all__ = ["evaluate", "result_names", "result_unit"]
 
@@ -27,6 +28,7 @@ def evaluate(mech: Mechanism, phi, speed, acceleration, wanted: Iterable[str], s
     from 0 and 180 deg) and the other numeric status columns. Results of designs that are not regular are NaN.
     Every group but the full analysis is computed in one compiled pass over the population when numba is
     present (:mod:`machdyn.linkage.fused_population`), else by the NumPy reference."""
-    out = evaluate_population(mech, phi, speed, acceleration, wanted, about=shaking_about, machine=machine,
-                              min_transmission_angle=min_transmission_angle, engine="fused")
+    evaluator = PopulationEvaluator(phi, speed, acceleration, tuple(shaking_about), machine, min_transmission_angle,
+                                    engine="fused")
+    out = evaluator.vectorised(mech, wanted)
     return {k: v for k, v in out.items() if v.dtype.kind in "fb"}

@@ -1,5 +1,5 @@
 """``[optimise]`` for a kind with no linkage population — a shaft line, a cam: each design is written out and run
-through the file's own stages (:mod:`machdyn.optimise.per_design`), and the objectives and constraints read its
+through the file's own stages (:mod:`machdyn.studies.per_design`), and the objectives and constraints read its
 results by their catalogue keys (``shaft.engine.primary_couple``, ``cam.pressure_angle.max`` ...). The search is
 the linkage optimiser's (scipy's differential evolution, NSGA-II for several objectives) with the same Deb rules,
 history and verification; only the evaluation differs, one run per design instead of one engine call per
@@ -13,9 +13,9 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import ProblemFileError
+from ...errors import ProblemFileError
+from ..per_design import KnownResults, RunDesign, capability_results, evaluate_designs, unit_of
 from .constraints import parse_goals, violations
-from .per_design import KnownResults, RunDesign, capability_results, evaluate_designs, unit_of
 from .schema import OptimiseSpec
 from .search import Evaluator
 from .variables import search_space
@@ -23,7 +23,7 @@ from .variables import search_space
 
 @dataclass
 class RunEvaluator(Evaluator):
-    """An :class:`~machdyn.optimise.search.Evaluator` whose designs are each run whole by ``run_design``."""
+    """An :class:`~machdyn.studies.optimisation.search.Evaluator` whose designs are each run whole by ``run_design``."""
 
     def __call__(self, population) -> tuple[dict, np.ndarray, np.ndarray]:
         x = np.atleast_2d(np.asarray(population, dtype=float))

@@ -18,8 +18,8 @@ from typing import Any
 
 import numpy as np
 
-from ..problem.errors import did_you_mean
-from ..problem.fields import FieldError, Unit
+from ...problem.errors import did_you_mean
+from ...problem.fields import FieldError, Unit
 
 #: Functions a derived formula may call (numpy, so that they act on a whole population at once).
 FORMULA_FUNCTIONS = {

@@ -14,9 +14,9 @@ from typing import Any
 
 from ..errors import InputError, ProblemFileError, SingularPositionError
 from ..linkage import analyse
+from ..pipelines.linkage_run import crank_range
 from ..problem.build import build_mechanism
 from ..problem.paths import design_problem
-from .linkage_run import crank_range
 
 #: At most this many designs of a design space are analysed for playback (each adds ~100 kB to the report).
 MAX_VIEWS = 6

@@ -25,7 +25,7 @@ from rich.console import Console
 from rich.progress import BarColumn, MofNCompleteColumn, TextColumn, TimeRemainingColumn
 from rich.progress import Progress as RichProgress
 
-from ..errors import InputError, OperationalError
+from ...errors import InputError, OperationalError
 from .digest import Digest
 from .evaluate import ExplorePlan, evaluate_partition
 from .sampling import partition_designs

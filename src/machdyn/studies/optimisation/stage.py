@@ -8,13 +8,14 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import ProblemFileError
-from ..limits import held_values_error
-from ..pipeline import Capability, Outcome, StageContext
-from ..pipelines.design_views import analysed, design_problem
-from ..problem.build import crank_angles
-from ..results.catalogue import catalogue, find, label
-from ..results.labels import Label
+from ...errors import ProblemFileError
+from ...kinds import catalogue
+from ...limits import held_values_error
+from ...pipeline import Capability, Outcome, StageContext
+from ...problem.build import crank_angles
+from ...results.catalogue import find, label
+from ...results.labels import Label
+from ..views import analysed, design_problem
 from .evaluate import result_unit
 from .pareto import spacing
 from .result import NoFeasibleDesign, OptimiseResult

@@ -21,7 +21,7 @@ stop = "45 mm"
 
 Each value is checked by the same rule as the quantity it replaces (unit, sign). A one-quantity sweep given
 by ``parameter`` with no other key is analysed as one stacked model by :func:`machdyn.linkage.sweep`; any
-other sweep is a design-space exploration (:mod:`machdyn.explore`): designs drawn partition by partition,
+other sweep is a design-space exploration (:mod:`machdyn.studies.exploration`): designs drawn partition by partition,
 evaluated in bounded memory, written to Parquet, optionally on a Dask cluster.
 """
 
@@ -36,12 +36,12 @@ import numpy as np
 from pydantic import BaseModel, Field, field_validator, model_validator
 
 from ..errors import ProblemFileError
+from ..problem.errors import did_you_mean
+from ..problem.fields import Angle, FieldError, Unit, to_si
+from ..problem.paths import assign, quantity_unit
 from ..results.catalogue import ALIASES, canonical, find, population_quantities
 from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
 from ..units import Q_, convert, quantity_of_text, unit_of_text
-from .errors import did_you_mean
-from .fields import Angle, FieldError, Unit, to_si
-from .paths import assign, quantity_unit
 
 #: At most this many designs in one sweep (grids and samples alike).
 MAX_DESIGNS = 100_000_000
@@ -249,7 +249,7 @@ def expand_sweep(problem: Any) -> SweepPlan:
     spec: SweepSpec = problem.sweep
     if spec.parameter is None or spec.is_exploration:
         raise ProblemFileError([("sweep", "expand_sweep expands a one-quantity sweep; explore several quantities "
-                                          "with machdyn.explore")])
+                                          "with machdyn.studies.exploration")])
     parameter: str = spec.parameter
     try:
         meta = _target(problem, parameter)

@@ -17,11 +17,10 @@ from typing import Any
 
 import numpy as np
 
-from ..explore.execution import announce_estimate
-from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
+from ...results.population import DEFAULT_MIN_TRANSMISSION_DEG
+from ..evaluator import PopulationEvaluator
+from ..exploration.execution import announce_estimate
 from .constraints import CLOSES, violations
-from .evaluate import evaluate
-from .per_design import evaluate_designs
 from .result import History, NoFeasibleDesign
 
 #: Cost floor of infeasible designs; feasible objective values must stay far below it in magnitude.
@@ -58,24 +57,26 @@ class Evaluator:
         """The results asked for that only a run of each design gives."""
         return self.wanted & set(self.per_design_keys)
 
+    def evaluator(self, speed: Any = 0.0, acceleration: Any = 0.0) -> PopulationEvaluator:
+        """The studies' evaluator at the drive's ``speed`` and ``acceleration`` (one per design, or floats), on the
+        compiled pass of the population evaluator (:mod:`machdyn.linkage.fused_population`)."""
+        return PopulationEvaluator(self.phi, speed, acceleration, self.about, self.machine,
+                                   self.min_transmission_angle, engine="fused", run_design=self.run_design)
+
     def design_results(self, problems, keys) -> dict[str, np.ndarray]:
-        """``keys`` of each design's run (:func:`~machdyn.optimise.per_design.evaluate_designs`)."""
-        if self.run_design is None:
-            raise RuntimeError("results of a capability need a way to run a design (StageContext.run_design)")
+        """``keys`` of each design's run (:func:`~machdyn.studies.per_design.evaluate_designs`)."""
         problems = list(problems)
-        return evaluate_designs(self.run_design, problems, keys, len(problems))
+        return self.evaluator().per_design(problems, keys, len(problems))
 
     def __call__(self, population) -> tuple[dict, np.ndarray, np.ndarray]:
-        """(results, costs N x K, violations N x (1 + C)) of a population."""
+        """(results, costs N x K, violations N x (1 + C)) of a population: the capability results asked for by
+        running each regular design through the file's stages."""
         x = np.atleast_2d(np.asarray(population, dtype=float))
         pop = self.space.population(x)
-        per_design = self.per_design_wanted
-        results = evaluate(pop.mechanism, self.phi, pop.speed, pop.acceleration, self.wanted - per_design,
-                           self.about, machine=self.machine, min_transmission_angle=self.min_transmission_angle)
-        if per_design:  # the regular designs run one by one through the file's stages
-            regular = np.asarray(results.get("regular", pop.buildable), dtype=bool) & pop.buildable
-            results |= self.design_results((self.space.problem_at(x[i]) if regular[i] else None
-                                            for i in range(x.shape[0])), per_design)
+        evaluated = self.evaluator(pop.speed, pop.acceleration)(
+            pop.mechanism, self.wanted - self.per_design_wanted, x.shape[0], self.per_design_wanted,
+            lambda i: self.space.problem_at(x[i]), pop.buildable)
+        results = {k: v for k, v in evaluated.items() if v.dtype.kind in "fb"}  # the text status left out
         costs = np.stack([o.cost(results) for o in self.objectives], axis=1)
         viol = violations(self.constraints, results, pop.buildable)
         viol[:, 0] += np.where(np.isfinite(costs).all(axis=1), 0.0, 1.0)

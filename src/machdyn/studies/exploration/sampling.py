@@ -1,6 +1,6 @@
 """Designs of a design space, drawn partition by partition so that no more than one partition is ever in memory.
 
-A design space is a tuple of explored quantities (:class:`~machdyn.problem.sweep.QuantityRange`) and a method:
+A design space is a tuple of explored quantities (:class:`~machdyn.studies.table.QuantityRange`) and a method:
 
 - ``grid``: every combination of the quantities' values, the first quantity varying slowest (the order of
   ``itertools.product``); design ``i`` is found from ``i`` alone (:func:`numpy.unravel_index`).
@@ -22,8 +22,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import InputError
-from ..problem.sweep import QuantityRange
+from ...errors import InputError
+from ..table import QuantityRange
 
 #: Designs per partition unless the problem says otherwise: 2^14, a power of 2 so that every Sobol' partition
 #: is balanced, and small enough that a partition of 360 positions takes seconds.

@@ -40,8 +40,8 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import OperationalError
-from ..outputs import acquire_lock, atomic_write_text, fsync_folder, release_lock, swap_folders
+from ...errors import OperationalError
+from ...outputs import acquire_lock, atomic_write_text, fsync_folder, release_lock, swap_folders
 
 MANIFEST = "_exploration.json"
 _PART = re.compile(r"^part-(\d{6})\.parquet$")

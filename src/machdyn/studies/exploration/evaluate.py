@@ -1,6 +1,6 @@
 """Evaluate one partition of designs: build the partition's engine model with one array per explored quantity
-and evaluate it with the population evaluator (:func:`machdyn.results.population.evaluate_population`, the one
-function sweeps, explorations and the optimiser evaluate designs with; its columns are catalogue keys).
+and evaluate it with the studies' evaluator (:class:`machdyn.studies.evaluator.PopulationEvaluator`, with which
+sweeps, explorations and the optimiser evaluate designs; its columns are catalogue keys).
 
 A partition's model is built by putting the partition's values, as arrays, into the validated problem and
 building it once (every builder and load of the engine broadcasts over designs). Before a run, a few designs
@@ -19,12 +19,13 @@ from typing import Any
 
 import numpy as np
 
-from .. import __version__
-from ..errors import ProblemFileError
-from ..linkage import stack_designs
-from ..problem.build import build_mechanism
-from ..problem.sweep import substitute
-from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG, evaluate_population, sweep_columns
+from ... import __version__
+from ...errors import ProblemFileError
+from ...linkage import stack_designs
+from ...problem.build import build_mechanism
+from ...results.population import DEFAULT_MIN_TRANSMISSION_DEG, sweep_columns
+from ..evaluator import PopulationEvaluator
+from ..table import substitute
 from .sampling import DesignSpace
 
 #: Changes when the columns an exploration keeps change, so that partitions stored before are not reused.
@@ -110,8 +111,8 @@ def evaluate_designs(plan: ExplorePlan, values: np.ndarray) -> dict[str, np.ndar
     mech, speed, accel = build_designs(plan, values)
     machine = getattr(plan.problem.mechanism, "machine", None)
     wanted = sweep_columns(mech, machine, plan.objective, plan.extra_columns)
-    res = evaluate_population(mech, plan.angles, speed, accel, wanted, about=plan.about, machine=machine,
-                              min_transmission_angle=plan.min_transmission_angle)
+    evaluator = PopulationEvaluator(plan.angles, speed, accel, plan.about, machine, plan.min_transmission_angle)
+    res = evaluator.vectorised(mech, wanted)
     missing = [(f"sweep.columns[{i}]", f"'{k}' is not a result of this mechanism")
                for i, k in enumerate(plan.extra_columns) if k not in res]
     if missing:

@@ -7,7 +7,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InputError
+from ...errors import InputError
 
 
 class NoFeasibleDesign(InputError):
@@ -18,7 +18,7 @@ class NoFeasibleDesign(InputError):
 class History:
     """Per generation: evaluations so far, the best objective value of a feasible design (NaN before the
     first one), the share of the generation that is feasible and, for a Pareto front, the hypervolume of the
-    feasible front (normalised; :func:`machdyn.optimise.pareto.hypervolumes`)."""
+    feasible front (normalised; :func:`machdyn.studies.optimisation.pareto.hypervolumes`)."""
 
     generation: np.ndarray
     evaluations: np.ndarray
@@ -29,7 +29,7 @@ class History:
 
 @dataclass(frozen=True)
 class OptimiseResult:
-    """What :func:`machdyn.optimise.optimise` found.
+    """What :func:`machdyn.studies.optimisation.optimise` found.
 
     ``x`` the best design's variables (SI, in the order of ``names``); ``results`` its per-design results
     (SI floats); ``objective`` the objective(s) there; ``verified`` True when the best design, rebuilt alone

@@ -1,6 +1,6 @@
 """Objectives: a per-design result to minimise, maximise or bring to a target value.
 
-Any result of :func:`machdyn.optimise.evaluate.result_names` may be named, by its catalogue key or an old
+Any result of :func:`machdyn.studies.optimisation.evaluate.result_names` may be named, by its catalogue key or an old
 name of :data:`machdyn.results.catalogue.ALIASES`; a name that is none of them is
 refused with a did-you-mean. Every objective is turned into a value to *minimise*: the result itself
 (minimise), its negative (maximise) or its distance from the target, relative to the target when that is not
@@ -13,10 +13,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import ProblemFileError
-from ..problem.errors import did_you_mean
-from ..problem.fields import FieldError, Unit, to_si
-from ..results.catalogue import canonical
+from ...errors import ProblemFileError
+from ...problem.errors import did_you_mean
+from ...problem.fields import FieldError, Unit, to_si
+from ...results.catalogue import canonical
 from .schema import ObjectiveSpec
 
 SENSES = {"minimise": "minimise", "minimize": "minimise", "maximise": "maximise", "maximize": "maximise"}

@@ -13,9 +13,9 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import ProblemFileError
-from ..problem.fields import FieldError, Unit, to_si
-from ..results.catalogue import canonical
+from ...errors import ProblemFileError
+from ...problem.fields import FieldError, Unit, to_si
+from ...results.catalogue import canonical
 from .objectives import parse_objectives, unknown_result
 from .schema import ConstraintSpec
 

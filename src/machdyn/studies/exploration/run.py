@@ -2,7 +2,7 @@
 (here or on Dask), keep them in a Parquet folder, and return counts, the best designs and a bounded sample.
 
 ```python
-from machdyn.explore import explore
+from machdyn.studies.exploration import explore
 done = explore("examples/four_bar_press_explore.toml", workers=2)
 done.best_frame().head()
 done.frame()            # every design, read back from done.store
@@ -22,14 +22,14 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import ProblemFileError
-from ..linkage.sweep import DEFAULT_CHUNK_POSITIONS
-from ..problem.build import build_mechanism, crank_angles
-from ..problem.errors import did_you_mean
-from ..problem.sweep import MAX_DESIGNS, explore_quantities
-from ..reading import read_problem
-from ..results.catalogue import label
-from ..results.population import result_unit
+from ...errors import ProblemFileError
+from ...linkage.sweep import DEFAULT_CHUNK_POSITIONS
+from ...problem.build import build_mechanism, crank_angles
+from ...problem.errors import did_you_mean
+from ...reading import read_problem
+from ...results.catalogue import label
+from ...results.population import result_unit
+from ..table import MAX_DESIGNS, explore_quantities
 from .digest import Digest
 from .evaluate import ExplorePlan, check_vectorised_build, evaluate_designs
 from .execution import ANNOUNCE_AFTER, Progress, announce_estimate, current, progress_bar, run_partitions
