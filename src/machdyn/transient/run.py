@@ -71,8 +71,8 @@ class Scenario:
     method: str = "auto"
     rtol: float = 1e-8
     samples_per_period: int = 24
-    max_evaluations: int = 2_000_000
-    max_seconds: float = 600.0
+    max_evaluations: int = 400_000
+    max_seconds: float = 120.0
 
     def __post_init__(self) -> None:
         if not (math.isfinite(self.duration) and self.duration > 0):

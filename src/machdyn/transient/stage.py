@@ -51,14 +51,14 @@ class TransientTable(Spec):
     prescribed_acceleration: AngularAcceleration = 0.0
     rigid: bool = Field(False, strict=True)
     method: Literal["auto", "LSODA", "Radau", "BDF", "DOP853", "RK45"] = "auto"
-    rtol: float = Field(1e-8, gt=0.0, lt=1e-2, allow_inf_nan=False)
+    rtol: float = Field(1e-8, gt=0.0, lt=1e-2, allow_inf_nan=False)  # DOP853 closes the energy balance to ~1e-8
     positions: int = Field(256, ge=32, le=4096, strict=True)
     band: float = Field(0.1, gt=0.0, lt=0.5, allow_inf_nan=False)
     point: Name | None = None
     direction: Angle | None = None
     samples_per_period: int = Field(24, ge=4, le=1000, strict=True)
-    max_evaluations: int = Field(2_000_000, ge=1000, le=100_000_000, strict=True)
-    max_seconds: Time = 600.0
+    max_evaluations: int = Field(400_000, ge=1000, le=100_000_000, strict=True)
+    max_seconds: Time = 120.0
 
     @model_validator(mode="after")
     def _consistent(self):
@@ -90,7 +90,7 @@ LABELS = {
     "transient.passage_peak_mount_force": Label("Transient: largest mount force in a resonance passage", "N"),
     "transient.passage_time": Label("Transient: time spent within the band of the frame's modes", "s"),
     "transient.steady_amplitude": Label("Transient: displacement at the point over the last turn", "m", "mm"),
-    "transient.time_to_speed": Label("Transient: time to 95 % of the final speed", "s"),
+    "transient.time_to_speed": Label("Transient: time to 95 % of the speed the drive holds on a rigid frame", "s"),
     "transient.stop_time": Label("Transient: time at which the crank comes to rest", "s"),
     "transient.motor_work": Label("Transient: work of the drive", "J"),
     "transient.load_work": Label("Transient: work done on the process loads and dampers of the mechanism", "J"),
@@ -221,8 +221,8 @@ def _outcome(r: TransientRun) -> Outcome:
                    "transient.peak_mount_force": float(np.abs(run.mount_force).max()),
                    "transient.steady_amplitude": float(amp[last].max())}
     speed = np.abs(run.omega[0])
-    if run.scenario.prescribed is None and r.table.start_speed == 0.0 and r.final_speed > 0:
-        reached = np.flatnonzero(speed >= 0.95 * r.final_speed)
+    if run.scenario.prescribed is None and r.table.start_speed == 0.0 and math.isfinite(r.free_speed):
+        reached = np.flatnonzero(speed >= 0.95 * r.free_speed)
         if reached.size:
             values["transient.time_to_speed"] = float(run.t[reached[0]])
     if run.ended == "stopped":
