@@ -334,7 +334,7 @@ def run_scenario(model: CoupledModel, scenario: Scenario) -> Transient:
             t_eval = np.concatenate([[start], t_eval])
         if t_eval[-1] < end:
             t_eval = np.concatenate([t_eval, [end]])
-        events = [stopped] if prescribed is None and (np.any(y[n:2 * n] > 0) or start > 0) else None
+        events = [stopped] if prescribed is None and (state["on"] or np.any(y[n:2 * n] > 0)) else None
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", UserWarning)
             sol = solve_ivp(rhs, (start, end), y, method=method, rtol=scenario.rtol,
