@@ -45,6 +45,7 @@ from ..linkage import crank_angles, kinematics
 from ..linkage.loads import mass_elements
 from ..linkage.model import Mechanism
 from ..vibration.frame import Frame
+from ..vibration.modes import check_supported
 
 __all__ = ["CoupledModel", "Exciter", "carried_frame", "coupled_model"]
 
@@ -333,8 +334,6 @@ def coupled_model(exciters, frame: Frame | None = None, *, positions: int = 256)
     if dupes:
         raise InputError(f"The exciters' names must be unique; got {', '.join(dupes)} twice.")
     if frame is not None:
-        from ..vibration.modes import check_supported
-
         check_supported(frame)
     return CoupledModel([_part(e, int(positions)) for e in exciters], frame, int(positions))
 

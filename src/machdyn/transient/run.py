@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError, MachdynError
+from ..vibration.modes import modes
 from . import fast
 from .model import CoupledModel
 
@@ -305,8 +306,6 @@ def run_scenario(model: CoupledModel, scenario: Scenario) -> Transient:
         rhs = rhs_prescribed
     fastest = reference
     if frame is not None:
-        from ..vibration.modes import modes
-
         fastest = max(fastest, float(np.max(modes(frame).angular_frequencies)))
     step = 2.0 * math.pi / fastest / max(int(scenario.samples_per_period), 4)
     samples = int(min(max(scenario.duration / step, 200), 400_000))
