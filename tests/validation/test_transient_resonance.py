@@ -16,6 +16,13 @@ Sources
   below the resonance at that stationary speed; a strong one passes it. Checked by the speed of the stationary
   motion and by the energy balance of the run.
 
+* I. I. Blekhman, *Synchronization in Science and Technology*, ASME Press 1988 (the self-synchronisation of
+  unbalanced vibration exciters): two identical exciters turning in opposite directions on a body on soft
+  springs (above its resonances) synchronise by themselves into the phase that leaves the body without rocking,
+  its vibration rectilinear, perpendicular to the line joining the shafts (the principle of two-exciter
+  screens and feeders). Checked by the phase the run settles in, the direction of the vibration, and its
+  amplitude 2 m e / M (1 - w_n^2 / Omega^2)^-1.
+
 The maximum-amplitude estimates of R. Markert & M. Seidler (Int. J. Solids Struct. 38 (2001) 1975-1992) are
 not used: the closed forms above are exact for the model they solve, and are what the tests check against.
 """
@@ -29,6 +36,7 @@ from machdyn.dynamics import TorqueSpeedTable
 from machdyn.transient import Exciter, Scenario, coupled_model, run_scenario
 from machdyn.transient.closed_forms import passage_envelope, undamped_passage_peak, vibration_torque
 from machdyn.transient.passage import capture
+from machdyn.vibration.frame import Frame, Mount
 from transient.machines import rotor, sprung_block
 
 
@@ -140,4 +148,30 @@ def test_a_stronger_motor_passes_the_resonance():
     assert x[last].max() < 0.3 * x.max()  # 0.21 here
     # and the base's damper now takes a small share of the motor's power
     assert np.gradient(run.works[2], run.t)[last].mean() < 0.1 * np.gradient(run.works[0], run.t)[last].mean()
+    assert run.energy_error < 1e-6
+
+
+def test_blekhman_two_counter_rotating_exciters_synchronise_into_rectilinear_vibration():
+    k, c = 1e4, 100.0
+    body = Frame(50.0, 5.0, (Mount("v1", (0.4, 0.0), np.pi / 2, k, c), Mount("v2", (-0.4, 0.0), np.pi / 2, k, c),
+                             Mount("h", (0.0, 0.0), 0.0, k, c)))  # modes 14-20 rad/s, the exciters at 110 rad/s
+    motor = TorqueSpeedTable((0.0, 110.0), (10.0, 0.0))
+    exciters = [Exciter(rotor(0.5, 0.1, inertia=0.01, name="a"), motor, origin=(0.3, 0.0), name="a"),
+                Exciter(rotor(0.5, 0.1, inertia=0.01, name="b"), motor, origin=(-0.3, 0.0), mirror=True, name="b")]
+    model = coupled_model(exciters, body)
+    # started 115 degrees apart: the body's motion pulls them together
+    run = run_scenario(model, Scenario(duration=2.0, speed=100.0, angle=(0.0, 2.0), method="DOP853"))
+    # the second exciter is mirrored: equal own angles put the unbalances symmetric about the y axis, their
+    # horizontal forces cancelling and their vertical forces adding
+    difference = np.degrees(np.angle(np.exp(1j * (run.phi[0] - run.phi[1]))))
+    assert abs(difference[0]) > 100
+    assert np.max(np.abs(difference[run.t > 1.5])) < 2.0
+    last = run.t >= run.t[-1] - 0.2
+    vertical, horizontal = np.ptp(run.q[1][last]), np.ptp(run.q[0][last])
+    speed = run.omega[0, -1]
+    mass = 51.0
+    bounce = 2 * k / mass
+    expected = 2 * (2 * 0.05 / mass) / (1 - bounce / speed**2)  # peak to peak of the rectilinear vibration
+    assert vertical == pytest.approx(expected, rel=0.05)  # the rest: free vibration from the start, decaying
+    assert horizontal < 0.3 * vertical
     assert run.energy_error < 1e-6
