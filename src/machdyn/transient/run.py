@@ -4,7 +4,7 @@ the supply frequency, a load step, or a prescribed crank speed (constant, or at 
 The state (cranks' angles and speeds, the frame's coordinates and rates, and the works of the drives, the loads,
 the mounts' dampers and the brake) is integrated with :func:`scipy.integrate.solve_ivp`; the scenario's events at
 given times (motor switched off, brake applied, load step, new supply frequency) split the integration, and a
-crank coming to rest or rolling back under its drive ends it. Every run is bounded by a budget of evaluations of
+crank coming to rest (below 0.1 % of the largest speed, the motors off) or rolling back under its drive ends it. Every run is bounded by a budget of evaluations of
 the equations and of wall-clock time, and refused with a message before it starts when its drive cannot turn
 the crank from rest.
 """
@@ -318,8 +318,9 @@ def run_scenario(model: CoupledModel, scenario: Scenario) -> Transient:
     y = y0
     drive_list = list(drives)
 
-    def stopped(t, y):  # a crank come to rest (after the motors are off) or rolling back (under its drive)
-        return float(np.min(y[n:2 * n])) + (0.0 if not state["on"] else 1e-3 * reference)
+    def stopped(t, y):  # a crank come to rest (below 0.1 % of the reference speed, the motors off) or rolling back
+        # (under its drive)
+        return float(np.min(y[n:2 * n])) + (-1e-3 * reference if not state["on"] else 1e-3 * reference)
 
     stopped.terminal = True  # type: ignore[attr-defined]
     stopped.direction = -1  # type: ignore[attr-defined]
@@ -333,7 +334,7 @@ def run_scenario(model: CoupledModel, scenario: Scenario) -> Transient:
             t_eval = np.concatenate([[start], t_eval])
         if t_eval[-1] < end:
             t_eval = np.concatenate([t_eval, [end]])
-        events = [stopped] if prescribed is None and (state["on"] or np.any(y[n:2 * n] > 0)) else None
+        events = [stopped] if prescribed is None and (state["on"] or np.any(y[n:2 * n] > 1e-3 * reference)) else None
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", UserWarning)
             sol = solve_ivp(rhs, (start, end), y, method=method, rtol=scenario.rtol,
