@@ -33,9 +33,10 @@ def test_the_screen_starts_passes_each_mode_up_and_down_and_stops(screen):
     assert values["transient.stop_time"]["value"] < 20.0  # the brake stopped it
     assert values["transient.captured"]["value"] == 0.0
     assert values["transient.energy_error"]["value"] < 1e-6
-    # the braked stop is slower through the modes than the start: more time in each band, larger amplitudes
+    # the braked stop is slower through the modes than the start: more time in their bands
     assert sum(p.time_in_band for p in downs) > sum(p.time_in_band for p in ups)
-    assert max(p.peak_amplitude for p in downs) > max(p.peak_amplitude for p in ups)
+    # the passages magnify the frame's motion above its steady running at the speed above all modes
+    assert values["transient.passage_peak_amplitude"]["value"] > 2 * values["transient.steady_amplitude"]["value"]
     assert not screen.failed_checks
 
 

@@ -67,17 +67,24 @@ def plot_mount_forces(result: Any, ax: Axes) -> Axes:
 
 
 def plot_amplitude_speed(result: Any, ax: Axes) -> Axes:
-    """Amplitude against crank speed (one point per turn), the run-up and run-down in time order, with the
-    frame's natural frequencies marked."""
+    """Amplitude against crank speed (one point per turn), the run-up and the run-down, with the frame's natural
+    frequencies marked and each passage's peak."""
     c = result.curve
-    ax.plot(c.speed * RPM, c.amplitude * 1e3, color=PALETTE[0], lw=0.9, marker=".", ms=2)
+    if c.speed.size:
+        top = int(np.argmax(c.speed))  # up to the highest speed: the run-up; after it: the run-down
+        ax.plot(c.speed[:top + 1] * RPM, c.amplitude[:top + 1] * 1e3, color=PALETTE[0], lw=0.9, marker=".", ms=2,
+                label="run-up")
+        if top + 1 < c.speed.size:
+            ax.plot(c.speed[top:] * RPM, c.amplitude[top:] * 1e3, color=PALETTE[2], lw=0.9, marker=".", ms=2,
+                    label="run-down")
+        ax.legend(fontsize=7)
     if result.modes is not None:
         for j, wn in enumerate(result.modes.angular_frequencies, start=1):
             ax.axvline(wn * RPM, color="#999999", lw=0.7, ls="--")
             ax.annotate(f"mode {j}", (wn * RPM, ax.get_ylim()[1]), fontsize=7, rotation=90, va="top", ha="right",
                         color="#666666")
     for p in result.passages:
-        ax.plot([p.speed_at_peak * RPM], [p.peak_amplitude * 1e3], "o", color=PALETTE[1], ms=4)
+        ax.plot([p.frequency * RPM], [p.peak_amplitude * 1e3], "o", color=PALETTE[1], ms=4)
     ax.set_xlabel("crank speed [rpm]")
     ax.set_ylabel(f"largest displacement at {result.point_name} per turn [mm]")
     ax.set_title("Amplitude against speed")

@@ -34,8 +34,10 @@ class Passage:
 
     mode : 1-based number of the mode; frequency [rad/s]; direction "up" or "down"; time [s] the speed crosses
     the frequency; peak_amplitude [m] and peak_mount_force [N] while the speed is within twice the band of the
-    frequency; time_in_band [s] while it is within the band (a relative ``band`` of the frequency); speed_at_peak
-    [rad/s]; completed False if the run ended inside the band (still in resonance at its end).
+    frequency, and at least 1.5 sqrt(pi / alpha) after the crossing (alpha the rate of the speed there: a fast
+    passage peaks after the speed has left the band); time_in_band [s] while it is within the band (a relative
+    ``band`` of the frequency); speed_at_peak [rad/s]; completed False if the run ended inside the band (still in
+    resonance at its end).
     """
 
     mode: int
@@ -103,6 +105,12 @@ def passages(run: Transient, frequencies, point=(0.0, 0.0), direction: float | N
                 lo -= 1
             while hi < t.size - 1 and wide[hi + 1]:
                 hi += 1
+            # a fast passage peaks after the speed has left the band: undamped, 1.217 sqrt(pi / alpha) after the
+            # crossing at the sweep rate alpha (Lewis 1932, the Cornu spiral's farthest point); look that far
+            rate = abs(w[c + 1] - w[c]) / max(t[c + 1] - t[c], 1e-300)
+            if rate > 0:
+                reach = t[c] + 1.5 * math.sqrt(math.pi / rate)
+                hi = max(hi, min(int(np.searchsorted(t, reach)), t.size - 1))
             used[lo:hi + 1] = True
             inside = slice(lo, hi + 1)
             k = lo + int(np.argmax(amp[inside]))

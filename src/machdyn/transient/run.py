@@ -4,9 +4,9 @@ the supply frequency, a load step, or a prescribed crank speed (constant, or at 
 The state (cranks' angles and speeds, the frame's coordinates and rates, and the works of the drives, the loads,
 the mounts' dampers and the brake) is integrated with :func:`scipy.integrate.solve_ivp`; the scenario's events at
 given times (motor switched off, brake applied, load step, new supply frequency) split the integration, and a
-crank coming to rest (below 0.1 % of the largest speed, the motors off) or rolling back under its drive ends it. Every run is bounded by a budget of evaluations of
-the equations and of wall-clock time, and refused with a message before it starts when its drive cannot turn
-the crank from rest.
+crank coming to rest (below 0.1 % of the largest speed, the motors off) or rolling back under its drive ends it.
+Every run is bounded by a budget of evaluations of the equations and of wall-clock time, and refused with a
+message before it starts when its drive cannot turn the crank from rest.
 """
 
 from __future__ import annotations

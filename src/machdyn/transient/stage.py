@@ -89,7 +89,8 @@ LABELS = {
                                               "mm"),
     "transient.passage_peak_mount_force": Label("Transient: largest mount force in a resonance passage", "N"),
     "transient.passage_time": Label("Transient: time spent within the band of the frame's modes", "s"),
-    "transient.steady_amplitude": Label("Transient: displacement at the point over the last turn", "m", "mm"),
+    "transient.steady_amplitude": Label("Transient: displacement at the point over the last turn under the motor",
+                                        "m", "mm"),
     "transient.time_to_speed": Label("Transient: time to 95 % of the speed the drive holds on a rigid frame", "s"),
     "transient.stop_time": Label("Transient: time at which the crank comes to rest", "s"),
     "transient.motor_work": Label("Transient: work of the drive", "J"),
@@ -221,7 +222,11 @@ def _outcome(r: TransientRun) -> Outcome:
     if math.isfinite(r.free_speed):
         values["transient.free_speed"] = r.free_speed
     if run.q.shape[0]:
-        last = np.abs(run.phi[0] - run.phi[0, -1]) <= 2.0 * math.pi
+        # the last turn under the motor: before the switch-off, or at the end of the run
+        end = run.t.size - 1 if run.scenario.switch_off is None else int(np.searchsorted(run.t,
+                                                                                          run.scenario.switch_off))
+        end = min(end, run.t.size - 1)
+        last = (np.abs(run.phi[0] - run.phi[0, end]) <= 2.0 * math.pi) & (run.t <= run.t[end])
         values |= {"transient.peak_amplitude": float(amp.max()),
                    "transient.peak_mount_force": float(np.abs(run.mount_force).max()),
                    "transient.steady_amplitude": float(amp[last].max())}
