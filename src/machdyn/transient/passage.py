@@ -100,7 +100,7 @@ def passages(run: Transient, frequencies, point=(0.0, 0.0), direction: float | N
         for c in crossings:
             if used[c]:
                 continue
-            lo, hi = c, c + 1
+            lo, hi = int(c), int(c) + 1
             while lo > 0 and wide[lo - 1]:
                 lo -= 1
             while hi < t.size - 1 and wide[hi + 1]:
