@@ -118,7 +118,8 @@ def passages(run: Transient, frequencies, point=(0.0, 0.0), direction: float | N
             dt = np.diff(t[inside])
             spent = float(np.sum(dt * (in_band[1:] & in_band[:-1])))
             found.append(Passage(j, wn, "up" if w[c + 1] > w[c] else "down", float(t[c]), float(amp[k]),
-                                 float(force[inside].max()), spent, float(w[k]), bool(hi < t.size - 1)))
+                                 float(force[inside].max()), spent, float(w[k]),
+                                 bool(hi < t.size - 1 or not wide[-1])))
     return sorted(found, key=lambda p: p.time)
 
 
