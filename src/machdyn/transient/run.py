@@ -160,7 +160,13 @@ def _torque_function(drive) -> Callable[[float], float] | None:
 
 
 def _shifted(drive, factor: float):
-    """The drive with its supply frequency (induction motor) or its flow (hydraulic motor) times ``factor``."""
+    """The drive with its supply frequency (induction motor) or its flow (hydraulic motor) times ``factor``.
+
+    Under constant volts per hertz an induction motor's torque-speed curve moves along the speed axis with the
+    synchronous speed, its breakdown torque and the slip speed at a given torque unchanged (B. K. Bose, *Modern
+    Power Electronics and AC Drives*, Prentice Hall 2002, the chapter on the control of induction motor drives);
+    valid above a few hertz, where the stator resistance is negligible. A hydraulic motor's no-load speed is its
+    flow over its displacement."""
     if drive is None or factor == 1.0:
         return drive
     name = getattr(drive, "name", "")
