@@ -75,3 +75,17 @@ def test_a_load_step_slows_the_crank_and_its_work_is_counted():
     turned = after.phi[0, -1] - np.interp(1.0, after.t, after.phi[0])
     assert -after.works[1, -1] == pytest.approx(8.0 * turned, rel=1e-3)
     assert after.energy_error < 1e-6
+
+
+def test_the_two_exciter_screen_synchronises_from_its_problem_file():
+    """examples/two_exciter_screen.toml: two counter-rotating exciters ([transient.twin], mirrored) started 120
+    degrees apart fall into step and shake the box in a straight line, vertically (Blekhman's result; the
+    validation with the amplitude is in tests/validation/test_transient_resonance.py)."""
+    result = run_problem(EXAMPLE.with_name("two_exciter_screen.toml"))
+    values = result.results_json()["scalars"]
+    assert abs(values["transient.phase_difference"]["value"]) < 2.0  # [deg]
+    run = result.outcomes["transient"].results.run
+    last = run.t >= run.t[-1] - 0.3
+    assert np.ptp(run.q[0][last]) < 0.1 * np.ptp(run.q[1][last])  # hardly any horizontal motion
+    assert np.ptp(run.q[2][last]) * 0.8 < 0.1 * np.ptp(run.q[1][last])  # nor rocking (at the mounts, 0.8 m out)
+    assert not result.failed_checks

@@ -6,7 +6,7 @@ over time, every passage through a mode of the frame, capture, and the energy ba
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Literal
 
 import numpy as np
@@ -17,7 +17,7 @@ from ..dynamics.simulate import balance_speed
 from ..dynamics.stage import FlywheelRun
 from ..errors import InputError, ProblemFileError
 from ..pipeline import Capability, Outcome, StageContext
-from ..problem.fields import Angle, AngularAcceleration, AngularVelocity, Time, Torque
+from ..problem.fields import Angle, AngularAcceleration, AngularVelocity, Point, Time, Torque
 from ..problem.schema import Name, Spec
 from ..results.labels import Label
 from ..vibration.modes import Modes, modes
@@ -26,10 +26,21 @@ from .model import Exciter, carried_frame, coupled_model
 from .passage import AmplitudeCurve, Passage, amplitude_curve, capture, passages
 from .run import Scenario, Transient, TransientLimitError, run_scenario
 
-__all__ = ["CAPABILITY", "TransientRun", "TransientTable", "check_transient", "run_transient", "scenario_of"]
+__all__ = ["CAPABILITY", "TransientRun", "TransientTable", "TwinSpec", "check_transient", "run_transient",
+           "scenario_of"]
 
 #: The relative tolerance of the energy balance a run must close to (its own check).
 ENERGY_TOLERANCE = 1e-6
+
+
+class TwinSpec(Spec):
+    """``[transient.twin]``: a second exciter, the same mechanism with the same drive and flywheel, on the frame at
+    ``origin`` (frame coordinates), turning the other way with ``mirror`` (counter-rotating exciters), started
+    at ``start_angle``."""
+
+    origin: Point
+    mirror: bool = Field(True, strict=True)
+    start_angle: Angle = 0.0
 
 
 class TransientTable(Spec):
@@ -59,6 +70,7 @@ class TransientTable(Spec):
     samples_per_period: int = Field(24, ge=4, le=1000, strict=True)
     max_evaluations: int = Field(400_000, ge=1000, le=100_000_000, strict=True)
     max_seconds: Time = 120.0
+    twin: TwinSpec | None = None
 
     @model_validator(mode="after")
     def _consistent(self):
@@ -100,9 +112,12 @@ LABELS = {
     "transient.energy_change": Label("Transient: change of kinetic plus potential energy", "J"),
     "transient.energy_error": Label("Transient: energy balance error (relative)", ""),
     "transient.evaluations": Label("Transient: evaluations of the equations of motion", ""),
+    "transient.phase_difference": Label("Transient: phase of the crank less the twin's over the last turn "
+                                        "(synchronised exciters)", "rad", "deg"),
 }
 
-SUMMARY = ("transient.final_speed", "transient.captured", "transient.peak_amplitude", "transient.peak_mount_force",
+SUMMARY = ("transient.final_speed", "transient.captured", "transient.phase_difference", "transient.peak_amplitude",
+           "transient.peak_mount_force",
            "transient.passage_peak_amplitude", "transient.passage_time", "transient.time_to_speed",
            "transient.stop_time", "transient.energy_error")
 
@@ -164,11 +179,17 @@ def run_transient(ctx: StageContext) -> Outcome:
                                       "so the machine cannot be run in time",))
     frame, point, point_name, direction, origin, angle = _frame_and_point(ctx, table)
     drive = None if fly is None else fly.drive
-    exciter = Exciter(ctx.mechanism, drive, 0.0 if fly is None else float(fly.flywheel), origin, angle,
-                      name="crank", machine=None if fly is None else fly.machine)
-    model = coupled_model([exciter], frame, positions=table.positions)
+    flywheel = 0.0 if fly is None else float(fly.flywheel)
+    machine = None if fly is None else fly.machine
+    exciters = [Exciter(ctx.mechanism, drive, flywheel, origin, angle, name="crank", machine=machine)]
+    scenario = scenario_of(table)
+    if table.twin is not None:
+        exciters.append(Exciter(ctx.mechanism, drive, flywheel, tuple(table.twin.origin), angle, table.twin.mirror,
+                                name="twin", machine=machine))
+        scenario = replace(scenario, angle=(table.start_angle, table.twin.start_angle))
+    model = coupled_model(exciters, frame, positions=table.positions)
     try:
-        run = run_scenario(model, scenario_of(table))
+        run = run_scenario(model, scenario)
     except TransientLimitError as exc:
         # stopped at its budget, saying how far it came: the other results stand, this one failed (a file that
         # check accepts runs to 0 or 3; a run that would plainly take too long is refused by check already)
@@ -223,6 +244,9 @@ def _outcome(r: TransientRun) -> Outcome:
     }
     if math.isfinite(r.free_speed):
         values["transient.free_speed"] = r.free_speed
+    if run.phi.shape[0] > 1:
+        turn = np.abs(run.phi[0] - run.phi[0, -1]) <= 2.0 * math.pi
+        values["transient.phase_difference"] = float(np.angle(np.mean(np.exp(1j * (run.phi[0] - run.phi[1])[turn]))))
     if run.q.shape[0]:
         # the last turn under the motor: before the switch-off, or at the end of the run
         end = run.t.size - 1 if run.scenario.switch_off is None else int(np.searchsorted(run.t,
