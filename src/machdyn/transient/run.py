@@ -310,6 +310,8 @@ def run_scenario(model: CoupledModel, scenario: Scenario) -> Transient:
     else:
         y0 = np.zeros(2 * nq + 4)
         rhs = rhs_prescribed
+        if fast.usable(model):
+            rhs = rhs_prescribed = fast.prescribed_right_hand_side(model, profile, state, check_budget, brake_width)
     fastest = reference
     if frame is not None:
         fastest = max(fastest, float(np.max(modes(frame).angular_frequencies)))
