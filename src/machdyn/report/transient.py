@@ -71,10 +71,13 @@ def plot_amplitude_speed(result: Any, ax: Axes) -> Axes:
     frequencies marked and each passage's peak."""
     c = result.curve
     if c.speed.size:
-        top = int(np.argmax(c.speed))  # up to the highest speed: the run-up; after it: the run-down
+        top = int(np.argmax(c.speed))  # up to the highest speed: the run-up; after it, if it slows: the run-down
+        slows = bool(np.min(c.speed[top:]) < 0.8 * c.speed[top])
+        if not slows:
+            top = c.speed.size - 1
         ax.plot(c.speed[:top + 1] * RPM, c.amplitude[:top + 1] * 1e3, color=PALETTE[0], lw=0.9, marker=".", ms=2,
                 label="run-up")
-        if top + 1 < c.speed.size:
+        if slows:
             ax.plot(c.speed[top:] * RPM, c.amplitude[top:] * 1e3, color=PALETTE[2], lw=0.9, marker=".", ms=2,
                     label="run-down")
         ax.legend(fontsize=7)
