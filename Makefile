@@ -32,6 +32,7 @@ bench: $(BENCH_STAMP)
 	$(BIN)/python bench/explore.py throughput
 	$(BIN)/python bench/optimise.py
 	$(BIN)/python bench/synthesis.py
+	$(BIN)/python bench/transient.py
 	$(BIN)/python bench/cli.py
 	$(BIN)/python bench/cams.py
 	$(BIN)/python bench/walk.py

@@ -40,6 +40,7 @@ CAPABILITIES: dict[str, str] = {
     "parts": "machdyn.drivetrain.parts_stage:CAPABILITY",
     "field_records": "machdyn.shafts.record_stage:CAPABILITY",
     "shaft_cam": "machdyn.cams.shaft:CAPABILITY",
+    "transient": "machdyn.transient.stage:CAPABILITY",
 }
 
 

@@ -177,7 +177,7 @@ LAZY_LIBRARIES = frozenset({
     "numba", "dask", "distributed", "distributed.comm", "distributed.comm.core", "distributed.scheduler",
     "pymoo.algorithms.moo.nsga2", "pymoo.core.callback", "pymoo.core.problem", "pymoo.indicators.hv",
     "pymoo.optimize", "scipy.integrate", "scipy.interpolate", "scipy.linalg", "scipy.optimize", "scipy.signal",
-    "scipy.stats", "matplotlib.figure", "matplotlib.pyplot", "matplotlib.ticker", "pandas", "pyarrow",
+    "scipy.special", "scipy.stats", "matplotlib.figure", "matplotlib.pyplot", "matplotlib.ticker", "pandas", "pyarrow",
     "pyarrow.parquet",
 })
 #: machdyn's own modules that load one of those libraries when imported: the report (matplotlib, pandas),

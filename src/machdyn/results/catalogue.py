@@ -223,6 +223,8 @@ RUN_TIME: tuple[Quantity, ...] = (
              producer="shaft_line"),
     Quantity("shaft.locomotive.<side>.<figure>", "Shaft line: locomotive, {side}, {figure}",
              producer="shaft_line"),
+    Quantity("transient.passage_<index>.<figure>", "Transient: resonance passage {index}, {figure}",
+             producer="transient"),
     Quantity("check_<name*>_utilisation", "Check {name}, utilisation", producer="screw_conveyor"),
 )
 
