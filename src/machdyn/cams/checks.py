@@ -38,6 +38,23 @@ from .followers import Follower
 from .profile import Profile, profile
 from .program import Program
 
+#: Rim speed [m/s] above which a steel cam disc on its shaft bursts: the hoop stress at the bore of a rotating
+#: disc with a small bore, (3 + nu)/4 rho v^2 (Budynas & Nisbett, *Shigley's Mechanical Engineering Design*, 8th
+#: ed., §3-15, rotating rings, eq 3-55 with r_i -> 0; Timoshenko & Goodier, *Theory of Elasticity*, §32), reaches
+#: 2 GPa, the strength of the strongest through-hardened cam steels, with rho = 7850 kg/m^3 and nu = 0.3.
+BURST_RIM_SPEED = float(np.sqrt(4.0 * 2.0e9 / ((3.0 + 0.3) * 7850.0)))
+
+
+def rim_speed_failure(outer_radius: float, speed: float) -> str | None:
+    """The failed check of a cam whose rim, ``outer_radius`` [m] at ``speed`` [rad/s], runs faster than
+    :data:`BURST_RIM_SPEED` (a speed or a size no steel cam survives), else None."""
+    rim = outer_radius * speed
+    if rim <= BURST_RIM_SPEED:
+        return None
+    return (f"the cam's rim runs at {rim:.4g} m/s (outer radius {outer_radius * 1e3:.4g} mm at "
+            f"{speed * 30 / np.pi:.4g} rpm): a steel cam on its shaft bursts above about {BURST_RIM_SPEED:.0f} m/s "
+            "(hoop stress (3 + nu)/4 rho v^2 at the bore reaching 2 GPa); the speed or the size is not physical")
+
 
 def default_pressure_limit(follower: Follower) -> float:
     """The default pressure-angle limit [rad]: 30 deg translating, 35 deg oscillating (see the module)."""

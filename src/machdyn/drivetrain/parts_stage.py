@@ -46,6 +46,7 @@ from ..problem.fields import Area, Force, PositiveLength, Pressure, PressureVelo
 from ..problem.schema import Spec
 from ..results.labels import Label
 from .parts import BearingSpec, LinkSpec, PartsResult, PinSpec, size_parts
+from .strength import strength_problem
 
 
 class BearingTable(Spec):
@@ -84,6 +85,13 @@ class LinkTable(Spec):
     endurance_limit: Stress
     ultimate_strength: Stress
     min_safety: float = Field(1.5, gt=0.0, allow_inf_nan=False)
+
+    @model_validator(mode="after")
+    def _plausible(self):
+        problem = strength_problem(self.endurance_limit, self.ultimate_strength)
+        if problem:
+            raise ValueError(problem)
+        return self
 
 
 class PartsSpec(Spec):
