@@ -29,6 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .followers import Follower, follower_path
+from .laws import law
 from .program import Program
 
 #: Samples per smooth piece of a segment before the bounded search refines the best.
@@ -74,8 +75,6 @@ def _pieces(prog: Program) -> list[tuple[int, float, float]]:
 
 def _motion(prog: Program, k: int, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Cam angle [rad], s, v = ds/dtheta, a of segment k at x in its interval, from the law's closed form."""
-    from .laws import law
-
     seg, t0, level = prog.segments[k], prog.starts[k], prog.levels[k]
     theta = t0 + seg.duration * x
     if seg.motion == "dwell":

@@ -33,6 +33,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
+from ..units import ureg
 from .field import Reading
 
 __all__ = ["RunRecord", "read_run", "pulses", "one_x"]
@@ -89,8 +90,6 @@ def check_reference(reference: np.ndarray, name: str, unit: str, sensors: tuple[
 
 def _is_vibration_unit(unit: str) -> bool:
     """Whether ``unit`` measures a displacement, a velocity or an acceleration."""
-    from ..units import ureg
-
     try:
         dim = ureg.Quantity(1.0, unit).dimensionality
     except Exception:  # noqa: BLE001 - an unknown unit (e.g. "TTL") is no vibration unit
