@@ -34,7 +34,7 @@ import numpy as np
 
 from ..errors import InputError
 from .exact import extremes, segment_angles
-from .followers import Follower
+from .followers import MAX_CAM_SIZE, Follower
 from .profile import Profile, profile
 from .program import Program
 
@@ -150,8 +150,8 @@ def min_base_radius_curvature(prog: Program, follower: Follower, theta, factor: 
     while not ok(hi):
         hi *= 2.0
         grow += 1
-        if grow > 40 or (follower.motion == "oscillating"):
-            return float("nan")
+        if grow > 40 or (follower.motion == "oscillating") or hi + follower.roller_radius > MAX_CAM_SIZE:
+            return float("nan")  # none within the plausible sizes of a cam
     if ok(lo):
         return float(lo)
     for _ in range(60):
