@@ -226,10 +226,11 @@ def test_pressure_angle_formula_holds_for_any_radial_cam(rise, lift, rb, law):
 
 
 def test_a_population_analysed_at_once_matches_each_design_analysed_alone():
+    from machdyn.cams.exact import segment_angles
     from machdyn.cams.population import analyse_population
 
     prog = _feeder()
-    th = cam_angles(360)
+    th = segment_angles(prog)  # the angles the checks' base-circle searches use: every segment sampled alike
     rng = np.random.default_rng(3)
     n = 12
     rb, rr, e, k = rng.uniform(0.03, 0.08, n), rng.uniform(0.005, 0.015, n), rng.uniform(-0.01, 0.01, n), \
@@ -242,8 +243,12 @@ def test_a_population_analysed_at_once_matches_each_design_analysed_alone():
         alone = profile(scaled, f, th)
         np.testing.assert_allclose(pop.pressure_angle[i], alone.pressure_angle, atol=1e-12)
         chk = check_cam(alone, scaled)
-        assert pop.max_pressure_angle[i] == pytest.approx(chk.max_pressure_angle, abs=1e-12)
-        assert pop.min_pitch_curvature_radius[i] == pytest.approx(chk.min_pitch_radius, rel=1e-10)
+        # the checks' extremes are exact (a search between samples); the population's are the samples' own, at
+        # most the exact ones and within the change of the angle over a step of 1/64 of a segment's piece
+        assert pop.max_pressure_angle[i] <= chk.max_pressure_angle + 1e-12
+        assert pop.max_pressure_angle[i] == pytest.approx(chk.max_pressure_angle, abs=1e-3)  # steps <= 1.9 deg
+        assert pop.min_pitch_curvature_radius[i] >= chk.min_pitch_radius * (1 - 1e-12)
+        assert pop.min_pitch_curvature_radius[i] == pytest.approx(chk.min_pitch_radius, rel=1e-3)
         assert pop.min_base_radius_pressure[i] == pytest.approx(chk.min_base_radius_pressure, rel=1e-10)
     one_varying = analyse_population(prog, th, np.linspace(0.03, 0.08, 5), 0.01)
     assert one_varying.min_base_radius_pressure.shape == (5,)

@@ -88,7 +88,7 @@ def test_a_singular_influence_matrix_is_named(runner, tmp_path):
     bad.write_text(text)
     check, run, output = _both(runner, bad, tmp_path)
     assert check == run == 2, output
-    assert "influence matrix is singular" in output
+    assert "influence matrix is nearly singular" in output
     o = [Reading(1.0, 0.0), Reading(1.0, 1.0)]
     same = TrialRun(0, 0.01, 0.0, (Reading(2.0, 0.0), Reading(2.0, 1.0)))
     alike = TrialRun(1, 0.01, 0.0, (Reading(2.0, 0.0), Reading(2.0, 1.0)))  # acts exactly like the first

@@ -18,6 +18,12 @@ The smallest base circle meeting a pressure-angle limit is found directly for a 
 tan phi = (v - e)/(d + s) <= tan phi_max at every angle needs d >= max(|v - e|/tan phi_max - s), and
 R_b = sqrt(d^2 + e^2) - r_r (from Norton eq 8.31). For a flat face, rho >= rho_min needs
 R_b >= max(rho_min - s - a) (from Uicker eq 6.28). An oscillating follower's limit is met by bisection on R_b.
+
+Every check is judged on the exact extremes of each segment (:mod:`machdyn.cams.exact`), never on the sampled
+profile alone: the cam's ``positions`` set the drawing, the CSV and the DXF, not what passes. The smallest base
+circles are found over angles that sample every segment's own interval (:func:`~machdyn.cams.exact.segment_angles`).
+A segment shorter than the spacing of the drawn profile is named in a warning: the drawn profile and the DXF
+step over it.
 """
 
 from __future__ import annotations
@@ -27,9 +33,27 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..errors import InputError
-from .followers import Follower
+from .exact import extremes, segment_angles
+from .followers import MAX_CAM_SIZE, Follower
 from .profile import Profile, profile
 from .program import Program
+
+#: Rim speed [m/s] above which a steel cam disc on its shaft bursts: the hoop stress at the bore of a rotating
+#: disc with a small bore, (3 + nu)/4 rho v^2 (Budynas & Nisbett, *Shigley's Mechanical Engineering Design*, 8th
+#: ed., §3-15, rotating rings, eq 3-55 with r_i -> 0; Timoshenko & Goodier, *Theory of Elasticity*, §32), reaches
+#: 2 GPa, the strength of the strongest through-hardened cam steels, with rho = 7850 kg/m^3 and nu = 0.3.
+BURST_RIM_SPEED = float(np.sqrt(4.0 * 2.0e9 / ((3.0 + 0.3) * 7850.0)))
+
+
+def rim_speed_failure(outer_radius: float, speed: float) -> str | None:
+    """The failed check of a cam whose rim, ``outer_radius`` [m] at ``speed`` [rad/s], runs faster than
+    :data:`BURST_RIM_SPEED` (a speed or a size no steel cam survives), else None."""
+    rim = outer_radius * speed
+    if rim <= BURST_RIM_SPEED:
+        return None
+    return (f"the cam's rim runs at {rim:.4g} m/s (outer radius {outer_radius * 1e3:.4g} mm at "
+            f"{speed * 30 / np.pi:.4g} rpm): a steel cam on its shaft bursts above about {BURST_RIM_SPEED:.0f} m/s "
+            "(hoop stress (3 + nu)/4 rho v^2 at the bore reaching 2 GPa); the speed or the size is not physical")
 
 
 def default_pressure_limit(follower: Follower) -> float:
@@ -56,14 +80,6 @@ class CamChecks:
     min_base_radius_curvature: float
     failed: tuple[str, ...]
     warnings: tuple[str, ...]
-
-
-def _convex_min(rho: np.ndarray, theta: np.ndarray) -> tuple[float, float]:
-    convex = rho > 0
-    if not np.any(convex):
-        return float("inf"), 0.0
-    i = int(np.argmin(np.where(convex, rho, np.inf)))
-    return float(rho[i]), float(theta[i])
 
 
 def min_base_radius_pressure(prog: Program, follower: Follower, limit: float, theta) -> float:
@@ -134,8 +150,8 @@ def min_base_radius_curvature(prog: Program, follower: Follower, theta, factor: 
     while not ok(hi):
         hi *= 2.0
         grow += 1
-        if grow > 40 or (follower.motion == "oscillating"):
-            return float("nan")
+        if grow > 40 or (follower.motion == "oscillating") or hi + follower.roller_radius > MAX_CAM_SIZE:
+            return float("nan")  # none within the plausible sizes of a cam
     if ok(lo):
         return float(lo)
     for _ in range(60):
@@ -158,23 +174,20 @@ def check_cam(prof: Profile, prog: Program, *, pressure_limit: float | None = No
     limit = default_pressure_limit(f) if pressure_limit is None else float(pressure_limit)
     failed: list[str] = []
     warnings: list[str] = []
-    phi = np.abs(prof.pressure_angle)
-    i = int(np.argmax(phi))
-    if phi[i] > limit:
-        failed.append(f"pressure angle {np.degrees(phi[i]):.4g} deg at cam angle {np.degrees(th[i]):.4g} deg exceeds "
+    ext = extremes(prog, f)
+    phi, phi_at = ext.max_pressure_angle, ext.max_pressure_angle_at
+    if phi > limit:
+        failed.append(f"pressure angle {np.degrees(phi):.4g} deg at cam angle {np.degrees(phi_at):.4g} deg exceeds "
                       f"the limit {np.degrees(limit):.4g} deg (a larger base circle, a longer rise or an offset "
                       "lowers it)")
-    rho_p, at = _convex_min(prof.pitch_curvature_radius, th)
-    rho_s, _ = _convex_min(prof.surface_curvature_radius, th)
+    rho_p, at = ext.min_convex_radius, ext.max_convex_curvature_at
+    rho_s = rho_p - f.roller_radius if np.isfinite(rho_p) else rho_p
     if f.contact == "flat":
-        bad = prof.surface_curvature_radius <= 0
-        if np.any(bad):
-            k = int(np.argmax(bad))
-            failed.append(f"the cam has a cusp: its radius of curvature R_b + s + a is "
-                          f"{prof.surface_curvature_radius[k] * 1e3:.4g} mm at cam angle {np.degrees(th[k]):.4g} deg "
-                          "(increase the base circle)")
-            rho_s = float(np.min(prof.surface_curvature_radius))
-            at = float(th[k])
+        rho_p = rho_s = ext.min_flat_radius
+        at = ext.min_flat_radius_at
+        if rho_s <= 0:
+            failed.append(f"the cam has a cusp: its radius of curvature R_b + s + a is {rho_s * 1e3:.4g} mm at cam "
+                          f"angle {np.degrees(at):.4g} deg (increase the base circle)")
     elif f.contact == "roller":
         if rho_p <= f.roller_radius * curvature_factor:
             what = ("undercut: the roller" if rho_p <= f.roller_radius else
@@ -185,7 +198,13 @@ def check_cam(prof: Profile, prog: Program, *, pressure_limit: float | None = No
             warnings.append(f"the smallest convex radius of curvature of the pitch curve, {rho_p * 1e3:.4g} mm, is "
                             f"less than twice the roller radius {f.roller_radius * 1e3:.4g} mm (Norton recommends "
                             "2-3 x)")
-    lo, hi = float(np.min(prof.contact_offset)), float(np.max(prof.contact_offset))
+    spacing = 2.0 * np.pi / max(th.size, 1)
+    for k, seg in enumerate(prog.segments):
+        if seg.motion != "dwell" and seg.duration < 2.0 * spacing:
+            warnings.append(f"segment {k + 1} ({seg.motion} over {np.degrees(seg.duration):.4g} deg) is shorter than "
+                            f"two steps of the drawn profile ({np.degrees(spacing):.4g} deg): the profile, its CSV "
+                            "and DXF step over it (raise cam.positions); the checks judge it exactly")
+    lo, hi = ext.contact_min, ext.contact_max
     width = (hi - lo) + 2.0 * face_margin if f.contact == "flat" else 0.0
     if f.contact == "flat" and face_width is not None:
         half = face_width / 2.0
@@ -193,11 +212,12 @@ def check_cam(prof: Profile, prog: Program, *, pressure_limit: float | None = No
         if half < need:
             failed.append(f"the flat face, {face_width * 1e3:.4g} mm wide, is too narrow: the contact point runs "
                           f"{need * 1e3:.4g} mm from the follower's axis (face at least {2 * need * 1e3:.4g} mm)")
+    grid = segment_angles(prog)
     return CamChecks(
-        max_pressure_angle=float(phi[i]), max_pressure_angle_at=float(th[i]), pressure_angle_limit=limit,
+        max_pressure_angle=float(phi), max_pressure_angle_at=float(phi_at), pressure_angle_limit=limit,
         min_pitch_radius=rho_p, min_surface_radius=rho_s, min_radius_at=at, face_min=lo, face_max=hi,
         face_width=width,
-        min_base_radius_pressure=min_base_radius_pressure(prog, f, limit, th),
-        min_base_radius_curvature=min_base_radius_curvature(prog, f, th, curvature_factor),
+        min_base_radius_pressure=min_base_radius_pressure(prog, f, limit, grid),
+        min_base_radius_curvature=min_base_radius_curvature(prog, f, grid, curvature_factor),
         failed=tuple(failed), warnings=tuple(warnings),
     )

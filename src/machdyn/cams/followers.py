@@ -26,6 +26,9 @@ import numpy as np
 from ..errors import InputError
 
 TYPES = ("translating", "oscillating")
+#: Largest length of a cam and its follower accepted [m]: a plausibility bound ten times the largest plate cams
+#: built (about 1 m in radius), which catches a unit mistake ("45 m" for "45 mm") before it gives results.
+MAX_CAM_SIZE = 10.0
 CONTACTS = ("knife", "roller", "flat")
 
 
@@ -81,6 +84,11 @@ def check_follower(f: Follower, field: str = "cam.follower") -> None:
     for name in ("base_radius", "roller_radius", "offset", "pivot_distance", "arm_length"):
         if not np.isfinite(getattr(f, name)):
             raise InputError(f"{field}.{name} must be a finite length; got {getattr(f, name)}.")
+        if abs(getattr(f, name)) > MAX_CAM_SIZE:
+            where = "cam.base_radius" if name == "base_radius" else f"{field}.{name}"
+            raise InputError(f"{where} is {getattr(f, name):.4g} m, more than {MAX_CAM_SIZE:g} m: no plate cam is "
+                             "that large (the largest cams of presses, looms and machine tools are about 1 m in "
+                             "radius); check the value and its unit.")
     if f.base_radius <= 0:
         raise InputError(f"cam.base_radius must be > 0 m; got {f.base_radius:g} m.")
     if f.contact == "roller" and f.roller_radius <= 0:

@@ -13,7 +13,7 @@ from ..dynamics.contributions import ReducedMachineSource
 from ..errors import InputError, ProblemFileError
 from ..pipeline import Outcome, ProblemKind, Step
 from ..results.labels import Label
-from .checks import check_cam
+from .checks import check_cam, rim_speed_failure
 from .dxf import profile_dxf
 from .dynamics import FollowerTrain, Spring, cam_forces, cam_machine, simulate_follower, size_spring
 from .followers import Follower
@@ -224,6 +224,9 @@ def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
         values["cam.min_surface_curvature_radius"] = chk.min_surface_radius
     warnings = [f"the motion program has a {jmp}" for jmp in model.program.jumps] + list(chk.warnings)
     failed = list(chk.failed)
+    rim = rim_speed_failure(float(np.max(np.hypot(prof.surface[0], prof.surface[1]))), speed)
+    if rim is not None:
+        failed.insert(0, rim)
     for key, val in (("cam.min_base_radius_pressure", chk.min_base_radius_pressure),
                      ("cam.min_base_radius_curvature", chk.min_base_radius_curvature)):
         if flat and key == "cam.min_base_radius_pressure":

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import warnings
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -126,7 +127,8 @@ def speed_limit(diameter: Any, speed_coefficient: float) -> Any:
 
 
 def diameter_for_duty(volume_flow: float, pitch_ratio: float, speed_coefficient: float, filling: float,
-                      inclination_factor: float = 1.0, pipe_diameter: float = 0.0, pipe_ratio: float = 0.0) -> float:
+                      inclination_factor: float = 1.0, pipe_diameter: float = 0.0, pipe_ratio: float = 0.0,
+                      pipe_of: Callable[[float], float] | None = None) -> float:
     """Smallest screw diameter that carries ``volume_flow`` at the speed limit n = k/√D [m].
 
     With S = s·D and n = k/√D, eq 2.83 gives Q = 15π·s·k·φ·C·D^{5/2} [m³/h], so
@@ -152,6 +154,11 @@ def diameter_for_duty(volume_flow: float, pitch_ratio: float, speed_coefficient:
         d_o [m] of a given pipe, or 0.
     pipe_ratio : float
         η = d_o/D [-], 0 <= η < 1, when the pipe scales with the screw (used if ``pipe_diameter`` is 0).
+    pipe_of : callable, optional
+        d_o(D) [m] of the screw's standard pipe (used if ``pipe_diameter`` is 0; e.g.
+        :func:`.tables.standard_pipe`, a step function that never falls as D grows): the fixed-pipe solution is
+        repeated with the pipe of the diameter found until the pipe stays the same (D only grows, since a larger
+        pipe needs a larger screw; at most one step per row of the table).
 
     Returns
     -------
@@ -165,6 +172,16 @@ def diameter_for_duty(volume_flow: float, pitch_ratio: float, speed_coefficient:
     """
     q_h = volume_flow * 3600.0
     base = q_h / (15.0 * math.pi * pitch_ratio * speed_coefficient * filling * inclination_factor)
+    if pipe_diameter <= 0.0 and pipe_of is not None:
+        d = base**0.4
+        for _ in range(100):
+            pipe = pipe_of(d)
+            d_next = diameter_for_duty(volume_flow, pitch_ratio, speed_coefficient, filling, inclination_factor,
+                                       pipe)
+            if pipe_of(d_next) == pipe:
+                return d_next
+            d = d_next
+        return d
     if pipe_diameter <= 0.0:
         return (base / (1.0 - pipe_ratio**2)) ** 0.4
     low, high = pipe_diameter, max(2.0 * pipe_diameter, base**0.4 + pipe_diameter)
@@ -226,7 +243,8 @@ class ScrewDesign:
 def design_screw(*, mass_flow: float, bulk_density: float, filling: float, speed_coefficient: float,
                  pitch_ratio: float, inclination_factor: float, diameter: float | None = None,
                  angular_speed: float | None = None, speed_rpm: float | None = None, pipe_diameter: float = 0.0,
-                 pipe_ratio: float = 0.0, speed: float | None = None) -> ScrewDesign:
+                 pipe_ratio: float = 0.0, speed: float | None = None,
+                 pipe_of: Callable[[float], float] | None = None) -> ScrewDesign:
     """Size the screw for a duty: required and standard diameter, pitch, speed, capacity.
 
     mass_flow [kg/s], bulk_density [kg/m³], filling φ [-] (≤ 1), speed_coefficient k [rpm·m^0.5],
@@ -235,7 +253,9 @@ def design_screw(*, mass_flow: float, bulk_density: float, filling: float, speed
     k/√D, as in seed 004); ``speed``, the name of the releases before 0.1.0, is read in rpm as it was then and
     warns (DeprecationWarning; it goes in 0.3.0).
     ``pipe_diameter`` [m] (a given pipe) or ``pipe_ratio`` d_o/D [-] (a pipe scaling with the screw) is deducted
-    from the capacity (:func:`volume_capacity`); both 0: the whole circle, as in seed 004.
+    from the capacity (:func:`volume_capacity`), or ``pipe_of`` d_o(D) [m] (the screw's standard pipe, see
+    :func:`diameter_for_duty`); all absent: the whole circle, as in seed 004. A standard size whose own pipe
+    leaves it short of the duty is passed over for the next one.
     """
     check_positive("throughput", mass_flow, "kg/s")
     check_positive("bulk density", bulk_density, "kg/m^3")
@@ -248,14 +268,22 @@ def design_screw(*, mass_flow: float, bulk_density: float, filling: float, speed
     if inclination_factor > 1.0:
         raise InputError(f"The inclination factor must be <= 1; got {inclination_factor:g}.")
     volume_flow = mass_flow / bulk_density
-    d_req = diameter_for_duty(volume_flow, pitch_ratio, speed_coefficient, filling, inclination_factor,
-                              pipe_diameter, pipe_ratio)
 
     def pipe(d: float) -> float:
-        return pipe_diameter if pipe_diameter > 0.0 else pipe_ratio * d
+        if pipe_diameter > 0.0:
+            return pipe_diameter
+        return pipe_of(d) if pipe_of is not None else pipe_ratio * d
+
+    def carries(d: float) -> bool:
+        cap = volume_capacity(d, pitch_ratio * d, angular_speed=speed_limit(d, speed_coefficient), filling=filling,
+                              inclination_factor=inclination_factor, pipe_diameter=min(pipe(d), d))
+        return bool(cap >= volume_flow * (1.0 - 1e-12))
+
+    sizes = tables.standard_diameters()
+    d_req = diameter_for_duty(volume_flow, pitch_ratio, speed_coefficient, filling, inclination_factor,
+                              pipe_diameter, pipe_ratio, pipe_of)
 
     if diameter is None:
-        sizes = tables.standard_diameters()
         if d_req > sizes[-1]:
             biggest = sizes[-1]
             n_big = speed_limit(biggest, speed_coefficient)
@@ -267,6 +295,8 @@ def design_screw(*, mass_flow: float, bulk_density: float, filling: float, speed
                 f"{cap * 3600:.4g} m^3/h. Use several screws or a higher filling or speed coefficient."
             )
         d = next_standard_diameter(d_req)
+        while not carries(d) and d < sizes[-1]:  # a standard pipe one row larger at the standard size
+            d = next_standard_diameter(d * (1.0 + 1e-9))
     else:
         check_positive("screw diameter", diameter, "m")
         d = diameter

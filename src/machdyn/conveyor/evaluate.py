@@ -84,23 +84,48 @@ class ConveyorResult:
         return self.scalars["motor_power_required"]
 
 
+def standard_pipe_note(diameter: float) -> str:
+    """The sentence that says which standard pipe a screw of ``diameter`` [m] was given (refused beyond the
+    table, asking for the pipe)."""
+    row = tables.standard_pipe_row(diameter)
+    return (f"screw.pipe_outer_diameter not given; taken from CEMA 350's standard screw conveyor components: the "
+            f"{float(row['screw_diameter_in']):g} in screw's {_inches(float(row['pipe_nps_in']))} in pipe, outer "
+            f"diameter {float(row['pipe_outer_diameter_in']) * 25.4:.1f} mm, for the {diameter * 1000:.4g} mm screw.")
+
+
+def _standard_pipe(diameter: float) -> float:
+    """The standard pipe [m] of a screw of ``diameter`` [m]; below the smallest row (4 in) that row's, since the
+    sizing only passes there on its way up to a standard size (100 mm counts as 4 in); refused above the table."""
+    smallest = float(tables.standard_pipe_rows()[0][0])
+    return tables.standard_pipe(max(diameter, smallest))
+
+
+def _inches(value: float) -> str:
+    """A nominal pipe size in inches with its fraction (2.5 -> "2½")."""
+    whole, part = int(value), value - int(value)
+    fraction = {0.25: "¼", 0.5: "½", 0.75: "¾"}.get(round(part, 2), "" if part == 0 else f"{part:g}")
+    return f"{whole if whole else ''}{fraction}" if part else f"{whole}"
+
+
 def choose_screw(p: ConveyorProblem) -> ScrewDesign:
     """The screw for the duty, or the given screw with its capacity as the duty (check mode)."""
     mass_flow = p.mass_flow
-    # the pipe deducted from the capacity: the given one, else half the screw (as the checks assume)
+    # the pipe deducted from the capacity: the given one, else the standard pipe of the screw's size (CEMA 350's
+    # standard components, as the checks assume)
     annulus = p.capacity_section == "annulus"
     pipe = (p.pipe_outer_diameter or 0.0) if annulus else 0.0
-    ratio = 0.5 if annulus and p.pipe_outer_diameter is None else 0.0
+    standard = _standard_pipe if annulus and p.pipe_outer_diameter is None else None
     if mass_flow is None:
         if p.diameter is None or p.speed is None:
             raise InputError("The throughput is required unless screw.diameter and screw.speed are given.")
+        deducted = pipe or (standard(p.diameter) if standard is not None else 0.0)
         mass_flow = volume_capacity(p.diameter, p.pitch_ratio * p.diameter, angular_speed=p.speed, filling=p.filling,
                                     inclination_factor=p.inclination_factor,
-                                    pipe_diameter=min(pipe or ratio * p.diameter, p.diameter)) * p.bulk_density
+                                    pipe_diameter=min(deducted, p.diameter)) * p.bulk_density
     return design_screw(mass_flow=mass_flow, bulk_density=p.bulk_density, filling=p.filling,
                         speed_coefficient=p.speed_coefficient, pitch_ratio=p.pitch_ratio,
                         inclination_factor=p.inclination_factor, diameter=p.diameter, angular_speed=p.speed,
-                        pipe_diameter=pipe, pipe_ratio=ratio)
+                        pipe_diameter=pipe, pipe_of=standard)
 
 
 def evaluate(problem: ConveyorProblem, *, bending: bool = True) -> ConveyorResult:
@@ -128,10 +153,9 @@ def evaluate(problem: ConveyorProblem, *, bending: bool = True) -> ConveyorResul
         raise InputError(f"The pipe ({p.pipe_outer_diameter * 1000:g} mm) must fit inside the screw "
                          f"({design.diameter * 1000:g} mm): screw.pipe_outer_diameter must be smaller.")
     if p.pipe_outer_diameter is None:
-        warnings.append(f"screw.pipe_outer_diameter not given; assumed half the screw diameter, "
-                        f"{design.diameter * 500:.0f} mm.")
+        warnings.append(standard_pipe_note(design.diameter))
     if p.pipe_wall is None:
-        d_o = p.pipe_outer_diameter if p.pipe_outer_diameter is not None else design.diameter / 2
+        d_o = p.pipe_outer_diameter if p.pipe_outer_diameter is not None else tables.standard_pipe(design.diameter)
         warnings.append(f"screw.pipe_wall not given; assumed {d_o * 1000 / 12:.1f} mm (d_o/12).")
     st = screw_states(p, design.diameter, design.pitch, design.speed, p.filling, design.mass_flow)
     powers: dict[str, MethodPower] = {}

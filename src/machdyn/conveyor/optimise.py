@@ -4,7 +4,9 @@ Candidates: the diameters (standard sizes by default) × pitch ratios (full, ¾,
 limit k/√D) × fillings of the ``[screw_conveyor.optimise]`` table. Each is evaluated by
 :func:`.screw.screw_states` (vectorised), kept if it carries the duty and passes every check, and ranked by
 the objective: least shaft power, or least cost proxy = screw mass [kg] + motor rating [kW] × motor mass per kW
-[kg/kW]. The pipe and flight scale with each candidate (d_o = D/2, wall d_o/12, flight max(3 mm, D/50)).
+[kg/kW]. The pipe and flight scale with each candidate: the standard pipe of its size (CEMA 350's standard
+components, ``data/cema_standard_pipes.csv``), wall d_o/12, flight max(3 mm, D/50). A candidate beyond that
+table (above 24 in) has no standard pipe and is not feasible.
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ from ..errors import InputError
 from .design import RPM, speed_limit
 from .model import ConveyorProblem
 from .screw import passes, screw_states
+from .tables import standard_pipes
 
 
 @dataclass(frozen=True)
@@ -89,9 +92,24 @@ def evaluate_candidates(problem: ConveyorProblem) -> tuple[dict[str, np.ndarray]
     grid = candidate_grid(problem)
     free = problem.replace(pipe_outer_diameter=None, pipe_wall=None, flight_thickness=None, diameter=None,
                            speed=None)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        states = screw_states(free, grid["diameter"], grid["pitch_ratio"] * grid["diameter"], grid["speed"],
-                              grid["filling"], problem.mass_flow)
+    inside = np.isfinite(standard_pipes(grid["diameter"]))  # the others have no standard pipe: not feasible
+    n, k = grid["diameter"].size, int(np.count_nonzero(inside))
+    states: dict[str, Any] = {"diameter": grid["diameter"]}
+    if k:
+        with np.errstate(invalid="ignore", divide="ignore"):
+            some = screw_states(free, grid["diameter"][inside], (grid["pitch_ratio"] * grid["diameter"])[inside],
+                                grid["speed"][inside], grid["filling"][inside], problem.mass_flow)
+        for key, value in some.items():
+            if isinstance(value, np.ndarray) and value.shape == (k,):
+                full = np.full(n, np.nan)
+                full[inside] = value
+                states[key] = full
+            else:
+                states[key] = value
+        states["diameter"] = grid["diameter"]
+    else:
+        raise InputError("No candidate diameter of the design search lies within CEMA's standard screw conveyor "
+                         "components (4 to 24 in), from which each candidate's pipe is taken.")
     return grid, states
 
 

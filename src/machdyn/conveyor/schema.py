@@ -414,8 +414,11 @@ def _feasible(problem: ConveyorProblem) -> list[tuple[str, str]]:
     p = "screw_conveyor"
     try:
         design = choose_screw(problem)
+        if problem.pipe_outer_diameter is None:
+            tables.standard_pipe(design.diameter)  # the pipe is taken from the standard components' table
     except InputError as exc:
-        return [(f"{p}.throughput", str(exc))]
+        where = "screw.pipe_outer_diameter" if "standard screw conveyor components" in str(exc) else "throughput"
+        return [(f"{p}.{where}", str(exc))]
     out = []
     if problem.pipe_outer_diameter is not None and problem.pipe_outer_diameter >= design.diameter:
         out.append((f"{p}.screw.pipe_outer_diameter", f"must be < the screw diameter {design.diameter:g} m; got "

@@ -112,7 +112,8 @@ def screw_states(problem: ConveyorProblem, diameter: Any, pitch: Any, speed: Any
     d_o: Any
     wall: Any
     t_f: Any
-    d_o = p.pipe_outer_diameter if p.pipe_outer_diameter is not None else 0.5 * d
+    # the given pipe, else the standard pipe of each screw's size (NaN beyond the table: such a candidate fails)
+    d_o = p.pipe_outer_diameter if p.pipe_outer_diameter is not None else tables.standard_pipes(d)
     deducted = d_o if p.capacity_section == "annulus" else 0.0 * d_o
     cap_v = volume_capacity(d, s, angular_speed=n, filling=phi, inclination_factor=p.inclination_factor,
                             pipe_diameter=deducted)

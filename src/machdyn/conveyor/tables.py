@@ -105,6 +105,50 @@ def cema_diameter_factor(diameter: float) -> float:
     return ys[-1]
 
 
+#: A screw this close to a row of ``cema_standard_pipes.csv`` (relative) counts as that size (100 mm is 4 in).
+PIPE_SIZE_TOLERANCE = 0.02
+
+
+def standard_pipe_rows() -> tuple[np.ndarray, np.ndarray]:
+    """Screw diameters [m] and their standard pipes' outer diameters [m] (``cema_standard_pipes.csv``)."""
+    rows = read_table("cema_standard_pipes")
+    return (np.array([float(r["screw_diameter_in"]) for r in rows]) * 0.0254,
+            np.array([float(r["pipe_outer_diameter_in"]) for r in rows]) * 0.0254)
+
+
+def standard_pipes(diameter):
+    """The outer diameter [m] of the standard pipe of screws of ``diameter`` [m] (array), NaN beyond the table.
+
+    CEMA 350's standard screw conveyor components (``cema_standard_pipes.csv``, see ``data/SOURCES.md``): the
+    pipe of the row's size, or of the next size up for a diameter between two rows (a metric 200 mm = 7.87 in
+    screw takes the 9 in screw's pipe); a diameter within 2 % of a row counts as that row.
+    """
+    sizes, pipes = standard_pipe_rows()
+    d = np.asarray(diameter, dtype=float)
+    i = np.searchsorted(sizes, d / (1.0 + PIPE_SIZE_TOLERANCE), side="left")
+    inside = (d >= sizes[0] * (1.0 - PIPE_SIZE_TOLERANCE)) & (i < sizes.size)
+    return np.where(inside, pipes[np.minimum(i, sizes.size - 1)], np.nan)
+
+
+def standard_pipe(diameter: float) -> float:
+    """:func:`standard_pipes` of one screw [m]; refused beyond the table, asking for the pipe."""
+    return float(standard_pipe_row(diameter)["pipe_outer_diameter_in"]) * 0.0254
+
+
+def standard_pipe_row(diameter: float) -> dict[str, str]:
+    """The row of ``cema_standard_pipes.csv`` whose pipe a screw of ``diameter`` [m] takes (:func:`standard_pipes`);
+    refused beyond the table, asking for the pipe."""
+    sizes, _ = standard_pipe_rows()
+    i = int(np.searchsorted(sizes, diameter / (1.0 + PIPE_SIZE_TOLERANCE), side="left"))
+    if not (math.isfinite(diameter) and diameter >= sizes[0] * (1.0 - PIPE_SIZE_TOLERANCE) and i < sizes.size):
+        sizes, _ = standard_pipe_rows()
+        raise InputError(
+            f"The screw diameter {diameter * 1000:.4g} mm ({diameter / 0.0254:.3g} in) is outside CEMA's standard "
+            f"screw conveyor components ({sizes[0] / 0.0254:g} to {sizes[-1] / 0.0254:g} in), from which the pipe "
+            "is taken when none is given: give screw.pipe_outer_diameter (and screw.pipe_wall).")
+    return read_table("cema_standard_pipes")[i]
+
+
 def cema_diameter_is_tabulated(diameter: float) -> bool:
     """True if ``diameter`` [m] is one of the CEMA inch sizes (within 1 %)."""
     inches = diameter / 0.0254

@@ -61,6 +61,7 @@ from ..problem.schema import Spec
 from ..results.labels import Label
 from . import fatigue
 from .parts import BearingSpec, LinkSpec, PartsResult, PinSpec, size_parts
+from .strength import strength_problem
 
 
 class BearingTable(Spec):
@@ -135,9 +136,10 @@ class LinkTable(Spec):
         if self.yield_strength is not None and self.yield_strength > self.ultimate_strength:
             raise ValueError(f"yield_strength {self.yield_strength / 1e6:g} MPa exceeds ultimate_strength "
                              f"{self.ultimate_strength / 1e6:g} MPa")
-        if self.endurance_limit is not None and self.endurance_limit >= self.ultimate_strength:
-            raise ValueError(f"endurance_limit {self.endurance_limit / 1e6:g} MPa must be below ultimate_strength "
-                             f"{self.ultimate_strength / 1e6:g} MPa")
+        problem = strength_problem(self.endurance_limit, self.ultimate_strength) \
+            if self.endurance_limit is not None else None
+        if problem:
+            raise ValueError(problem)
         return self
 
 

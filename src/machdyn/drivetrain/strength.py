@@ -61,6 +61,24 @@ def pin_stresses(force: Any, diameter: float, length: float, shear_planes: int =
     return f / (shear_planes * math.pi * diameter**2 / 4.0), f / (diameter * length)
 
 
+def strength_problem(endurance_limit: float, ultimate_strength: float) -> str | None:
+    """Why a part's endurance limit Se [Pa] and ultimate strength Sut [Pa] cannot both hold, else None.
+
+    Both must be > 0, and Se <= Sut: a stress the part endures for ever cannot break it in one cycle (the
+    rotating-beam endurance limit of steels is Se' ~= 0.5 Sut up to 1400 MPa, Shigley's MED, 8th ed., eq 6-8,
+    and the Marin factors only lower it). Se > Sut is an input mistake (the two values swapped, or a unit).
+    """
+    if not (endurance_limit > 0 and ultimate_strength > 0):
+        return (f"endurance_limit and ultimate_strength must be > 0 Pa; got {endurance_limit:.4g} Pa and "
+                f"{ultimate_strength:.4g} Pa")
+    if endurance_limit > ultimate_strength:
+        return (f"endurance_limit {endurance_limit / 1e6:.4g} MPa exceeds ultimate_strength "
+                f"{ultimate_strength / 1e6:.4g} MPa: a part cannot endure for ever a stress that breaks it in one "
+                "cycle (steels: Se <= 0.5 Sut before the Marin factors, Shigley's MED eq 6-8); are the two "
+                "values swapped?")
+    return None
+
+
 def goodman_safety(stress_max: Any, stress_min: Any, endurance_limit: float, ultimate_strength: float) -> Any:
     """Fatigue safety factor of a stress fluctuating between ``stress_min`` and ``stress_max`` by the modified
     Goodman line (Shigley's MED, 8th ed., eq. 6-46); a compressive mean stress is judged by its amplitude alone.
@@ -85,8 +103,9 @@ def goodman_safety(stress_max: Any, stress_min: Any, endurance_limit: float, ult
     >>> round(float(goodman_safety(200e6, 0.0, 150e6, 600e6)), 3)
     1.2
     """
-    if endurance_limit <= 0 or ultimate_strength <= 0:
-        raise InputError("The endurance limit and the ultimate strength must be > 0 Pa.")
+    problem = strength_problem(endurance_limit, ultimate_strength)
+    if problem:
+        raise InputError(f"The part's {problem}.")
     hi = np.asarray(stress_max, dtype=float)
     lo = np.asarray(stress_min, dtype=float)
     amp = 0.5 * (hi - lo)

@@ -14,7 +14,7 @@ from typing import Annotated, Any
 from pydantic import BeforeValidator
 
 from ..errors import InputError
-from ..units import parse_quantity
+from ..units import Q_, parse_quantity, unit_of_text
 
 
 @dataclass(frozen=True)
@@ -125,3 +125,16 @@ HeatTransfer = quantity("W/K", "heat_transfer", ">=0")
 TemperatureDifference = quantity("K", "temperature_difference", ">0")
 
 Point = tuple[Length, Length]  # type: ignore[valid-type]  # Length is an Annotated alias built at import
+
+
+def written_unit(value: Any, unit: str) -> str | None:
+    """The unit a quantity was written in (``"20 g"`` -> ``"g"``) when it is a plain unit of the same dimension as
+    ``unit`` (SI), else None: the unit a user reads results in, where the summary shows values they gave."""
+    parts = str(value).strip().split(maxsplit=1) if isinstance(value, str) else []
+    if len(parts) != 2:
+        return None
+    try:
+        Q_(1.0, unit).to(unit_of_text(parts[1]))
+    except Exception:  # noqa: BLE001 - not a plain unit of this dimension: no display unit from it
+        return None
+    return parts[1].strip()

@@ -8,6 +8,7 @@ from typing import Any
 
 import numpy as np
 
+from ..results.labels import display_factor
 from ..shafts.balance import forward_first_harmonic
 from .html import _render, figures_html, format_value, rows_html
 from .plotkit import PALETTE, _finish
@@ -153,6 +154,11 @@ def plot_grade(ax: Any, grade: Any) -> Any:
     return _finish(ax, f"ISO 21940-11, G {format_value(grade.grade)}")
 
 
+def _mass(mass: float, unit: str) -> str:
+    """A mass [kg] written in ``unit`` (the unit the problem file writes masses in)."""
+    return f"{format_value(mass * display_factor('kg', unit))} {unit}"
+
+
 def record_sections(outcome: Any) -> list[tuple[str, str]]:
     """The ``[field_records]`` section: the 1x readings read from each record and the corrections."""
     r = outcome.results
@@ -165,8 +171,8 @@ def record_sections(outcome: Any) -> list[tuple[str, str]]:
                      f"{format_value(run.speed * 30 / math.pi)} rpm)", text])
     fb = r.balance
     for k, name in enumerate(r.names):
-        split = ", ".join(f"hole {h + 1}: {format_value(m * 1e3)} g" for h, m in r.splits[k].items())
-        rows.append([f"correction in plane {name}", f"{format_value(fb.correction_mass[k] * 1e3)} g at "
+        split = ", ".join(f"hole {h + 1}: {_mass(m, r.mass_unit)}" for h, m in r.splits[k].items())
+        rows.append([f"correction in plane {name}", f"{_mass(fb.correction_mass[k], r.mass_unit)} at "
                      f"{format_value(math.degrees(fb.correction_angle[k]))}°" + (f" ({split})" if split else "")])
     intro = ("<p>1x amplitude and phase lag (the angle the shaft turns from the reference pulse to the positive "
              "peak) of every channel, over the whole revolutions of each record; mass angles are measured from the "
@@ -224,11 +230,20 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
                             "allowance of each bearing plane; 1x readings of the field-balancing runs.",
                             (4.8 * len(small), 3.8), draw_small, margins=(0.8, 0.3, 0.6, 0.45), wspace=0.4))
     rows: list[list[str]] = []
+    unit = result.line.mass_unit
     if result.balance is not None:
+        fitted = {m.name: m for m in result.applied}
         for c in result.balance.corrections:
             rows.append([f"correction in plane {c.plane.name} (z = {format_value(c.plane.position)} m)",
-                         f"{format_value(c.mass)} kg at {format_value(c.plane.radius * 1e3)} mm, "
+                         f"{_mass(c.mass, unit)} at {format_value(c.plane.radius * 1e3)} mm, "
                          f"{format_value(math.degrees(c.angle))}°"])
+            if result.line.resolution is not None:
+                parts = [m for name, m in fitted.items() if name.startswith((f"{c.plane.name} hole",
+                                                                             f"correction {c.plane.name}"))]
+                rows.append([f"as fitted in plane {c.plane.name}, rounded to {_mass(result.line.resolution, unit)}"
+                             " (the residual uses these)", ", ".join(
+                                 f"{m.name.removeprefix(c.plane.name + ' ')}: {_mass(m.mass, unit)} at "
+                                 f"{format_value(math.degrees(m.angle))}°" for m in parts)])
     if result.grade is not None:
         g = result.grade
         rows.append([f"ISO 21940-11 grade G {format_value(g.grade)}",
@@ -252,7 +267,7 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
         for name, m, a, eff in zip(result.line.field_names, f.correction_mass, f.correction_angle, f.trial_effect,
                                    strict=True):
             rows.append([f"field balancing, plane {name}",
-                         f"{format_value(m * 1e3)} g at {format_value(math.degrees(a))}° (trial effect "
+                         f"{_mass(m, unit)} at {format_value(math.degrees(a))}° (trial effect "
                          f"{format_value(eff)})"])
     intro = ("<p>Angles are measured from the shaft's reference mark in the sense of rotation; couples about the "
              f"plane z = {format_value(result.line.reference)} m. Field-balancing phases and mass angles share the "

@@ -16,9 +16,20 @@ Vibrations*, 5th ed., sec. 9.2-9.3; ISO 21940-13's influence-coefficient procedu
 masses' radius in their planes. The trial runs are taken in the order given; a trial mass left on (``removed``
 false) is part of the starting state of the runs after it, and the correction reported is what to add to it.
 
-A reading without a phase cannot enter this method (the amplitude-only four-run method needs three trial runs);
-an influence matrix that is singular or nearly so (a trial mass too small to change the readings, or placed at a
-node of the mode) is refused by name.
+A reading without a phase cannot enter this method (the amplitude-only four-run method needs three trial runs).
+Two rules keep a correction from resting on readings that hardly moved (module constants, justified in
+docs/shafts.md):
+
+* every trial run must change at least one reading by >= 30 % in amplitude or >= 30 deg in phase (the trial-mass
+  rule printed in field-balancing guides, e.g. V. Wowk, *Machinery Vibration: Balancing*, McGraw-Hill 1995; the
+  figure is that rule's, not a number taken from ISO 21940-13 or ISO 20806, which set criteria and safeguards
+  for in-situ balancing). A smaller change leaves the influence coefficient, a difference of two nearly equal
+  readings, dominated by the readings' scatter: a 0.0001 mm/s change on an 8.6 mm/s reading
+  would ask for a 1.7 t correction;
+* the influence matrix, its columns scaled to unit length, must have a condition number kappa <= 20: the
+  corrections' relative error can reach kappa times the coefficients' (Golub & Van Loan, *Matrix
+  Computations*, 4th ed., sec. 2.6.2), and coefficients from runs that just meet the 30 % rule carry errors of
+  about 5 % (readings repeatable to +-1 %, +-1 deg), so kappa = 20 lets the correction's error reach its size.
 """
 
 from __future__ import annotations
@@ -33,10 +44,12 @@ from ..errors import InputError, check_finite, check_positive
 
 __all__ = ["Reading", "TrialRun", "FieldBalance", "single_plane", "two_plane", "split_onto_holes", "reading"]
 
-#: Reciprocal condition number below which an influence matrix counts as singular.
-SINGULAR_RCOND = 1e-8
-#: Trial effect (|change| / |original|) below which a single-plane influence coefficient counts as singular.
-SINGULAR_EFFECT = 1e-8
+#: Largest condition number of the column-scaled influence matrix accepted (module docstring).
+MAX_CONDITION = 20.0
+#: A trial run must change a reading by at least this share of its amplitude ...
+TRIAL_AMPLITUDE_CHANGE = 0.30
+#: ... or by at least this phase [rad] (the 30 % / 30 deg trial-mass rule, module docstring).
+TRIAL_PHASE_CHANGE = math.radians(30.0)
 
 
 @dataclass(frozen=True)
@@ -99,6 +112,22 @@ def _vectors(readings: Sequence[Reading], what: str) -> np.ndarray:
     return np.array([r.vector(f"{what}, sensor {i + 1}") for i, r in enumerate(readings)])
 
 
+def trial_change(before: np.ndarray, after: np.ndarray) -> tuple[float, float]:
+    """The largest relative amplitude change |A_T / A_0 - 1| [-] and phase change |phi_T - phi_0| [rad] (wrapped to
+    0 ... pi) over the sensors between the readings ``before`` and ``after`` (complex vectors); a reading of zero
+    amplitude before counts as an infinite amplitude change when it moves, its phase as undefined (0)."""
+    amp, phase = 0.0, 0.0
+    for b, a in zip(before, after, strict=True):
+        if abs(b) == 0.0:
+            amp = max(amp, math.inf if abs(a) > 0 else 0.0)
+            continue
+        amp = max(amp, abs(abs(a) / abs(b) - 1.0))
+        if abs(a) > 0:
+            phase = max(phase, abs(math.remainder(math.atan2(a.imag, a.real) - math.atan2(b.imag, b.real),
+                                                  2 * math.pi)))
+    return amp, phase
+
+
 def _solve(original: Sequence[Reading], trials: Sequence[TrialRun]) -> FieldBalance:
     n = len(trials)
     if len(original) != n:
@@ -119,27 +148,33 @@ def _solve(original: Sequence[Reading], trials: Sequence[TrialRun]) -> FieldBala
         if len(t.readings) != n:
             raise InputError(f"The trial run of plane {t.plane + 1} has {len(t.readings)} reading(s); {n} needed.")
         vt = _vectors(t.readings, f"of the trial run in plane {t.plane + 1}")
+        amp, phase = trial_change(baseline, vt)
+        if amp < TRIAL_AMPLITUDE_CHANGE and phase < TRIAL_PHASE_CHANGE:
+            change = float(np.max(np.abs(vt - baseline)))
+            raise InputError(
+                f"The trial mass in plane {t.plane + 1} changed the readings too little to balance by: at most "
+                f"{amp:.3g} of their amplitude ({change:.3g} in the readings' unit) and {math.degrees(phase):.3g} deg "
+                f"in phase. A trial mass must change at least one reading by {TRIAL_AMPLITUDE_CHANGE:.0%} in "
+                f"amplitude or {math.degrees(TRIAL_PHASE_CHANGE):.0f} deg in phase (the field-balancing trial-mass "
+                "rule); with less, the influence coefficient is lost in the readings' scatter (the influence "
+                "matrix is nearly singular). Repeat the trial run with a larger trial mass, or in another place "
+                "if it sits at a node of the vibration.")
         a[:, k] = (vt - baseline) / t.weight
         scale = max(float(np.max(np.abs(baseline))), float(np.max(np.abs(vt))), 1e-300)
         effects[k] = float(np.max(np.abs(vt - baseline))) / scale
         if not t.removed:
             kept[k] += t.weight
             baseline = vt
-    if n == 1:
-        singular = effects[0] <= SINGULAR_EFFECT
-        detail = f"the trial mass changed the reading by {effects[0]:.3g} of its size"
-    else:
-        cols = a / np.maximum(np.linalg.norm(a, axis=0), 1e-300)
-        s = np.linalg.svd(cols, compute_uv=False)
-        rcond = float(s[-1] / s[0]) if s[0] > 0 else 0.0
-        singular = rcond <= SINGULAR_RCOND or min(effects) <= SINGULAR_EFFECT
-        detail = f"reciprocal condition number {rcond:.3g}, smallest trial effect {min(effects):.3g}"
-    if singular:
-        raise InputError(
-            f"The influence matrix is singular ({detail}): a trial mass too small to change the readings, or placed "
-            "at a node of the vibration, or two trial runs that act alike. Repeat the trial run with a larger trial "
-            "mass (one that changes the amplitude by 30 % or the phase by 30 deg) or in another plane."
-        )
+    if n > 1:
+        norms = np.linalg.norm(a, axis=0)
+        sv = np.linalg.svd(a / np.maximum(norms, 1e-300), compute_uv=False)
+        kappa = float(sv[0] / sv[-1]) if sv[-1] > 0 else math.inf
+        if not kappa <= MAX_CONDITION:
+            raise InputError(
+                f"The influence matrix is nearly singular (condition number {kappa:.3g} with its columns scaled, "
+                f"above {MAX_CONDITION:g}): two trial runs act almost alike on the sensors, so the corrections "
+                f"would amplify the readings' scatter up to {kappa:.3g} times. Place the trial masses in planes "
+                "farther apart, or read the vibration at sensors that tell the planes apart.")
     w = np.linalg.solve(a, -v0) - kept
     mass = tuple(float(abs(x)) for x in w)
     angle = tuple(float(math.atan2(x.imag, x.real) % (2 * math.pi)) if abs(x) > 0 else 0.0 for x in w)

@@ -8,7 +8,7 @@ from typing import Any
 
 from ..pipeline import Outcome, ProblemKind, Step
 from ..problem.dumper import dump_problem
-from ..results.labels import Label
+from ..results.labels import Label, display_factor
 from .model import analyse, build
 from .rotating import unbalance
 from .schema import ShaftLineProblem
@@ -57,6 +57,11 @@ LABELS = {
 
 def _deg(a: float) -> str:
     return f"{math.degrees(a):.4g} deg"
+
+
+def format_mass(mass: float, unit: str) -> str:
+    """``mass`` [kg] written in ``unit`` (``0.0005, "g"`` -> ``"0.5 g"``)."""
+    return f"{mass * display_factor('kg', unit):.6g} {unit}"
 
 
 def outcome_of(result: Any, problem_text: Any = None) -> Outcome:
@@ -118,19 +123,32 @@ def outcome_of(result: Any, problem_text: Any = None) -> Outcome:
                 summary += [fk, ck]
         series["shaft_orders"] = {"order": (e.orders.astype(float), ""), "force": (e.force_order, "N"),
                                   "couple": (e.couple_order, "N*m")}
+    mu = line.mass_unit
     if result.balance is not None:
         b = result.balance
+        fitted = iter(result.applied)  # the masses as fitted (rounded to the resolution), in the order of the splits
+        rounded = f", rounded to {format_mass(line.resolution, mu)}" if line.resolution is not None else ""
         for c, split in zip(b.corrections, result.splits, strict=True):
             mk, ak = f"shaft.balance.{c.plane.name}.mass", f"shaft.balance.{c.plane.name}.angle"
             sc[mk], sc[ak] = c.mass, c.angle
-            labels[mk] = Label(f"Correction in plane {c.plane.name}: mass at {c.plane.radius * 1e3:g} mm", "kg")
+            labels[mk] = Label(f"Correction in plane {c.plane.name}: mass at {c.plane.radius * 1e3:g} mm", "kg", mu)
             labels[ak] = Label(f"Correction in plane {c.plane.name}: angle from the reference mark", "rad")
             summary += [mk, ak]
             for hole, m in split.items():
                 hk = f"shaft.balance.{c.plane.name}.hole{hole + 1}.mass"
                 sc[hk] = m
-                labels[hk] = Label(f"Correction in plane {c.plane.name}: mass in hole {hole + 1}", "kg")
+                labels[hk] = Label(f"Correction in plane {c.plane.name}: mass in hole {hole + 1}", "kg", mu)
                 summary.append(hk)
+            for hole in (split if split else (None,)):
+                fit = next(fitted)
+                if line.resolution is None:
+                    continue
+                fk = f"shaft.balance.{c.plane.name}.{'' if hole is None else f'hole{hole + 1}.'}fitted_mass"
+                sc[fk] = fit.mass
+                where = "" if hole is None else f" in hole {hole + 1}"
+                labels[fk] = Label(f"Correction in plane {c.plane.name}: mass as fitted{where}{rounded} (used for "
+                                   "the residual)", "kg", mu)
+                summary.append(fk)
         sc["shaft.balance.after.force.peak"] = b.after.peak_force
         sc["shaft.balance.after.couple.peak"] = b.after.peak_couple
         summary += ["shaft.balance.after.force.peak", "shaft.balance.after.couple.peak"]
@@ -229,14 +247,14 @@ def outcome_of(result: Any, problem_text: Any = None) -> Outcome:
                                                   f.trial_effect, strict=True)):
             mk, ak, ek = f"shaft.field.{name}.mass", f"shaft.field.{name}.angle", f"shaft.field.{name}.trial_effect"
             sc[mk], sc[ak], sc[ek] = m, a, eff
-            labels[mk] = Label(f"Field balancing, plane {name}: correction mass (at the trial radius)", "kg", "g")
+            labels[mk] = Label(f"Field balancing, plane {name}: correction mass (at the trial radius)", "kg", mu)
             labels[ak] = Label(f"Field balancing, plane {name}: correction angle from the reference mark", "rad")
             labels[ek] = Label(f"Field balancing, plane {name}: trial effect |change| / |reading|", "")
             summary += [mk, ak]
             for hole, hm in (result.field_splits[k] if result.field_splits else {}).items():
                 hk = f"shaft.field.{name}.hole{hole + 1}.mass"
                 sc[hk] = hm
-                labels[hk] = Label(f"Field balancing, plane {name}: mass in hole {hole + 1}", "kg", "g")
+                labels[hk] = Label(f"Field balancing, plane {name}: mass in hole {hole + 1}", "kg", mu)
                 summary.append(hk)
             if eff < 0.3:
                 warnings.append(f"the trial mass in plane {name} changed the readings by only {eff:.0%}; a trial "

@@ -59,6 +59,8 @@ class ShaftLine:
     field_runs: tuple[tuple[Reading, ...], ...] = ()  # original and trial-run readings as entered (for the report)
     linkages: tuple[LinkagePlane, ...] = ()
     balance_target: str = "rotating"
+    mass_unit: str = "kg"  # the unit the file writes masses in: the summary and report show corrections in it
+    resolution: float | None = None  # [kg] the corrections as fitted are rounded to multiples of this
 
     def balanced_masses(self) -> list[Mass]:
         """The masses the corrections balance: rotating masses, the cylinders' rotating masses and the share c of
@@ -251,7 +253,9 @@ def build(problem: Any) -> tuple[ShaftLine | None, list[tuple[str, str]]]:
                      field, field_holes, names_f, frame=frame,
                      reciprocating_share=problem.balance.reciprocating_fraction if problem.balance is not None else 0.0,
                      field_runs=_runs(problem), linkages=linkages,
-                     balance_target=problem.balance.target if problem.balance is not None else "rotating"), []
+                     balance_target=problem.balance.target if problem.balance is not None else "rotating",
+                     mass_unit=getattr(problem, "mass_unit", "kg"),
+                     resolution=problem.balance.resolution if problem.balance is not None else None), []
 
 
 @dataclass(frozen=True)

@@ -4,7 +4,7 @@ records with a once-per-revolution reference channel (:mod:`machdyn.shafts.recor
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path  # noqa: TC003
 from typing import Any
 
@@ -56,6 +56,7 @@ class RecordBalance:
     balance: FieldBalance
     names: tuple[str, ...]
     splits: tuple[dict[int, float], ...]
+    mass_unit: str = "kg"  # the unit the problem file writes masses in (the summary and report show it)
 
 
 def _path(name: str, source: str | None) -> Path:
@@ -116,6 +117,8 @@ def run(ctx: StageContext) -> Outcome:
     result, problems = _solve(ctx.table, ctx.source)
     if result is None:  # check() has refused these already; a run without check meets the same message
         raise ProblemFileError(problems, ctx.source)
+    mu = getattr(ctx.problem, "mass_unit", "kg")
+    result = replace(result, mass_unit=mu)
     fb = result.balance
     sc: dict[str, Any] = {"shaft.records.speed": result.original.speed}
     labels: dict[str, Label] = {}
@@ -123,14 +126,14 @@ def run(ctx: StageContext) -> Outcome:
     for k, name in enumerate(result.names):
         mk, ak = f"shaft.records.{name}.mass", f"shaft.records.{name}.angle"
         sc[mk], sc[ak] = fb.correction_mass[k], fb.correction_angle[k]
-        labels[mk] = Label(f"Field balancing from records, plane {name}: correction mass", "kg", "g")
+        labels[mk] = Label(f"Field balancing from records, plane {name}: correction mass", "kg", mu)
         labels[ak] = Label(f"Field balancing from records, plane {name}: correction angle (against rotation)",
                            "rad")
         summary += [mk, ak]
         for hole, m in result.splits[k].items():
             hk = f"shaft.records.{name}.hole{hole + 1}.mass"
             sc[hk] = m
-            labels[hk] = Label(f"Field balancing from records, plane {name}: mass in hole {hole + 1}", "kg", "g")
+            labels[hk] = Label(f"Field balancing from records, plane {name}: mass in hole {hole + 1}", "kg", mu)
             summary.append(hk)
     for j, reading in enumerate(result.original.readings, start=1):
         amp, ph = f"shaft.records.original.sensor{j}.amplitude", f"shaft.records.original.sensor{j}.phase"

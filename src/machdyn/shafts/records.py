@@ -14,6 +14,14 @@ Brandt, *Noise and Vibration Analysis*, Wiley, 2011, sec. 12.3). psi is the **ph
 from the reference pulse to the positive peak of the 1x vibration, as balancing instruments show it. A pulse
 with a steep edge is located to within half a sample, so the phase is uncertain by w / (2 f_s) [rad] (0.36 deg
 for 1485 rpm sampled at 2048 Hz).
+
+The reference must be a pulse channel, never a vibration channel: a vibration's own zero crossings come once per
+revolution too, so its 1x phase would read as a plausible but wrong phase lag (every reading turned by that
+channel's own phase, the corrections with them). A channel is refused as a reference when it is one of the
+sensors read, when its unit is a vibration quantity (a length, a velocity or an acceleration), or when it is not
+a two-level pulse train: a keyphasor or a tachometer's TTL output spends almost all its time at its two levels,
+while a sinusoidal vibration spends 41 % of its time between 20 % and 80 % of its range (2 asin(0.6)/pi); a
+reference with more than :data:`MAX_TRANSITION_SHARE` of its samples there is refused.
 """
 
 from __future__ import annotations
@@ -25,11 +33,14 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
+from ..units import ureg
 from .field import Reading
 
 __all__ = ["RunRecord", "read_run", "pulses", "one_x"]
 
 MAX_BYTES = 50_000_000
+#: Largest share of a reference channel's samples between 20 % and 80 % of its range (module docstring).
+MAX_TRANSITION_SHARE = 0.2
 _HEADER = re.compile(r"^\s*(?P<name>[^\[]+?)\s*\[(?P<unit>[^\]]*)\]\s*$")
 _TIME = {"s": 1.0, "ms": 1e-3}
 
@@ -57,6 +68,33 @@ def pulses(t: np.ndarray, reference: np.ndarray, what: str = "the reference chan
     k = np.flatnonzero(~above[:-1] & above[1:])
     frac = (level - reference[k]) / (reference[k + 1] - reference[k])
     return t[k] + frac * (t[k + 1] - t[k])
+
+
+def check_reference(reference: np.ndarray, name: str, unit: str, sensors: tuple[str, ...], source: str) -> None:
+    """Refuse a ``reference`` channel that is not a once-per-revolution pulse channel (module docstring)."""
+    why = ("a phase reference must be a keyphasor or tachometer channel (a once-per-revolution pulse); name that "
+           "channel in field_records.reference")
+    if name in sensors:
+        raise InputError(f"The reference channel '{name}' of {source} is also read as a vibration sensor: {why}.")
+    if _is_vibration_unit(unit):
+        raise InputError(f"The reference channel '{name}' of {source} is in {unit}, a vibration unit: {why}.")
+    lo, hi = float(np.min(reference)), float(np.max(reference))
+    if hi > lo:
+        u = (reference - lo) / (hi - lo)
+        share = float(np.mean((u > 0.2) & (u < 0.8)))
+        if share > MAX_TRANSITION_SHARE:
+            raise InputError(f"The reference channel '{name}' of {source} is not a pulse train: {share:.0%} of its "
+                             f"samples lie between 20 % and 80 % of its range (a keyphasor's or tachometer's "
+                             f"pulses: under {MAX_TRANSITION_SHARE:.0%}; a vibration signal: about 40 %); {why}.")
+
+
+def _is_vibration_unit(unit: str) -> bool:
+    """Whether ``unit`` measures a displacement, a velocity or an acceleration."""
+    try:
+        dim = ureg.Quantity(1.0, unit).dimensionality
+    except Exception:  # noqa: BLE001 - an unknown unit (e.g. "TTL") is no vibration unit
+        return False
+    return dim in ({"[length]": 1}, {"[length]": 1, "[time]": -1}, {"[length]": 1, "[time]": -2})
 
 
 def one_x(t: np.ndarray, x: np.ndarray, pulse_times: np.ndarray) -> Reading:
@@ -104,6 +142,7 @@ def read_run(path: str | Path, reference: str, sensors: tuple[str, ...], max_byt
         if name not in names:
             raise InputError(f"The record file {p} has no channel '{name}'; its channels: "
                              f"{', '.join(list(names)[1:])}.")
+    check_reference(values[:, names[reference][0]], reference, names[reference][1], sensors, str(p))
     times = pulses(t, values[:, names[reference][0]], f"The reference channel '{reference}' of {p}")
     if times.size < 3:
         raise InputError(f"The reference channel '{reference}' of {p} holds {times.size} once-per-revolution "

@@ -9,9 +9,9 @@ its unit; unknown keys are refused.
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import Annotated, Any
 
-from pydantic import Field
+from pydantic import Field, PrivateAttr, model_validator
 
 from ..problem.fields import (
     Angle,
@@ -26,6 +26,7 @@ from ..problem.fields import (
     PositiveMass,
     PositiveStiffness,
     Stiffness,
+    written_unit,
 )
 from ..problem.schema import CounterweightSpec, MechanismSpec, Meta, Name, Spec
 
@@ -198,3 +199,40 @@ class ShaftLineProblem(Spec):
     field_balancing: FieldSpec | None = None
     frame: FrameSpec | None = None
     phase_search: PhaseSearchSpec | None = None
+    _mass_unit: str = PrivateAttr("kg")
+
+    @model_validator(mode="wrap")
+    @classmethod
+    def _keep_mass_unit(cls, data: Any, handler: Any) -> Any:
+        """Keep the unit the file writes masses in (the rounding ``resolution`` first, then the masses, then the
+        trial masses): the summary and report show the corrections in it."""
+        model = handler(data)
+        if isinstance(data, dict):
+            model._mass_unit = mass_unit_written(data)
+        elif isinstance(data, ShaftLineProblem):
+            model._mass_unit = data._mass_unit
+        return model
+
+    @property
+    def mass_unit(self) -> str:
+        """The unit the file writes masses in (kg when it writes none)."""
+        return self._mass_unit
+
+
+def mass_unit_written(data: dict) -> str:
+    """The unit of the first mass written in a shaft-line file's data (see :class:`ShaftLineProblem`)."""
+    def table(name: str) -> dict:
+        value = data.get(name)
+        return value if isinstance(value, dict) else {}
+
+    def rows(value: Any) -> list:
+        return [r for r in value if isinstance(r, dict)] if isinstance(value, list) else []
+
+    texts = [table("balance").get("resolution"), *(r.get("mass") for r in rows(data.get("masses"))),
+             *(r.get("mass") for r in rows(table("field_balancing").get("trials"))),
+             *(r.get("mass") for r in rows(table("field_records").get("trials")))]
+    for text in texts:
+        unit = written_unit(text, "kg")
+        if unit is not None:
+            return unit
+    return "kg"
