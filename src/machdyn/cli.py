@@ -479,6 +479,8 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
             raise _fail(f"error: cannot write the outputs to '{out}': {exc.strerror or exc}", EXIT_FAILED) from None
         except MachdynError as exc:
             raise _fail(f"error: the outputs of {file} could not be produced: {exc}", EXIT_FAILED) from None
+    for note in result.folder_notes:  # the user's own files, kept: said even with --quiet
+        typer.echo(f"note: {note}", err=True)
     if not quiet:
         _print_rows(result.summary, format, result.warnings)
         for outcome in result.outcomes.values():  # a resumed exploration says what it took from disk

@@ -40,7 +40,8 @@ class RunResult:
     ``results`` every scalar in SI with its label; ``summary`` the summary table (the same one the command line
     prints and the report shows); ``outcomes`` each stage's outcome by name (the kind's under its own name, each
     capability's under its table); ``warnings`` and ``failed_checks`` each said once; ``mechanism`` and
-    ``analysis`` for kinds built on a linkage.
+    ``analysis`` for kinds built on a linkage; ``source`` the problem file (never removed by :meth:`write`);
+    ``folder_notes`` what :meth:`write` left in the output folder that an earlier run listed (one line each).
     """
 
     kind: str
@@ -54,6 +55,8 @@ class RunResult:
     failed_checks: list[str] = field(default_factory=list)
     mechanism: Any = None
     analysis: Any = None
+    source: Path | None = None
+    folder_notes: list[str] = field(default_factory=list)
     _frames: dict[str, Any] | None = field(default=None, repr=False)
 
     @property
@@ -140,8 +143,10 @@ class RunResult:
         (created if missing) as one set: all are written first, then swapped in together, so an interrupted
         run leaves the previous set whole. With a ``watch_stamp`` (``machdyn watch``) the set also holds
         ``report.stamp.js``, which an open report polls to re-load itself. ``folders``: (new, target) folders
-        swapped in with the set (an exploration's Parquet store). Returns the paths written."""
-        outputs = OutputSet(out_dir)
+        swapped in with the set (an exploration's Parquet store). Returns the paths written. Files of an
+        earlier set that this one does not hold are removed only if machdyn wrote them and they are unchanged
+        (see :class:`~machdyn.outputs.OutputSet`); the others are named in :attr:`folder_notes`."""
+        outputs = OutputSet(out_dir, protect=(self.source,) if self.source is not None else ())
         try:
             outputs.json("results.json", self.results_json())
             step("tables")
@@ -157,7 +162,9 @@ class RunResult:
         except BaseException:
             outputs.abort()
             raise
-        return outputs.commit(folders)
+        paths = outputs.commit(folders)
+        self.folder_notes = outputs.notes
+        return paths
 
 
 def _loaded(problem: Any, text: str | None) -> LoadedProblem:
@@ -259,6 +266,7 @@ def run_problem(problem: Any, *, text: str | None = None, step: Step = no_step) 
         kind=loaded.kind, title=title, problem=loaded.spec, problem_text=loaded.text, results=results,
         summary=summarise(title, results, summary), outcomes=outcomes, warnings=warnings, failed_checks=failed,
         mechanism=first.mechanism, analysis=first.analysis,
+        source=Path(loaded.source) if loaded.source is not None else None,
     )
 
 
