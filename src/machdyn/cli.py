@@ -265,6 +265,11 @@ def run(
                                    help="Stop the run after SECONDS (exit 1; the partitions of an exploration "
                                         "finished by then are kept, and a rerun resumes from them).")
     ] = None,
+    replace: Annotated[
+        bool, typer.Option("--replace", help="Replace an exploration store in the way that is not this problem "
+                                             "file's (another file's, or partitions without a manifest) instead of "
+                                             "refusing it.")
+    ] = False,
     debug: DebugOpt = False,
 ) -> None:
     """Analyse a problem file, print a summary table and write the outputs."""
@@ -274,7 +279,8 @@ def run(
     try:
         from .explore.execution import execution
 
-        with execution(workers=workers, scheduler=scheduler, store=out / "sweep.parquet"), _run_guard(out, max_time):
+        with execution(workers=workers, scheduler=scheduler, store=out / "sweep.parquet", replace=replace), \
+                _run_guard(out, max_time):
             _run(file, out, format, quiet)
     except typer.Exit as done:
         if open_report and done.exit_code == EXIT_CHECKS_FAILED:  # the outputs are written: show them
@@ -311,6 +317,13 @@ def _check_where(workers: int | None, scheduler: str | None) -> None:
         problem = workers_error(workers)
         if problem is not None:
             raise _fail(f"error: --workers {problem}", EXIT_BAD_INPUT)
+
+
+#: What a stopped run that is not a design-space exploration keeps: nothing (a sweep run variant by variant, an
+#: optimisation, a single analysis all start again from their beginning).
+RESTARTS = ("the outputs were not replaced, and nothing of this run was kept: run again, it starts from the "
+            "beginning (only a design-space exploration, [sweep] with a method, resumes from its finished "
+            "partitions)")
 
 
 class _Terminated(KeyboardInterrupt):
@@ -359,17 +372,13 @@ def _run_guard(out: Path, max_time: float | None = None):
     except OperationalError as exc:
         raise _fail(f"error: {exc}", EXIT_FAILED) from None
     except KeyboardInterrupt as stop:
-        if isinstance(stop, _TimedOut):
-            raise _fail(f"stopped: the run took longer than --max-time {max_time:g} s (the finished partitions of "
-                        "an exploration are kept; run again to resume)", EXIT_FAILED) from None
+        said = getattr(stop, "message", None)  # an exploration's: what is on disk and that a rerun resumes
+        kept = said or RESTARTS
+        if isinstance(stop, _TimedOut) or isinstance(stop.__cause__, _TimedOut):
+            raise _fail(f"stopped: the run took longer than --max-time {max_time:g} s; {kept}", EXIT_FAILED) from None
         if not isinstance(stop, _Terminated) and not isinstance(stop.__cause__, _Terminated):
-            if isinstance(stop.__cause__, _TimedOut):
-                raise _fail(f"stopped: the run took longer than --max-time {max_time:g} s (the finished partitions "
-                            "of an exploration are kept; run again to resume)", EXIT_FAILED) from None
             raise  # Ctrl-C: said by run's own handler
-        said = getattr(stop, "message", None)
-        raise _fail(f"stopped: the run was terminated; {said}" if said else
-                    "stopped: the run was terminated; run it again to resume", 143) from None
+        raise _fail(f"stopped: the run was terminated; {kept}", 143) from None
     finally:
         if alarm is not None:
             signal.setitimer(signal.ITIMER_REAL, 0)
@@ -403,9 +412,26 @@ def watch(
 ) -> None:
     """Run the problem file again each time it is saved; an open report re-loads itself. Stop with Ctrl-C.
 
-    A file with mistakes is reported and the previous outputs stay until it is fixed."""
+    A file with mistakes is reported and the previous outputs stay until it is fixed. The output folder is
+    locked while watching: another run on it is refused."""
+    from .errors import OperationalError
+    from .outputs import LOCK, acquire_lock, release_lock
     from .watching import watch_file
 
+    if str(file) == "-":
+        raise _fail("error: standard input cannot be watched; give the problem file's path", EXIT_BAD_INPUT)
+    if not file.is_file():
+        what = "is not a file" if file.exists() else "does not exist"
+        raise _fail(f"error: the problem file '{file}' {what}; nothing to watch", EXIT_BAD_INPUT)
+    try:
+        if out.exists() and not out.is_dir():
+            raise OperationalError(f"cannot write the outputs to '{out}': it exists and is not a folder")
+        out.mkdir(parents=True, exist_ok=True)
+        acquire_lock(out / LOCK, f"the output folder '{out}'")
+    except OperationalError as exc:
+        raise _fail(f"error: {exc}", EXIT_FAILED) from None
+    except OSError as exc:
+        raise _fail(f"error: cannot write the outputs to '{out}': {exc.strerror or exc}", EXIT_FAILED) from None
     try:
         watch_file(file, out, interval=interval, run=lambda stamp: _watched_run(file, out, stamp),
                    opened=(lambda: _open_in_browser(out / "report.html")) if open_report else None)
@@ -413,6 +439,8 @@ def watch(
         typer.echo("stopped watching", err=True)
     except Exception as exc:  # noqa: BLE001 - anything unexpected becomes exit 4 without a traceback
         raise _internal_error(exc, debug) from None
+    finally:
+        release_lock(out / LOCK)
 
 
 def _watched_run(file: Path, out: Path, stamp: str) -> int:
@@ -482,7 +510,7 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
     for note in result.folder_notes:  # the user's own files, kept: said even with --quiet
         typer.echo(f"note: {note}", err=True)
     if not quiet:
-        _print_rows(result.summary, format, result.warnings)
+        _print_rows(result.summary, format, result.warnings + _unused_where(loaded.spec, result.warnings))
         for outcome in result.outcomes.values():  # a resumed exploration says what it took from disk
             explored: Any = getattr(outcome, "results", None)
             if getattr(explored, "reused", 0):
@@ -496,6 +524,21 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
         for check in result.failed_checks:
             typer.echo(f"design check failed: {check}", err=True)
         raise typer.Exit(EXIT_CHECKS_FAILED)
+
+
+def _unused_where(problem: Any, warnings: list[str]) -> list[str]:
+    """A warning when --workers or --scheduler was given to a run they do not act on: they spread the designs of
+    a design-space exploration ([sweep] with a method) only (a sweep run variant by variant says so itself)."""
+    from .explore.execution import current
+
+    settings = current()
+    given = [name for name, value in (("--workers", settings.workers), ("--scheduler", settings.scheduler))
+             if value is not None]
+    sweep = getattr(problem, "sweep", None)
+    if not given or getattr(sweep, "is_exploration", False) or any("--workers" in w for w in warnings):
+        return []
+    return [f"{' and '.join(given)} {'were' if len(given) > 1 else 'was'} ignored: only a design-space exploration "
+            "([sweep] with a method) runs on workers; this run ran in this process."]
 
 
 @app.command(epilog=EXIT_CODES_HELP)

@@ -96,6 +96,9 @@ class Execution:
     #: When a list: an exploration of a changed problem is not swapped into its store when it completes; its
     #: (pending folder, store) is appended here, for the caller to swap in with its other outputs.
     deferred: list | None = None
+    #: True: a folder that is not this problem's store (another problem file's, or partitions without a
+    #: manifest) is replaced rather than refused (the command line's ``--replace``).
+    replace: bool | None = None
 
 
 _CURRENT: ContextVar[Execution | None] = ContextVar("machdyn_explore_execution", default=None)

@@ -25,6 +25,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
+from ..vibration.signals import csv_failure
 from .field import Reading
 
 __all__ = ["RunRecord", "read_run", "pulses", "one_x"]
@@ -80,17 +81,18 @@ def read_run(path: str | Path, reference: str, sensors: tuple[str, ...], max_byt
     try:
         frame = pd.read_csv(p, comment="#", skipinitialspace=True, encoding="utf-8-sig")
     except (ValueError, pd.errors.ParserError, UnicodeDecodeError) as exc:
-        raise InputError(f"The record file {p} is not a readable CSV: {exc}.") from None
+        raise InputError(f"The record file {p} is not a readable CSV: {csv_failure(exc)}.") from None
     names = {}
     for j, column in enumerate(frame.columns):
         m = _HEADER.match(str(column))
         if not m:
-            raise InputError(f"The column '{column}' of {p} has no unit: write the header as 'name [unit]'.")
+            raise InputError(f"Column {j + 1} of {p} has no unit in its header, so the file is not a record: write "
+                             "the header as 'name [unit]', e.g. 'time [s]' or 'keyphasor [V]'.")
         names[m["name"].strip()] = (j, m["unit"].strip())
     first = str(frame.columns[0])
     tname = _HEADER.match(first)
     if tname is None or tname["unit"].strip() not in _TIME:
-        raise InputError(f"The first column of {p} must be the time in s or ms; got '{first}'.")
+        raise InputError(f"The first column of {p} must be the time in s or ms (a header such as 'time [s]').")
     try:
         values = frame.to_numpy(dtype=float)
     except ValueError:
