@@ -1,7 +1,8 @@
 """The ``machdyn`` command: run and check problem files, copy out the shipped examples.
 
 Exit codes: 0 success; 1 the analysis failed on a valid problem, or an operational failure (a scheduler that does
-not answer, a full disk, a folder that may not be written, another run on the same folder, --max-time reached);
+not answer, a full disk, a folder that may not be written, another run on the same folder, an exploration store
+of another problem file without ``--replace``, --max-time reached);
 2 bad input (the problem file, the command line); 3 the design fails one of its checks (the outputs are
 written and the failed checks listed); 4 an internal error (a short message; the traceback goes to a log file,
 or to the terminal with ``--debug``). Messages go to stderr, without a traceback. Heavy libraries (pandas,
@@ -25,8 +26,9 @@ from . import __version__
 EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT, EXIT_CHECKS_FAILED, EXIT_INTERNAL = 0, 1, 2, 3, 4
 
 EXIT_CODES_HELP = (
-    "Exit codes: 0 success; 1 the analysis failed; 2 bad input; 3 the design fails a check (an infeasible "
-    "optimisation included); 4 internal error."
+    "Exit codes: 0 success; 1 the analysis failed, or the run could not write its outputs (a folder another run "
+    "holds, another problem's exploration store without --replace, --max-time reached); 2 bad input; 3 the design "
+    "fails a check (an infeasible optimisation included); 4 internal error."
 )
 
 app = typer.Typer(
