@@ -26,9 +26,8 @@ from . import __version__
 EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT, EXIT_CHECKS_FAILED, EXIT_INTERNAL = 0, 1, 2, 3, 4
 
 EXIT_CODES_HELP = (
-    "Exit codes: 0 success; 1 the analysis failed, or the run could not write its outputs (a folder another run "
-    "holds, another problem's exploration store without --replace, --max-time reached); 2 bad input; 3 the design "
-    "fails a check (an infeasible optimisation included); 4 internal error."
+    "Exit codes: 0 success; 1 the analysis failed or the outputs could not be written (a locked folder, another "
+    "file's store without --replace, --max-time); 2 bad input; 3 the design fails a check; 4 internal error."
 )
 
 app = typer.Typer(
@@ -267,11 +266,8 @@ def run(
                                    help="Stop the run after SECONDS (exit 1; the partitions of an exploration "
                                         "finished by then are kept, and a rerun resumes from them).")
     ] = None,
-    replace: Annotated[
-        bool, typer.Option("--replace", help="Replace an exploration store in the way that is not this problem "
-                                             "file's (another file's, or partitions without a manifest) instead of "
-                                             "refusing it.")
-    ] = False,
+    replace: Annotated[bool, typer.Option("--replace", help="Replace an exploration store that is not this "
+                                          "file's (another file's, or partitions without a manifest).")] = False,
     debug: DebugOpt = False,
 ) -> None:
     """Analyse a problem file, print a summary table and write the outputs."""
@@ -321,13 +317,6 @@ def _check_where(workers: int | None, scheduler: str | None) -> None:
             raise _fail(f"error: --workers {problem}", EXIT_BAD_INPUT)
 
 
-#: What a stopped run that is not a design-space exploration keeps: nothing (a sweep run variant by variant, an
-#: optimisation, a single analysis all start again from their beginning).
-RESTARTS = ("the outputs were not replaced, and nothing of this run was kept: run again, it starts from the "
-            "beginning (only a design-space exploration, [sweep] with a method, resumes from its finished "
-            "partitions)")
-
-
 class _Terminated(KeyboardInterrupt):
     """SIGTERM, turned into an interruption so that a terminated run cleans up as after Ctrl-C."""
 
@@ -344,18 +333,12 @@ def _run_guard(out: Path, max_time: float | None = None):
     import signal
 
     from .errors import OperationalError
-    from .outputs import LOCK, acquire_lock, release_lock
+    from .outputs import lock_folder, unlock_folder
 
-    created = not out.exists()
     try:
-        if out.exists() and not out.is_dir():
-            raise OperationalError(f"cannot write the outputs to '{out}': it exists and is not a folder")
-        out.mkdir(parents=True, exist_ok=True)
-        acquire_lock(out / LOCK, f"the output folder '{out}'")
+        created = lock_folder(out)
     except OperationalError as exc:
         raise _fail(f"error: {exc}", EXIT_FAILED) from None
-    except OSError as exc:
-        raise _fail(f"error: cannot write the outputs to '{out}': {exc.strerror or exc}", EXIT_FAILED) from None
 
     def terminated(signum, frame):
         raise _Terminated()
@@ -375,6 +358,8 @@ def _run_guard(out: Path, max_time: float | None = None):
         raise _fail(f"error: {exc}", EXIT_FAILED) from None
     except KeyboardInterrupt as stop:
         said = getattr(stop, "message", None)  # an exploration's: what is on disk and that a rerun resumes
+        from .explore.execution import RESTARTS
+
         kept = said or RESTARTS
         if isinstance(stop, _TimedOut) or isinstance(stop.__cause__, _TimedOut):
             raise _fail(f"stopped: the run took longer than --max-time {max_time:g} s; {kept}", EXIT_FAILED) from None
@@ -387,10 +372,7 @@ def _run_guard(out: Path, max_time: float | None = None):
             signal.signal(signal.SIGALRM, alarm)
         if previous is not None:
             signal.signal(signal.SIGTERM, previous)
-        release_lock(out / LOCK)
-        if created:
-            with contextlib.suppress(OSError):
-                out.rmdir()  # only if the run left it empty
+        unlock_folder(out, created)  # the folder removed only if the run created it and left it empty
 
 
 def _open_in_browser(report: Path) -> None:
@@ -417,23 +399,15 @@ def watch(
     A file with mistakes is reported and the previous outputs stay until it is fixed. The output folder is
     locked while watching: another run on it is refused."""
     from .errors import OperationalError
-    from .outputs import LOCK, acquire_lock, release_lock
-    from .watching import watch_file
+    from .outputs import lock_folder, unlock_folder
+    from .watching import unwatchable, watch_file
 
-    if str(file) == "-":
-        raise _fail("error: standard input cannot be watched; give the problem file's path", EXIT_BAD_INPUT)
-    if not file.is_file():
-        what = "is not a file" if file.exists() else "does not exist"
-        raise _fail(f"error: the problem file '{file}' {what}; nothing to watch", EXIT_BAD_INPUT)
+    if (why := unwatchable(file)) is not None:
+        raise _fail(f"error: {why}", EXIT_BAD_INPUT)
     try:
-        if out.exists() and not out.is_dir():
-            raise OperationalError(f"cannot write the outputs to '{out}': it exists and is not a folder")
-        out.mkdir(parents=True, exist_ok=True)
-        acquire_lock(out / LOCK, f"the output folder '{out}'")
+        created = lock_folder(out)
     except OperationalError as exc:
         raise _fail(f"error: {exc}", EXIT_FAILED) from None
-    except OSError as exc:
-        raise _fail(f"error: cannot write the outputs to '{out}': {exc.strerror or exc}", EXIT_FAILED) from None
     try:
         watch_file(file, out, interval=interval, run=lambda stamp: _watched_run(file, out, stamp),
                    opened=(lambda: _open_in_browser(out / "report.html")) if open_report else None)
@@ -442,7 +416,7 @@ def watch(
     except Exception as exc:  # noqa: BLE001 - anything unexpected becomes exit 4 without a traceback
         raise _internal_error(exc, debug) from None
     finally:
-        release_lock(out / LOCK)
+        unlock_folder(out, created)
 
 
 def _watched_run(file: Path, out: Path, stamp: str) -> int:
@@ -477,7 +451,7 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
             if hasattr(type(loaded.spec), "model_fields") else ()
         progress.steps = steps_of(loaded.kind, tables)
         try:
-            from .explore.execution import execution
+            from .explore.execution import execution, ignored_where
 
             def partitions(done: int, total: int) -> None:
                 progress.step(f"design sweep {100 * done // max(total, 1)}%")
@@ -512,7 +486,7 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
     for note in result.folder_notes:  # the user's own files, kept: said even with --quiet
         typer.echo(f"note: {note}", err=True)
     if not quiet:
-        _print_rows(result.summary, format, result.warnings + _unused_where(loaded.spec, result.warnings))
+        _print_rows(result.summary, format, result.warnings + ignored_where(loaded.spec, result.warnings))
         for outcome in result.outcomes.values():  # a resumed exploration says what it took from disk
             explored: Any = getattr(outcome, "results", None)
             if getattr(explored, "reused", 0):
@@ -526,21 +500,6 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
         for check in result.failed_checks:
             typer.echo(f"design check failed: {check}", err=True)
         raise typer.Exit(EXIT_CHECKS_FAILED)
-
-
-def _unused_where(problem: Any, warnings: list[str]) -> list[str]:
-    """A warning when --workers or --scheduler was given to a run they do not act on: they spread the designs of
-    a design-space exploration ([sweep] with a method) only (a sweep run variant by variant says so itself)."""
-    from .explore.execution import current
-
-    settings = current()
-    given = [name for name, value in (("--workers", settings.workers), ("--scheduler", settings.scheduler))
-             if value is not None]
-    sweep = getattr(problem, "sweep", None)
-    if not given or getattr(sweep, "is_exploration", False) or any("--workers" in w for w in warnings):
-        return []
-    return [f"{' and '.join(given)} {'were' if len(given) > 1 else 'was'} ignored: only a design-space exploration "
-            "([sweep] with a method) runs on workers; this run ran in this process."]
 
 
 @app.command(epilog=EXIT_CODES_HELP)

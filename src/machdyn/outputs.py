@@ -8,10 +8,12 @@ journal and a lock, so that old and new files never mix.
 from __future__ import annotations
 
 import fcntl
+import hashlib
 import json
 import math
 import os
 import shutil
+import stat
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
@@ -132,6 +134,31 @@ def release_lock(path: str | os.PathLike) -> None:
     except OSError:
         pass
     os.close(fd)
+
+
+def lock_folder(out: Path) -> bool:
+    """Create the output folder ``out`` if missing and hold its lock (:data:`LOCK`) for this process; return
+    whether it was created. :class:`~machdyn.errors.OperationalError` for a path that is a file, a folder that
+    cannot be created or written, or another run holding it."""
+    created = not out.exists()
+    if out.exists() and not out.is_dir():
+        raise OperationalError(f"cannot write the outputs to '{out}': it exists and is not a folder")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        acquire_lock(out / LOCK, f"the output folder '{out}'")
+    except OSError as exc:
+        raise OperationalError(f"cannot write the outputs to '{out}': {exc.strerror or exc}") from None
+    return created
+
+
+def unlock_folder(out: Path, created: bool) -> None:
+    """Release :func:`lock_folder`'s hold; remove ``out`` if it was ``created`` and is left empty."""
+    release_lock(out / LOCK)
+    if created:
+        try:
+            out.rmdir()
+        except OSError:
+            pass
 
 
 def fsync_folder(folder: str | os.PathLike) -> None:
@@ -292,8 +319,6 @@ def _plain_name(name: object) -> bool:
 
 def _digest(path: Path) -> str:
     """The SHA-256 of a file's content (hex)."""
-    import hashlib
-
     sha = hashlib.sha256()
     with open(path, "rb") as handle:
         for block in iter(lambda: handle.read(1 << 20), b""):
@@ -334,8 +359,6 @@ def _remove_own_output(out: Path, name: str, digest: str, protected: list[Path])
         return True
     except OSError:
         return False
-    import stat
-
     if not stat.S_ISREG(info.st_mode) or info.st_nlink > 1:  # a link could reach a file outside the folder
         return False
     try:

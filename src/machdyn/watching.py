@@ -9,6 +9,7 @@ in the file) leaves the previous outputs in place; the next save tries again.
 
 from __future__ import annotations
 
+import hashlib
 import time
 from collections.abc import Callable
 from pathlib import Path
@@ -28,8 +29,6 @@ NOT_UPDATED = {
 
 def _signature(file: Path) -> tuple[int, int, str] | None:
     """The file's modification time [ns], size [bytes] and content digest, or None if it cannot be read."""
-    import hashlib
-
     try:
         info = file.stat()
         if info.st_size > _MAX_HASHED:
@@ -38,6 +37,15 @@ def _signature(file: Path) -> tuple[int, int, str] | None:
     except OSError:
         return None
     return info.st_mtime_ns, info.st_size, digest
+
+
+def unwatchable(file: Path) -> str | None:
+    """Why ``file`` cannot be watched (standard input, a path that is no file), or None."""
+    if str(file) == "-":
+        return "standard input cannot be watched; give the problem file's path"
+    if not file.is_file():
+        return f"the problem file '{file}' {'is not a file' if file.exists() else 'does not exist'}; nothing to watch"
+    return None
 
 
 def watch_file(file: Path, out: Path, *, interval: float, run: Callable[[str], int],

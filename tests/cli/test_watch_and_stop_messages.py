@@ -13,8 +13,9 @@ import typer
 from typer.testing import CliRunner
 
 from machdyn import watching
-from machdyn.cli import RESTARTS, _run_guard, _Terminated, _TimedOut, app
+from machdyn.cli import _run_guard, _Terminated, _TimedOut, app
 from machdyn.errors import AnalysisError
+from machdyn.explore.execution import RESTARTS
 from machdyn.explore.run import ExplorationInterrupted
 from machdyn.outputs import LOCK
 from problem_texts import four_bar

@@ -125,6 +125,27 @@ def execution(**settings: Any) -> Iterator[Execution]:
         _CURRENT.reset(token)
 
 
+#: What a stopped run that is not a design-space exploration keeps (the command line's message): nothing; a sweep
+#: run variant by variant, an optimisation, a single analysis all start again from their beginning.
+RESTARTS = ("the outputs were not replaced, and nothing of this run was kept: run again, it starts from the "
+            "beginning (only a design-space exploration, [sweep] with a method, resumes from its finished "
+            "partitions)")
+
+
+def ignored_where(problem: Any, warnings: list[str]) -> list[str]:
+    """A warning when ``workers`` or ``scheduler`` is set (``--workers``, ``--scheduler``) for a run they do not
+    act on: they spread the designs of a design-space exploration only (a sweep run variant by variant says so
+    in its own ``warnings``)."""
+    settings = current()
+    given = [name for name, value in (("--workers", settings.workers), ("--scheduler", settings.scheduler))
+             if value is not None]
+    if not given or getattr(getattr(problem, "sweep", None), "is_exploration", False) or \
+            any("--workers" in w for w in warnings):
+        return []
+    return [f"{' and '.join(given)} {'were' if len(given) > 1 else 'was'} ignored: only a design-space exploration "
+            "([sweep] with a method) runs on workers; this run ran in this process."]
+
+
 #: Runs estimated to take less than this [s] are not announced.
 ANNOUNCE_AFTER = 30.0
 
