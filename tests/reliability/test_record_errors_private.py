@@ -26,7 +26,7 @@ CASES = {
 #: comma-separated one, and one the parser stumbles on
 FIRST_LINES = {
     "plain": f"{SECRET}\nSECOND=line\n",
-    "header_like": f"time [s], {SECRET} [furlong]\n0, 1\n1, 2\n",
+    "header_like": f"time [s], {SECRET} [furlong]\n" + "".join(f"{i}, {i % 2}\n" for i in range(12)),
     "two_fields": f"{SECRET},other\n1,2,3,4\n",
     "not_time": f"{SECRET} [mm/s], b [mm/s]\n0, 1\n1, 2\n",
 }

@@ -104,8 +104,9 @@ def read_run(path: str | Path, reference: str, sensors: tuple[str, ...], max_byt
         raise InputError(f"The time column of {p} must increase strictly over at least 8 samples.")
     for name in (reference, *sensors):
         if name not in names:
-            raise InputError(f"The record file {p} has no channel '{name}'; its channels: "
-                             f"{', '.join(list(names)[1:])}.")
+            raise InputError(f"The record file {p} has no channel '{name}' (named in the problem file); its header "
+                             f"names {len(names) - 1} channel(s) after the time, which are not quoted here: check the "
+                             "spelling against the file's first line.")
     times = pulses(t, values[:, names[reference][0]], f"The reference channel '{reference}' of {p}")
     if times.size < 3:
         raise InputError(f"The reference channel '{reference}' of {p} holds {times.size} once-per-revolution "
