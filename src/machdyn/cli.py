@@ -1,7 +1,8 @@
 """The ``machdyn`` command: run and check problem files, copy out the shipped examples.
 
 Exit codes: 0 success; 1 the analysis failed on a valid problem, or an operational failure (a scheduler that does
-not answer, a full disk, a folder that may not be written, another run on the same folder, --max-time reached);
+not answer, a full disk, a folder that may not be written, another run on the same folder, an exploration store
+of another problem file without ``--replace``, --max-time reached);
 2 bad input (the problem file, the command line); 3 the design fails one of its checks (the outputs are
 written and the failed checks listed); 4 an internal error (a short message; the traceback goes to a log file,
 or to the terminal with ``--debug``). Messages go to stderr, without a traceback. Heavy libraries (pandas,
@@ -25,7 +26,8 @@ from . import __version__
 EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT, EXIT_CHECKS_FAILED, EXIT_INTERNAL = 0, 1, 2, 3, 4
 
 EXIT_CODES_HELP = (
-    "Exit codes: 0 success; 1 the analysis failed; 2 bad input; 3 the design fails a check (an infeasible "
+    "Exit codes: 0 success; 1 the analysis failed or the outputs could not be written (a locked folder, another "
+    "file's store without --replace, --max-time); 2 bad input; 3 the design fails a check (an infeasible "
     "optimisation included); 4 internal error."
 )
 
@@ -265,6 +267,8 @@ def run(
                                    help="Stop the run after SECONDS (exit 1; the partitions of an exploration "
                                         "finished by then are kept, and a rerun resumes from them).")
     ] = None,
+    replace: Annotated[bool, typer.Option("--replace", help="Replace an exploration store that is not this "
+                                          "file's (another file's, or partitions without a manifest).")] = False,
     debug: DebugOpt = False,
 ) -> None:
     """Analyse a problem file, print a summary table and write the outputs."""
@@ -274,7 +278,8 @@ def run(
     try:
         from .studies.exploration.execution import execution
 
-        with execution(workers=workers, scheduler=scheduler, store=out / "sweep.parquet"), _run_guard(out, max_time):
+        with execution(workers=workers, scheduler=scheduler, store=out / "sweep.parquet", replace=replace), \
+                _run_guard(out, max_time):
             _run(file, out, format, quiet)
     except typer.Exit as done:
         if open_report and done.exit_code == EXIT_CHECKS_FAILED:  # the outputs are written: show them
@@ -329,18 +334,12 @@ def _run_guard(out: Path, max_time: float | None = None):
     import signal
 
     from .errors import OperationalError
-    from .outputs import LOCK, acquire_lock, release_lock
+    from .outputs import lock_folder, unlock_folder
 
-    created = not out.exists()
     try:
-        if out.exists() and not out.is_dir():
-            raise OperationalError(f"cannot write the outputs to '{out}': it exists and is not a folder")
-        out.mkdir(parents=True, exist_ok=True)
-        acquire_lock(out / LOCK, f"the output folder '{out}'")
+        created = lock_folder(out)
     except OperationalError as exc:
         raise _fail(f"error: {exc}", EXIT_FAILED) from None
-    except OSError as exc:
-        raise _fail(f"error: cannot write the outputs to '{out}': {exc.strerror or exc}", EXIT_FAILED) from None
 
     def terminated(signum, frame):
         raise _Terminated()
@@ -359,27 +358,22 @@ def _run_guard(out: Path, max_time: float | None = None):
     except OperationalError as exc:
         raise _fail(f"error: {exc}", EXIT_FAILED) from None
     except KeyboardInterrupt as stop:
-        if isinstance(stop, _TimedOut):
-            raise _fail(f"stopped: the run took longer than --max-time {max_time:g} s (the finished partitions of "
-                        "an exploration are kept; run again to resume)", EXIT_FAILED) from None
+        said = getattr(stop, "message", None)  # an exploration's: what is on disk and that a rerun resumes
+        from .studies.exploration.execution import RESTARTS
+
+        kept = said or RESTARTS
+        if isinstance(stop, _TimedOut) or isinstance(stop.__cause__, _TimedOut):
+            raise _fail(f"stopped: the run took longer than --max-time {max_time:g} s; {kept}", EXIT_FAILED) from None
         if not isinstance(stop, _Terminated) and not isinstance(stop.__cause__, _Terminated):
-            if isinstance(stop.__cause__, _TimedOut):
-                raise _fail(f"stopped: the run took longer than --max-time {max_time:g} s (the finished partitions "
-                            "of an exploration are kept; run again to resume)", EXIT_FAILED) from None
             raise  # Ctrl-C: said by run's own handler
-        said = getattr(stop, "message", None)
-        raise _fail(f"stopped: the run was terminated; {said}" if said else
-                    "stopped: the run was terminated; run it again to resume", 143) from None
+        raise _fail(f"stopped: the run was terminated; {kept}", 143) from None
     finally:
         if alarm is not None:
             signal.setitimer(signal.ITIMER_REAL, 0)
             signal.signal(signal.SIGALRM, alarm)
         if previous is not None:
             signal.signal(signal.SIGTERM, previous)
-        release_lock(out / LOCK)
-        if created:
-            with contextlib.suppress(OSError):
-                out.rmdir()  # only if the run left it empty
+        unlock_folder(out, created)  # the folder removed only if the run created it and left it empty
 
 
 def _open_in_browser(report: Path) -> None:
@@ -403,9 +397,18 @@ def watch(
 ) -> None:
     """Run the problem file again each time it is saved; an open report re-loads itself. Stop with Ctrl-C.
 
-    A file with mistakes is reported and the previous outputs stay until it is fixed."""
-    from .watching import watch_file
+    A file with mistakes is reported and the previous outputs stay until it is fixed. The output folder is
+    locked while watching: another run on it is refused."""
+    from .errors import OperationalError
+    from .outputs import lock_folder, unlock_folder
+    from .watching import unwatchable, watch_file
 
+    if (why := unwatchable(file)) is not None:
+        raise _fail(f"error: {why}", EXIT_BAD_INPUT)
+    try:
+        created = lock_folder(out)
+    except OperationalError as exc:
+        raise _fail(f"error: {exc}", EXIT_FAILED) from None
     try:
         watch_file(file, out, interval=interval, run=lambda stamp: _watched_run(file, out, stamp),
                    opened=(lambda: _open_in_browser(out / "report.html")) if open_report else None)
@@ -413,6 +416,8 @@ def watch(
         typer.echo("stopped watching", err=True)
     except Exception as exc:  # noqa: BLE001 - anything unexpected becomes exit 4 without a traceback
         raise _internal_error(exc, debug) from None
+    finally:
+        unlock_folder(out, created)
 
 
 def _watched_run(file: Path, out: Path, stamp: str) -> int:
@@ -447,7 +452,7 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
             if hasattr(type(loaded.spec), "model_fields") else ()
         progress.steps = steps_of(loaded.kind, tables)
         try:
-            from .studies.exploration.execution import execution
+            from .studies.exploration.execution import execution, ignored_where
 
             def partitions(done: int, total: int) -> None:
                 progress.step(f"design sweep {100 * done // max(total, 1)}%")
@@ -479,8 +484,10 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
             raise _fail(f"error: cannot write the outputs to '{out}': {exc.strerror or exc}", EXIT_FAILED) from None
         except MachdynError as exc:
             raise _fail(f"error: the outputs of {file} could not be produced: {exc}", EXIT_FAILED) from None
+    for note in result.folder_notes:  # the user's own files, kept: said even with --quiet
+        typer.echo(f"note: {note}", err=True)
     if not quiet:
-        _print_rows(result.summary, format, result.warnings)
+        _print_rows(result.summary, format, result.warnings + ignored_where(loaded.spec, result.warnings))
         for outcome in result.outcomes.values():  # a resumed exploration says what it took from disk
             explored: Any = getattr(outcome, "results", None)
             if getattr(explored, "reused", 0):

@@ -8,10 +8,12 @@ journal and a lock, so that old and new files never mix.
 from __future__ import annotations
 
 import fcntl
+import hashlib
 import json
 import math
 import os
 import shutil
+import stat
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
@@ -134,6 +136,31 @@ def release_lock(path: str | os.PathLike) -> None:
     os.close(fd)
 
 
+def lock_folder(out: Path) -> bool:
+    """Create the output folder ``out`` if missing and hold its lock (:data:`LOCK`) for this process; return
+    whether it was created. :class:`~machdyn.errors.OperationalError` for a path that is a file, a folder that
+    cannot be created or written, or another run holding it."""
+    created = not out.exists()
+    if out.exists() and not out.is_dir():
+        raise OperationalError(f"cannot write the outputs to '{out}': it exists and is not a folder")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        acquire_lock(out / LOCK, f"the output folder '{out}'")
+    except OSError as exc:
+        raise OperationalError(f"cannot write the outputs to '{out}': {exc.strerror or exc}") from None
+    return created
+
+
+def unlock_folder(out: Path, created: bool) -> None:
+    """Release :func:`lock_folder`'s hold; remove ``out`` if it was ``created`` and is left empty."""
+    release_lock(out / LOCK)
+    if created:
+        try:
+            out.rmdir()
+        except OSError:
+            pass
+
+
 def fsync_folder(folder: str | os.PathLike) -> None:
     """Make the renames inside ``folder`` durable (where the system supports syncing a folder)."""
     try:
@@ -170,12 +197,18 @@ class OutputSet:
     writes a journal of the set (the files, and folders such as an exploration's Parquet store to swap in with
     them) and syncs it: from then on the set is committed, and a run killed while moving the files in is
     completed by the next run that opens the folder. The files of the previous set that this run did not write
-    (a CSV of a capability no longer in the file) are removed, as listed in the folder's manifest, so old and
-    new never mix. The folder is locked (:data:`LOCK`) from the set's creation to its commit or abort.
+    (a CSV of a capability no longer in the file) are removed, so old and new never mix, but only those that the
+    folder's manifest (:data:`MANIFEST`) lists with the digest of the content machdyn wrote and that still have
+    it: regular files directly in the folder, of an output's kind, never a link, a hidden file or a ``protect``
+    ed file (the problem file). Any other file is left alone and named in :attr:`notes`. The folder is locked
+    (:data:`LOCK`) from the set's creation to its commit or abort.
     """
 
-    def __init__(self, out_dir: str | os.PathLike):
+    def __init__(self, out_dir: str | os.PathLike, *, protect: tuple[str | os.PathLike, ...] = ()):
         self.out = Path(out_dir)
+        self.protect = [str(Path(p).resolve()) for p in protect]
+        #: what the commit left in place that an earlier run listed (one line each; see :func:`_apply`)
+        self.notes: list[str] = []
         if self.out.exists() and not self.out.is_dir():
             raise OSError(f"the output path '{self.out}' exists and is not a directory")
         self._created = not self.out.exists()
@@ -206,11 +239,13 @@ class OutputSet:
         """Move the set into place, with each ``(new, target)`` folder swapped in first; return the final
         paths."""
         journal = {"files": self.names, "folders": [[str(Path(a).resolve()), str(Path(b).resolve())]
-                                                    for a, b in folders]}
+                                                    for a, b in folders],
+                   "digests": {n: _digest(self.stage / n) for n in self.names if (self.stage / n).is_file()},
+                   "protect": self.protect}
         try:
             atomic_write_text(self.stage / JOURNAL, json.dumps(journal) + "\n")  # the commit point
             fsync_folder(self.stage)
-            _apply(self.out, self.stage)
+            self.notes = _apply(self.out, self.stage)
         finally:
             release_lock(self.out / LOCK)
         return [self.out / name for name in self.names]
@@ -231,36 +266,110 @@ def recover_outputs(out: Path) -> None:
     remove what interrupted runs left: staging folders never committed, temporary files."""
     for stale in sorted(out.glob(".machdyn-partial-*")):
         if (stale / JOURNAL).is_file():
-            _apply(out, stale)
+            _apply(out, stale)  # its notes were the killed run's to say
         else:
             _remove_tree(stale)
     for leftover in out.glob(".*.part"):  # atomic_write's temporary files of a killed run
         leftover.unlink(missing_ok=True)
 
 
-def _apply(out: Path, stage: Path) -> None:
-    """Move the committed set of ``stage`` into ``out`` (idempotent; see :meth:`OutputSet.commit`)."""
+def _apply(out: Path, stage: Path) -> list[str]:
+    """Move the committed set of ``stage`` into ``out`` (idempotent; see :meth:`OutputSet.commit`); return a
+    note on the earlier outputs left in place (empty when there are none)."""
     journal = json.loads((stage / JOURNAL).read_text(encoding="utf-8"))
     for new, target in journal.get("folders", []):
         swap_folders(Path(new), Path(target))
-    names = [n for n in journal.get("files", []) if isinstance(n, str) and "/" not in n]
-    previous: list[str] = []
-    try:
-        previous = list(json.loads((out / MANIFEST).read_text(encoding="utf-8")))
-    except (OSError, ValueError, TypeError):
-        previous = []
+    names = [n for n in journal.get("files", []) if _plain_name(n)]
+    digests = journal.get("digests") or {}
+    protected = [Path(p) for p in journal.get("protect", []) if isinstance(p, str)]
+    previous, unreadable = _read_manifest(out)
     for name in names:
         if (stage / name).exists():
             os.replace(stage / name, out / name)
-    for name in set(previous) - set(names):
-        if isinstance(name, str) and "/" not in name and name not in (MANIFEST, LOCK, ""):
-            try:
-                (out / name).unlink()
-            except OSError:
-                pass
-    atomic_write_text(out / MANIFEST, json.dumps(names) + "\n")
+    kept = sorted(name for name, digest in previous.items()
+                  if name not in names and not _remove_own_output(out, name, digest, protected))
+    written = {name: digests.get(name) or _digest(out / name) for name in names if (out / name).is_file()}
+    atomic_write_text(out / MANIFEST, json.dumps({"machdyn_outputs": MANIFEST_FORMAT, "files": written},
+                                                 indent=1) + "\n")
     fsync_folder(out)
     _remove_tree(stage)
+    notes = []
+    if unreadable:
+        notes.append(f"the list of earlier outputs ({out / MANIFEST}) {unreadable}; no earlier output was removed")
+    if kept:
+        shown = ", ".join(kept[:5]) + (f" and {len(kept) - 5} more" if len(kept) > 5 else "")
+        notes.append(f"left in {out}/ as they are not unchanged outputs of an earlier run: {shown}")
+    return notes
+
+
+#: The format of :data:`MANIFEST`: ``{"machdyn_outputs": 2, "files": {name: sha-256 of the content written}}``.
+MANIFEST_FORMAT = 2
+
+
+#: The kinds of file an output set writes (results, tables, report, designs, drawings): no other is ever removed.
+_OUTPUT_SUFFIXES = frozenset({".json", ".csv", ".html", ".js", ".toml", ".dxf"})
+
+
+def _plain_name(name: object) -> bool:
+    """A file name directly inside the output folder and not hidden (``.env``, ``.git``): the only names an output
+    set writes or removes."""
+    return (isinstance(name, str) and name != "" and not name.startswith(".") and "/" not in name
+            and "\\" not in name and "\0" not in name)
+
+
+def _digest(path: Path) -> str:
+    """The SHA-256 of a file's content (hex)."""
+    sha = hashlib.sha256()
+    with open(path, "rb") as handle:
+        for block in iter(lambda: handle.read(1 << 20), b""):
+            sha.update(block)
+    return sha.hexdigest()
+
+
+def _read_manifest(out: Path) -> tuple[dict[str, str], str]:
+    """The earlier outputs of ``out`` by name with their digests, and why the list cannot be trusted ("" if it
+    can): only a manifest in machdyn's own format names files that a run may remove."""
+    path = out / MANIFEST
+    if path.is_symlink():
+        return {}, "is a symbolic link"
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        return {}, ""
+    except (OSError, ValueError):
+        return {}, "cannot be read"
+    if isinstance(data, list):  # an earlier machdyn's list of names, without digests: nothing is provably ours
+        stale = sorted(n for n in data if _plain_name(n) and (out / n).exists())
+        return {}, "holds no content digests" if stale else ""
+    files = data.get("files") if isinstance(data, dict) and data.get("machdyn_outputs") == MANIFEST_FORMAT else None
+    if not isinstance(files, dict):
+        return {}, "is not in machdyn's format"
+    return {n: d for n, d in files.items() if isinstance(n, str) and isinstance(d, str)}, ""
+
+
+def _remove_own_output(out: Path, name: str, digest: str, protected: list[Path]) -> bool:
+    """Remove ``out/name`` if it is a regular file (not a link) directly in ``out`` whose content is still the
+    one machdyn wrote (``digest``) and is not a protected file (the problem file); True if it is gone."""
+    if not _plain_name(name) or Path(name).suffix.lower() not in _OUTPUT_SUFFIXES:
+        return False
+    path = out / name
+    try:
+        info = path.lstat()
+    except FileNotFoundError:
+        return True
+    except OSError:
+        return False
+    if not stat.S_ISREG(info.st_mode) or info.st_nlink > 1:  # a link could reach a file outside the folder
+        return False
+    try:
+        if any(p.exists() and os.path.samefile(p, path) for p in protected):
+            return False
+        if _digest(path) != digest:
+            return False
+        path.unlink()
+    except OSError:
+        return False
+    return True
 
 
 def _remove_tree(path: Path) -> None:

@@ -17,7 +17,7 @@ import json
 import math
 import os
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -40,7 +40,8 @@ class RunResult:
     ``results`` every scalar in SI with its label; ``summary`` the summary table (the same one the command line
     prints and the report shows); ``outcomes`` each stage's outcome by name (the kind's under its own name, each
     capability's under its table); ``warnings`` and ``failed_checks`` each said once; ``mechanism`` and
-    ``analysis`` for kinds built on a linkage.
+    ``analysis`` for kinds built on a linkage; ``source`` the problem file (never removed by :meth:`write`);
+    ``folder_notes`` what :meth:`write` left in the output folder that an earlier run listed (one line each).
     """
 
     kind: str
@@ -54,6 +55,8 @@ class RunResult:
     failed_checks: list[str] = field(default_factory=list)
     mechanism: Any = None
     analysis: Any = None
+    source: Path | None = None
+    folder_notes: list[str] = field(default_factory=list)
     _frames: dict[str, Any] | None = field(default=None, repr=False)
 
     @property
@@ -104,8 +107,9 @@ class RunResult:
 
     def results_json(self) -> dict[str, Any]:
         """The content of results.json: the problem's name and kind, every scalar with its unit, the warnings
-        and the failed design checks."""
-        return {
+        and the failed design checks; after an optimisation, ``designs`` says which keys are of the design as
+        given and which of the best design."""
+        data = {
             "machdyn_version": __version__,
             "problem": self.title,
             "kind": self.kind,
@@ -113,6 +117,12 @@ class RunResult:
             "warnings": list(self.warnings),
             "failed_checks": list(self.failed_checks),
         }
+        if optimised(self.outcomes):  # two designs' results side by side: say which keys are which
+            data["designs"] = {
+                "as_given": "every scalar whose key does not start with 'optimise.': the design as the file gives it",
+                "best_design": "the scalars 'optimise.best.*': the best design found, written to best_design.toml",
+            }
+        return data
 
     def report_sections(self) -> list[tuple[str, str]]:
         """(heading, html) of every stage's report sections, in the order the stages ran."""
@@ -140,8 +150,10 @@ class RunResult:
         (created if missing) as one set: all are written first, then swapped in together, so an interrupted
         run leaves the previous set whole. With a ``watch_stamp`` (``machdyn watch``) the set also holds
         ``report.stamp.js``, which an open report polls to re-load itself. ``folders``: (new, target) folders
-        swapped in with the set (an exploration's Parquet store). Returns the paths written."""
-        outputs = OutputSet(out_dir)
+        swapped in with the set (an exploration's Parquet store). Returns the paths written. Files of an
+        earlier set that this one does not hold are removed only if machdyn wrote them and they are unchanged
+        (see :class:`~machdyn.outputs.OutputSet`); the others are named in :attr:`folder_notes`."""
+        outputs = OutputSet(out_dir, protect=(self.source,) if self.source is not None else ())
         try:
             outputs.json("results.json", self.results_json())
             step("tables")
@@ -157,7 +169,9 @@ class RunResult:
         except BaseException:
             outputs.abort()
             raise
-        return outputs.commit(folders)
+        paths = outputs.commit(folders)
+        self.folder_notes = outputs.notes
+        return paths
 
 
 def _loaded(problem: Any, text: str | None) -> LoadedProblem:
@@ -255,11 +269,32 @@ def run_problem(problem: Any, *, text: str | None = None, step: Step = no_step) 
     _refuse_non_finite(values)
     results = collect(values, known, units)
     title = k.title(loaded.spec)
+    table = summarise(title, results, summary)
     return RunResult(
         kind=loaded.kind, title=title, problem=loaded.spec, problem_text=loaded.text, results=results,
-        summary=summarise(title, results, summary), outcomes=outcomes, warnings=warnings, failed_checks=failed,
+        summary=name_the_designs(table) if optimised(outcomes) else table, outcomes=outcomes, warnings=warnings,
+        failed_checks=failed,
         mechanism=first.mechanism, analysis=first.analysis,
+        source=Path(loaded.source) if loaded.source is not None else None,
     )
+
+
+#: The heading of the rows of the file's own design when an optimisation reports a best design beside them.
+AS_GIVEN = "As given: "
+
+
+def optimised(outcomes: Mapping[str, Outcome]) -> bool:
+    """True when an ``[optimise]`` table found a best design (whose rows sit beside the file's own design)."""
+    done = outcomes.get("optimise")
+    return done is not None and done.results is not None
+
+
+def name_the_designs(summary: Summary) -> Summary:
+    """The summary with each row of the design as the file gives it headed "As given: ", so that it is never
+    read as the best design's (those rows are headed "Best design: ", the search's own "Optimisation: ")."""
+    rows = tuple(row if row.key.startswith("optimise.") else replace(row, label=AS_GIVEN + row.label)
+                 for row in summary.rows)
+    return Summary(summary.title, rows)
 
 
 def _refuse_non_finite(values: dict[str, Any]) -> None:

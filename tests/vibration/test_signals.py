@@ -139,10 +139,11 @@ def test_record_file_errors(tmp_path):
         read_record(tmp_path / "missing.csv")
     p = tmp_path / "nounit.csv"
     p.write_text("time [s],front\n0,1\n0.1,2\n")
-    with pytest.raises(InputError, match="column 'front' .* has no unit"):
+    with pytest.raises(InputError, match="Column 2 of .*nounit.csv has no unit in its header"):
         read_record(p)
     p.write_text("time [s],front [N]\n0,1\n0.1,2\n")
-    with pytest.raises(InputError, match="unit 'N' of column 'front'.*not an acceleration or velocity unit"):
+    with pytest.raises(InputError, match="unit in the header of column 2 of .* is not a time, acceleration or "
+                                         "velocity unit"):
         read_record(p)
     p.write_text("time [s],front [m/s]\n0,1\n0.1,2\n0.15,3\n")
     with pytest.raises(InputError, match="even steps"):

@@ -34,6 +34,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..units import ureg
+from ..vibration.signals import csv_failure
 from .field import Reading
 
 __all__ = ["RunRecord", "read_run", "pulses", "one_x"]
@@ -118,17 +119,18 @@ def read_run(path: str | Path, reference: str, sensors: tuple[str, ...], max_byt
     try:
         frame = pd.read_csv(p, comment="#", skipinitialspace=True, encoding="utf-8-sig")
     except (ValueError, pd.errors.ParserError, UnicodeDecodeError) as exc:
-        raise InputError(f"The record file {p} is not a readable CSV: {exc}.") from None
+        raise InputError(f"The record file {p} is not a readable CSV: {csv_failure(exc)}.") from None
     names = {}
     for j, column in enumerate(frame.columns):
         m = _HEADER.match(str(column))
         if not m:
-            raise InputError(f"The column '{column}' of {p} has no unit: write the header as 'name [unit]'.")
+            raise InputError(f"Column {j + 1} of {p} has no unit in its header, so the file is not a record: write "
+                             "the header as 'name [unit]', e.g. 'time [s]' or 'keyphasor [V]'.")
         names[m["name"].strip()] = (j, m["unit"].strip())
     first = str(frame.columns[0])
     tname = _HEADER.match(first)
     if tname is None or tname["unit"].strip() not in _TIME:
-        raise InputError(f"The first column of {p} must be the time in s or ms; got '{first}'.")
+        raise InputError(f"The first column of {p} must be the time in s or ms (a header such as 'time [s]').")
     try:
         values = frame.to_numpy(dtype=float)
     except ValueError:
@@ -140,8 +142,9 @@ def read_run(path: str | Path, reference: str, sensors: tuple[str, ...], max_byt
         raise InputError(f"The time column of {p} must increase strictly over at least 8 samples.")
     for name in (reference, *sensors):
         if name not in names:
-            raise InputError(f"The record file {p} has no channel '{name}'; its channels: "
-                             f"{', '.join(list(names)[1:])}.")
+            raise InputError(f"The record file {p} has no channel '{name}' (named in the problem file); its header "
+                             f"names {len(names) - 1} channel(s) after the time, which are not quoted here: check the "
+                             "spelling against the file's first line.")
     check_reference(values[:, names[reference][0]], reference, names[reference][1], sensors, str(p))
     times = pulses(t, values[:, names[reference][0]], f"The reference channel '{reference}' of {p}")
     if times.size < 3:

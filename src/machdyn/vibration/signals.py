@@ -291,11 +291,13 @@ class Record:
         return self.time.size / self.sampling_rate
 
 
-def _unit_of(column: str, source: str) -> tuple[str, str, float]:
+def _unit_of(column: str, source: str, number: int) -> tuple[str, str, float]:
+    """The channel name, quantity and scale to SI of column ``number`` (1-based) from its header text. A message
+    names the file and the column's number, never the text: the file may not be a record at all (a ``.env``)."""
     match = _HEADER.match(column)
     if not match:
-        raise InputError(f"The column '{_quote(column)}' of {source} has no unit: write the header as 'name [unit]', "
-                         f"e.g. 'front [m/s^2]' or 'time [s]'.")
+        raise InputError(f"Column {number} of {source} has no unit in its header, so the file is not a record: "
+                         f"write the header as 'name [unit]', e.g. 'front [m/s^2]' or 'time [s]'.")
     name, unit = match["name"].strip(), match["unit"].strip()
     key = unit.replace(" ", "").lower().replace("²", "^2").replace("**", "^")
     if key in _ACCELERATION_UNITS:
@@ -305,8 +307,8 @@ def _unit_of(column: str, source: str) -> tuple[str, str, float]:
     if key in _TIME_UNITS:
         return name, "time", _TIME_UNITS[key]
     known = ", ".join([*_ACCELERATION_UNITS, *_VELOCITY_UNITS])
-    raise InputError(f"The unit '{_quote(unit)}' of column '{_quote(name)}' in {source} is not an acceleration or "
-                     f"velocity unit; use one of {known}.")
+    raise InputError(f"The unit in the header of column {number} of {source} is not a time, acceleration or "
+                     f"velocity unit; use s or ms for the time and one of {known}.")
 
 
 def _regular_file_size(p: Path) -> int:
@@ -349,7 +351,21 @@ def _check_header(p: Path) -> None:
     for j, name in enumerate(names):
         if name and name in names[:j]:
             raise InputError(f"The channel names of {p} must be unique; column {j + 1} repeats column "
-                             f"{names.index(name) + 1} ('{_quote(name)}').")
+                             f"{names.index(name) + 1}.")
+
+
+def csv_failure(exc: Exception) -> str:
+    """Why pandas could not read a CSV file, without the file's text: the parser's own messages name line and
+    field counts only; any other reason is given by its kind."""
+    import pandas as pd
+
+    if isinstance(exc, pd.errors.ParserError):
+        return _quote(str(exc).strip().splitlines()[0] if str(exc).strip() else "a malformed line", 160)
+    if isinstance(exc, UnicodeDecodeError):
+        return f"it is not UTF-8 text (byte {exc.start})"
+    if isinstance(exc, pd.errors.EmptyDataError):
+        return "it is empty"
+    return type(exc).__name__
 
 
 def _quote(text: str, limit: int = 40) -> str:
@@ -380,15 +396,16 @@ def read_record(path, *, max_bytes: int = MAX_BYTES) -> Record:
     try:
         frame = pd.read_csv(p, comment="#", skipinitialspace=True, encoding="utf-8-sig")
     except (ValueError, pd.errors.ParserError, UnicodeDecodeError) as exc:
-        raise InputError(f"The record file {p} is not a readable CSV: {exc}.") from None
+        raise InputError(f"The record file {p} is not a readable CSV: {csv_failure(exc)}.") from None
     if frame.shape[1] < 2:
         raise InputError(f"The record file {p} needs a time column and at least one channel; "
                          f"got {frame.shape[1]} column(s).")
     if len(frame) > MAX_SAMPLES:
         raise InputError(f"The record file {p} has {len(frame)} samples; at most {MAX_SAMPLES} are read.")
-    columns = [_unit_of(str(c), str(p)) for c in frame.columns]
+    columns = [_unit_of(str(c), str(p), j) for j, c in enumerate(frame.columns, start=1)]
     if columns[0][1] != "time":
-        raise InputError(f"The first column of {p} must be the time in s or ms; got '{_quote(str(frame.columns[0]))}'.")
+        raise InputError(f"The first column of {p} must be the time in s or ms (a header such as 'time [s]'); its "
+                         f"unit is an {columns[0][1]}'s.")
     try:
         values = frame.to_numpy(dtype=float)
     except ValueError:
@@ -412,9 +429,9 @@ def read_record(path, *, max_bytes: int = MAX_BYTES) -> Record:
     channels, quantities = {}, {}
     for j, (name, quantity, scale) in enumerate(columns[1:], start=1):
         if quantity == "time":
-            raise InputError(f"Only the first column of {p} may be a time; got '{_quote(str(frame.columns[j]))}'.")
+            raise InputError(f"Only the first column of {p} may be a time; column {j + 1} is one too.")
         if name in channels:
-            raise InputError(f"The channel names of {p} must be unique; got '{_quote(name)}' twice.")
+            raise InputError(f"The channel names of {p} must be unique; column {j + 1} repeats an earlier one.")
         x = values[:, j]
         bad = np.flatnonzero(~np.isfinite(x))
         if bad.size:

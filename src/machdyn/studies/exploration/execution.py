@@ -96,6 +96,9 @@ class Execution:
     #: When a list: an exploration of a changed problem is not swapped into its store when it completes; its
     #: (pending folder, store) is appended here, for the caller to swap in with its other outputs.
     deferred: list | None = None
+    #: True: a folder that is not this problem's store (another problem file's, or partitions without a
+    #: manifest) is replaced rather than refused (the command line's ``--replace``).
+    replace: bool | None = None
 
 
 _CURRENT: ContextVar[Execution | None] = ContextVar("machdyn_explore_execution", default=None)
@@ -120,6 +123,27 @@ def execution(**settings: Any) -> Iterator[Execution]:
         yield now
     finally:
         _CURRENT.reset(token)
+
+
+#: What a stopped run that is not a design-space exploration keeps (the command line's message): nothing; a sweep
+#: run variant by variant, an optimisation, a single analysis all start again from their beginning.
+RESTARTS = ("the outputs were not replaced, and nothing of this run was kept: run again, it starts from the "
+            "beginning (only a design-space exploration, [sweep] with a method, resumes from its finished "
+            "partitions)")
+
+
+def ignored_where(problem: Any, warnings: list[str]) -> list[str]:
+    """A warning when ``workers`` or ``scheduler`` is set (``--workers``, ``--scheduler``) for a run they do not
+    act on: they spread the designs of a design-space exploration only (a sweep run variant by variant says so
+    in its own ``warnings``)."""
+    settings = current()
+    given = [name for name, value in (("--workers", settings.workers), ("--scheduler", settings.scheduler))
+             if value is not None]
+    if not given or getattr(getattr(problem, "sweep", None), "is_exploration", False) or \
+            any("--workers" in w for w in warnings):
+        return []
+    return [f"{' and '.join(given)} {'were' if len(given) > 1 else 'was'} ignored: only a design-space exploration "
+            "([sweep] with a method) runs on workers; this run ran in this process."]
 
 
 #: Runs estimated to take less than this [s] are not announced.

@@ -209,6 +209,7 @@ def explore(
     progress: Progress | bool | None = None,
     on_partition: Callable[[int], None] | None = None,
     source: str | None = None,
+    replace: bool | None = None,
 ) -> Exploration:
     """Explore the design space of a linkage problem with a ``[sweep]`` table (a problem, a path or TOML text).
 
@@ -220,6 +221,8 @@ def explore(
     progress : ``progress(designs done, designs in all)`` as partitions finish, or True for a progress bar on
         the terminal.
     on_partition : ``on_partition(index)`` after each partition computed is written.
+    replace : replace a store that is not this problem's (another problem file's, or partitions without a
+        manifest) instead of refusing it (default: the execution settings').
     """
     if isinstance(problem, str | os.PathLike):
         loaded = read_problem(problem)
@@ -234,7 +237,8 @@ def explore(
             "partition": plan.space.partition, "partitions": plan.space.partitions,
             "columns": {k: {"unit": u, "label": label} for k, (u, label) in units.items()}}
     _estimate(plan, workers)
-    keeper = PartitionStore(folder, plan.fingerprint, info)
+    keeper = PartitionStore(folder, plan.fingerprint, info, source=source,
+                            replace=bool(replace if replace is not None else settings.replace))
     report = progress if progress is not None else settings.progress
     try:
         with contextlib.ExitStack() as stack:

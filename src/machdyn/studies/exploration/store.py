@@ -20,6 +20,10 @@ What a reader of the folder can rely on:
   replaces the store only once every partition is written (the old one is renamed aside, the new one renamed
   in, the old one removed). An interrupted or failed run of a changed problem leaves the previous store whole;
   run again, it resumes in its pending folder.
+- **Never another's store**: the manifest records the problem file the store was written for; a folder of
+  partitions without a readable manifest, or the store of another problem file, is refused unless the run is
+  asked to replace it (``replace``, the command line's ``--replace``); this problem file's own earlier store is
+  replaced as above, and the run says so.
 - **One run at a time**: a lock file beside the store (``.NAME.lock``) refuses a second run at once; the
   system releases it when the run ends, however it ends.
 
@@ -71,11 +75,17 @@ def checksum(columns: dict[str, np.ndarray]) -> str:
     return digest.hexdigest()
 
 
-def _manifest_fingerprint(folder: Path) -> str | None:
+def _manifest(folder: Path) -> dict[str, Any]:
+    """The store's manifest, or {} if there is none or it cannot be read."""
     try:
-        value = json.loads((folder / MANIFEST).read_text(encoding="utf-8")).get("fingerprint")
-    except (OSError, ValueError, AttributeError):
-        return None
+        value = json.loads((folder / MANIFEST).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+    return value if isinstance(value, dict) else {}
+
+
+def _manifest_fingerprint(folder: Path) -> str | None:
+    value = _manifest(folder).get("fingerprint")
     return value if isinstance(value, str) else None
 
 
@@ -86,10 +96,14 @@ class PartitionStore:
     resumed) or its pending folder (a changed exploration, until :meth:`finish`). ``notes`` collects what a run
     should tell its user (partitions recomputed because they did not match)."""
 
-    def __init__(self, folder: str | os.PathLike, fingerprint: str, info: dict[str, Any]):
+    def __init__(self, folder: str | os.PathLike, fingerprint: str, info: dict[str, Any], *,
+                 source: str | os.PathLike | None = None, replace: bool = False):
         self.final = Path(folder)
         self.fingerprint = fingerprint
         self.notes: list[str] = []
+        self.source = str(Path(source).resolve()) if source else None
+        self.replace = replace
+        info = {**info, "problem_file": self.source}
         if self.final.exists() and not self.final.is_dir():
             raise OperationalError(f"the exploration store '{self.final}' exists and is not a folder; remove it "
                                    f"or choose another store")
@@ -127,11 +141,7 @@ class PartitionStore:
                 shutil.rmtree(other, ignore_errors=True)
         if final.is_dir():
             previous = _manifest_fingerprint(final)
-            foreign = [p.name for p in final.iterdir()
-                       if not (_PART.match(p.name) or _TEMPORARY.match(p.name) or p.name in (MANIFEST, ".complete"))]
-            if previous is None and foreign:
-                raise OperationalError(f"'{final}' holds files that are not an exploration's partitions "
-                                       f"({', '.join(sorted(foreign)[:3])}); choose another store")
+            self._refuse_another(final, previous)
         else:
             previous = None
         in_place = not final.exists() or previous == self.fingerprint or not any(final.iterdir())
@@ -149,6 +159,38 @@ class PartitionStore:
         except PermissionError as exc:
             raise OperationalError(f"cannot write the exploration store '{folder}': {exc.strerror or exc}") from None
         return folder
+
+    def _refuse_another(self, final: Path, previous: str | None) -> None:
+        """Refuse a folder that is not this problem's store: files that are not partitions, always; partitions
+        without a readable manifest, or the store of another problem file, unless ``replace``. A store of this
+        problem file written for another problem or design space is replaced (when this run completes), and
+        the run says so."""
+        names = [p.name for p in final.iterdir()]
+        foreign = [n for n in names if not (_PART.match(n) or _TEMPORARY.match(n) or n in (MANIFEST, ".complete"))]
+        if previous is None and foreign:
+            raise OperationalError(f"'{final}' holds files that are not an exploration's partitions "
+                                   f"({', '.join(sorted(foreign)[:3])}); choose another store")
+        if previous == self.fingerprint or not names:
+            return
+        ask = "choose another store (--out, or [sweep] store), or run with --replace to replace it"
+        if previous is None:
+            if not self.replace:
+                raise OperationalError(f"'{final}' holds partitions but no readable {MANIFEST}, so it is not known "
+                                       f"to be an exploration store of machdyn; {ask}")
+            self.notes.append(f"The folder '{final}' (partitions without a readable {MANIFEST}) is replaced by "
+                              "this exploration (--replace).")
+            return
+        manifest = _manifest(final)
+        owner = manifest.get("problem_file")
+        if "problem_file" in manifest and owner != self.source:  # a store without the key predates it: ours
+            if not self.replace:
+                whose = f"the problem file {owner}" if isinstance(owner, str) else "a problem given as text"
+                raise OperationalError(f"'{final}' holds the exploration of {whose}, not of this problem; {ask}")
+            self.notes.append(f"The exploration store '{final}' of another problem is replaced by this one "
+                              "(--replace).")
+            return
+        self.notes.append(f"The exploration store '{final}' held this problem's exploration of another problem or "
+                          "design space; it is replaced by this one when it completes.")
 
     @property
     def pending(self) -> bool:

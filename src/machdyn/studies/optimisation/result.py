@@ -36,7 +36,7 @@ class OptimiseResult:
     from its problem file, meets every constraint; ``converged`` and ``message`` the search's own report;
     ``front_x``/``front_f`` the Pareto front (multi-objective only: designs x variables, designs x objectives,
     objectives as results in SI); ``problem`` the best design as a validated problem and ``problem_text`` as
-    a problem file ready to run.
+    a problem file ready to run; ``improved`` whether the best design is better than the file's own.
     """
 
     method: str
@@ -63,6 +63,9 @@ class OptimiseResult:
     warnings: tuple[str, ...] = field(default_factory=tuple)
     #: the nominal design and the optimum analysed one by one for playback (filled in by the stage)
     views: tuple = ()
+    #: whether the best design is better than the file's own (None: several objectives, or the file's values lie
+    #: outside the bounds, so there is no single design to compare with)
+    improved: bool | None = None
 
     @property
     def designs_per_second(self) -> float:

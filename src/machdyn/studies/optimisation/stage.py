@@ -36,6 +36,7 @@ LABELS = {
     "optimise.front_spacing": Label("Optimisation: spacing of the Pareto front (Schott; 0 = evenly spread)"),
     "optimise.front_hypervolume": Label("Optimisation: hypervolume of the final front (normalised)"),
     "optimise.feasible": Label("Optimisation: a feasible design was found (1 yes, 0 no)"),
+    "optimise.improved": Label("Optimisation: better than the design as given (1 yes, 0 no)"),
 }
 
 
@@ -105,6 +106,9 @@ def run(ctx: StageContext) -> Outcome:
         if res_key in asked:
             summary.append(key)
     summary += ["optimise.evaluations", "optimise.converged", "optimise.verified"]
+    if result.improved is not None:  # one objective and a start inside the bounds: did the search beat it?
+        scalars["optimise.improved"] = 1.0 if result.improved else 0.0
+        summary.append("optimise.improved")
     h = result.history
     series: dict[str, Any] = {"optimise_history": {
         "generation": (h.generation.astype(float), ""),

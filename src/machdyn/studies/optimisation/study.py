@@ -11,6 +11,7 @@ import numpy as np
 from ...errors import ProblemFileError
 from ...problem.build import build_mechanism, crank_angles
 from ...problem.dumper import dump_problem
+from ...results.labels import display_factor
 from ...results.population import DEFAULT_MIN_TRANSMISSION_DEG
 from ..per_design import RunDesign, capability_results
 from .by_runs import RunEvaluator, setup_by_runs, verify_by_runs
@@ -97,12 +98,23 @@ def optimise(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None = No
     space = ev.space
     warnings: list[str] = []
     front_x = front_f = None
+    improved: bool | None = None
     if len(ev.objectives) == 1:
-        x, converged, message, history, seconds = differential_evolution(
+        start = current_values(space)
+        x, converged, message, history, seconds, improved = differential_evolution(
             ev, population=spec.population, generations=spec.generations, tolerance=spec.tolerance,
-            seed=spec.seed, x0=current_values(space), show=_show,
+            seed=spec.seed, x0=start, show=_show,
         )
         method = "differential_evolution"
+        if improved is False:
+            assert start is not None
+            given = ", ".join(f"{v.name} = {value * display_factor(v.unit, v.display_unit):.6g} {v.display_unit}"
+                              .rstrip() for v, value in zip(space.variables, start, strict=True))
+            warnings.append(
+                f"The search found no design better than the one the file gives ({given}): that design may be "
+                "the optimum within the bounds, or the search too short to find a better one (raise "
+                "optimise.generations or optimise.population, or widen the bounds)."
+            )
     else:
         front_x, front_f, history, seconds = nsga2(ev, population=spec.population, generations=spec.generations,
                                                    seed=spec.seed, show=_show)
@@ -130,7 +142,7 @@ def optimise(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None = No
         x=x, results=results, objectives=ev.objectives, constraints=ev.constraints, objective=objective,
         converged=converged, message=message, evaluations=ev.evaluations, seconds=seconds, verified=verified,
         history=history, problem=best_problem, problem_text=dump_problem(best_problem),
-        front_x=front_x, front_f=front_f, warnings=tuple(warnings),
+        front_x=front_x, front_f=front_f, warnings=tuple(warnings), improved=improved,
     )
 
 
