@@ -56,7 +56,6 @@ def analyse_linkage(problem: Any, mech: Any, step: Step, warnings: list[str] | N
             said.append(str(w))
     if np.ndim(analysis.forces.driving_torque) == 1:
         for name, (mean, rms) in load_powers(analysis).items():
-            values[f"load.{name}.mean_power"] = mean
             # Over a whole turn a process load takes work out of the machine; one that puts work in has
             # most likely been given the wrong sign.
             if full_uniform_cycle(analysis.kinematics.crank_angle) and mean > 1e-3 * rms:

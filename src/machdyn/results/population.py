@@ -50,6 +50,7 @@ from ..linkage.loads import window
 from ..linkage.mass_centre import inertial_force, inertial_shaking_moment
 from ..linkage.model import GROUND, RRR, Mechanism, joints, output_bodies, split_ref
 from ..linkage.motion import DEAD_TOL, is_full_turn
+from ..linkage.reductions import worst_of
 from .catalogue import ENGINE_SUMMARIES, MECHANISM, find, population_quantities
 from .linkage import linkage_scalars
 
@@ -419,7 +420,7 @@ def _transmission(kin, ok, shape) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     good = np.broadcast_to(ok, mu.shape) & np.isfinite(mu)
     low = np.where(good, mu, np.inf).min(axis=(0, 2))
     high = np.where(good, mu, -np.inf).max(axis=(0, 2))
-    worst = np.where(good, np.minimum(mu, np.pi - mu), np.inf).min(axis=(0, 2))
+    worst = np.where(good, worst_of(mu, mu), np.inf).min(axis=(0, 2))
     none = ~good.any(axis=(0, 2))
     return (np.where(none, np.nan, low), np.where(none, np.nan, high), np.where(none, np.nan, worst))
 

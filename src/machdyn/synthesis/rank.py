@@ -33,6 +33,7 @@ import numpy as np
 
 from ..dynamics.flywheel import flywheel_inertia_classic
 from ..linkage import BodyTorque, PointForce, energy_fluctuation, four_bar, kinematics, kinetostatics, slider_crank
+from ..linkage.reductions import worst_of
 from .candidate import TWO_PI, Candidate
 from .defects import Report
 
@@ -138,7 +139,7 @@ def evaluate(cands: list[Candidate], reports: list[Report], drive: Drive = Drive
                 shake = np.asarray(forces.shaking_force)
                 mu = np.asarray(kin.dyad_reports[0].transmission)
                 inertial = _inertial_shaking(mech, kin)
-            mu = np.minimum(mu, np.pi - mu)
+            mu = worst_of(mu, mu)
             k = len(idx)
             bad = ~np.isfinite(torque[:k]).all(axis=1)
             # fmax / fmin skip NaN without warning (a design that cannot close is NaN throughout)
