@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from machdyn.problem.build import build_mechanism, crank_angles
+from machdyn.problem.build import build_mechanism, crank_angles, harmonics_of
 from machdyn.reading import load_problem
 from machdyn.results.catalogue import (
     ALIASES,
@@ -106,7 +106,7 @@ def test_every_mechanism_quantity_can_be_named_a_sweep_column_and_an_objective()
         problem = _problem(name)
         machine = problem.mechanism.machine
         mech = build_mechanism(problem)
-        names = result_names(mech, machine)
+        names = result_names(mech, machine, harmonics_of(problem))
         for key in names:
             named.setdefault(find(key)[0].key, []).append(key)
             SweepSpec(method="sobol", samples=8, objective=key,

@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import ProblemFileError
-from ..problem.build import build_mechanism, crank_angles
+from ..problem.build import build_mechanism, crank_angles, harmonics_of
 from ..problem.dumper import dump_problem
 from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
 from .by_runs import RunEvaluator, setup_by_runs, verify_by_runs
@@ -59,7 +59,7 @@ def setup(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None = None)
         problems += exc.problems
     mech = build_mechanism(problem)
     machine = getattr(problem.mechanism, "machine", None)
-    linkage_names = result_names(mech, machine)
+    linkage_names = result_names(mech, machine, harmonics_of(problem))
     per_design = {k: u for k, u in capability_results(problem).items() if k not in set(linkage_names)}
     names = linkage_names + sorted(per_design)
 
