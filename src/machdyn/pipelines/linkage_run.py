@@ -42,7 +42,7 @@ def analyse_linkage(problem: Any, mech: Any, step: Step, warnings: list[str] | N
     about = tuple(problem.output.shaking_moment_about)
     notes: list[str] = []
     values, units = linkage_scalars(analysis, mech, about=about, harmonic_orders=problem.output.harmonics,
-                                    notes=notes)
+                                    notes=notes, exact=True)
     said += notes
     balance = float(np.max(np.atleast_1d(analysis.work_balance.relative)))
     if not balance < 1e-6:

@@ -204,12 +204,14 @@ def linkage_scalars(
     harmonic_orders: int = 0,
     notes: list[str] | None = None,
     with_loads: bool = True,
+    exact: bool = False,
 ) -> tuple[dict[str, Any], dict[str, str]]:
     """Every scalar result of an :func:`~machdyn.linkage.analyse` result in SI: (values, units of the keys made
     at run time). ``about`` [m] is the point of the shaking moment; ``harmonic_orders`` > 0 adds the amplitude
     and phase of that many harmonics of the driving torque, the shaking moment and the frame force components;
     ``notes`` collects why a result could not be formed (the energy fluctuation of a partial crank range);
-    ``with_loads`` adds the mean power of each applied load (``load.<load>.mean_power``).
+    ``with_loads`` adds the mean power of each applied load (``load.<load>.mean_power``); ``exact`` makes
+    the extremes of the series exact between the samples (:func:`exact_extremes`; a single design).
 
     The results that reduce a series (:data:`REDUCED`) are formed from their declaration alone: the catalogue
     names the series (:data:`SERIES`) and the reduction (:mod:`machdyn.linkage.reductions`)."""
@@ -224,6 +226,8 @@ def linkage_scalars(
             continue
         for key, name in _declared(quantity, analysis):
             out[key] = _reduced(series(analysis, name, about), quantity.over_positions, kin, designs)
+    if exact:
+        exact_extremes(analysis, out, about)
     if tuple(about) != (0.0, 0.0):
         out["shaking_moment.about_x"], out["shaking_moment.about_y"] = float(about[0]), float(about[1])
     torque = forces.driving_torque
@@ -287,6 +291,61 @@ def linkage_scalars(
         out.update({k: _scalar(v, designs) for k, v in values.items()})
         units.update(hunits)
     return out, units
+
+
+#: The reductions whose value is an extreme of the series, refined by :func:`exact_extremes`: each is the
+#: extreme of the series it names (a range is its largest minus its smallest value).
+_EXTREMES = {"max": ("max",), "min": ("min",), "max_abs": ("max_abs",), "range": ("max", "min")}
+
+
+def exact_extremes(analysis: Any, values: dict[str, Any], about: tuple[float, float] = (0.0, 0.0),
+                   keys: Iterable[str] | None = None) -> list[str]:
+    """Replace in ``values`` each extreme of a series (:data:`REDUCED` quantities reduced by a maximum, a
+    minimum, a largest magnitude or a range; only ``keys`` if given) by the exact extreme of the closed form
+    between the samples and at the loads' breakpoints (:func:`machdyn.linkage.extremes.refine`), so that a
+    peak does not depend on the number of positions. A single design at a constant crank speed and
+    acceleration only (else the values stay as sampled). Returns the keys refined."""
+    from ..linkage import analyse
+    from ..linkage.analysis import analysed_range
+    from ..linkage.extremes import breakpoints, refine
+
+    kin = analysis.kinematics
+    mech = kin.mechanism
+    phi = np.asarray(kin.crank_angle, dtype=float)
+    speed, acceleration = np.asarray(kin.speed, dtype=float), np.asarray(kin.acceleration, dtype=float)
+    constant = all(v.size and np.all(v == v.ravel()[0]) for v in (speed, acceleration))
+    if design_count(analysis) is not None or phi.ndim != 1 or not constant:
+        return []
+    wanted = None if keys is None else set(keys)
+    jobs: dict[str, tuple[str, str]] = {}  # "<series>|<extreme>" -> (series, extreme)
+    refined: dict[str, tuple[str, tuple[str, ...]]] = {}
+    for quantity in REDUCED:
+        if quantity.over_positions not in _EXTREMES:
+            continue
+        for key, name in _declared(quantity, analysis):
+            if key in values and (wanted is None or key in wanted):
+                refined[key] = (name, _EXTREMES[quantity.over_positions])
+                for how in _EXTREMES[quantity.over_positions]:
+                    jobs[f"{name}|{how}"] = (name, how)
+    if not jobs:
+        return []
+    names = sorted({name for name, _ in jobs.values()})
+    sampled = {job: (series(analysis, name, about), how) for job, (name, how) in jobs.items()}
+
+    def evaluate(angles: np.ndarray) -> dict[str, np.ndarray]:
+        at = analyse(mech, angles, float(speed.ravel()[0]), float(acceleration.ravel()[0]), diagnostics=False)
+        found = {name: series(at, name, about) for name in names}
+        return {job: found[name] for job, (name, _how) in jobs.items()}
+
+    with np.errstate(all="ignore"):
+        exact = refine(evaluate, phi, sampled, breakpoints(mech), periodic=analysed_range(phi) is None)
+    done = []
+    for key, (name, hows) in refined.items():
+        if all(f"{name}|{how}" in exact for how in hows):
+            found = [exact[f"{name}|{how}"] for how in hows]
+            values[key] = float(found[0] - found[1]) if len(found) == 2 else float(found[0])
+            done.append(key)
+    return done
 
 
 def harmonic_scalars(analysis: Any, about: tuple[float, float], orders: int) -> tuple[dict, dict]:
