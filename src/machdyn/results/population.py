@@ -52,7 +52,7 @@ from ..linkage.model import GROUND, RRR, Mechanism, joints, output_bodies, split
 from ..linkage.motion import DEAD_TOL, is_full_turn
 from ..linkage.reductions import worst_of
 from .catalogue import ENGINE_SUMMARIES, find, population_quantities
-from .linkage import HARMONIC_SERIES, exact_extremes, linkage_scalars
+from .linkage import HARMONIC_SERIES, linkage_scalars
 
 #: Default threshold [deg] of ``poor_transmission``: a design whose transmission angle comes closer than this to
 #: 0 or 180 deg is degenerate (its joint forces grow as 1/sin mu: 5.8 times those at 90 deg at 10 deg). Norton,
@@ -212,8 +212,6 @@ def evaluate_population(mech: Mechanism, phi, speed, acceleration, wanted: Itera
             found = _analysis(mech, phi, speed, acceleration, n, regular, wanted, about) if regular.any() else {}
             out.update({key: found.get(key, np.full(n, np.nan)) for key in wanted
                         if (f := find(key)) is not None and f[0].group == "analysis"})
-    if n == 1 and phi.ndim == 1 and regular.all():
-        _exact(mech, phi, speed, acceleration, about, out)
     for key, values in list(out.items()):
         arr = np.broadcast_to(values, (n,))
         # A figure of the geometry (the Grashof margin) holds for every design: it tells why one fails.
@@ -502,16 +500,3 @@ def _analysis(mech, phi, speed, acceleration, n, regular, wanted, about) -> dict
         out[key] = full
     return out
 
-
-def _exact(mech, phi, speed, acceleration, about, out) -> None:
-    """The extremes in ``out`` of a population of one design made exact between the samples, as a run's are
-    (:func:`machdyn.results.linkage.exact_extremes`): a single design's figures are the same wherever they are
-    reported (a run, the optimiser's best design, a sweep of one)."""
-    if np.size(speed) != 1 or np.size(acceleration) != 1:
-        return
-    with np.errstate(all="ignore"):
-        analysis = analyse(mech.take_designs([0]) if mech.design_count else mech, phi,
-                           float(np.ravel(speed)[0]), float(np.ravel(acceleration)[0]), diagnostics=False)
-        values = {k: float(np.ravel(v)[0]) for k, v in out.items() if np.asarray(v).dtype.kind == "f"}
-        for key in exact_extremes(analysis, values, tuple(about), keys=list(values)):
-            out[key] = np.array([values[key]])
