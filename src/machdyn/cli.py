@@ -522,6 +522,34 @@ def _check(file: Path) -> None:
     typer.echo(f"{file}: OK")
 
 
+@app.command(name="results", epilog=EXIT_CODES_HELP)
+def results_of(file: FileArg, debug: DebugOpt = False) -> None:
+    """List every result key a run of FILE reports, with its unit, meaning and better direction (the names a
+    [sweep], an exploration and [optimise] accept). The file is run; nothing is written."""
+    try:
+        loaded = _load(file)
+        from .errors import AssemblyError, InputError, ProblemFileError, SingularPositionError
+        from .results.listing import listed
+        from .runner import run_problem
+
+        try:
+            rows = listed(run_problem(loaded).results.labels)
+        except (ProblemFileError, AssemblyError, InputError, SingularPositionError) as exc:
+            raise _engine_error(exc, file) from None
+        from rich.table import Table
+
+        table = Table(title=f"Results of {file.name} ({len(rows)} keys)", title_justify="left")
+        for column in ("key", "unit", "meaning", "better"):
+            table.add_column(column)
+        for row in rows:
+            table.add_row(row.key, row.unit, row.meaning, row.better or "–")
+        _console().print(table)
+    except (typer.Exit, KeyboardInterrupt):
+        raise
+    except Exception as exc:  # noqa: BLE001 - anything unexpected becomes exit 4 without a traceback
+        raise _internal_error(exc, debug) from None
+
+
 def _examples_dir() -> Path:
     from importlib import resources
 

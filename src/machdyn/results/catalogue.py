@@ -40,7 +40,7 @@ GROUPS = {
     "forces": "the engine's sweep (kinetostatics summarised per design; the compiled path when available)",
     "motion": "kinematics of the designs over the crank positions",
     "geometry": "the link lengths alone",
-    "analysis": "the full analysis of the designs (energy, reduced inertia, work balance)",
+    "analysis": "the full analysis of the designs (energy, reduced inertia, work balance, harmonics, loads' power)",
     "status": "the checks of each design (assembly, dead points, transmission angle)",
 }
 
