@@ -105,9 +105,30 @@ _SENSE: dict[str, Callable[[np.ndarray], np.ndarray]] = {
 
 
 def breakpoints(mech: Mechanism) -> np.ndarray:
-    """The crank angles [rad] where a load of ``mech`` has a kink or a step: the edges of each active window
-    and the angles of each tabulated load (any callable load value with an ``angles`` attribute, such as the
-    force-stroke table's :class:`~machdyn.linkage.stroke_loads.PeriodicTable`)."""
+    """The crank angles where a load of ``mech`` has a kink or a step.
+
+    The edges of each active window and the angles of each tabulated load (any callable load value with an
+    ``angles`` attribute, such as the force-stroke table's :class:`~machdyn.linkage.stroke_loads.PeriodicTable`).
+
+    Parameters
+    ----------
+    mech : Mechanism
+        The mechanism whose forces and torques are read.
+
+    Returns
+    -------
+    numpy.ndarray
+        The breakpoints [rad] in [0, 2 pi), sorted, each once.
+
+    Examples
+    --------
+    >>> from machdyn.linkage import PointForce, slider_crank
+    >>> import dataclasses, math
+    >>> press = dataclasses.replace(slider_crank(0.04, 0.25), forces=(
+    ...     PointForce("punch", "slider.B", 0.0, 6e4, (math.radians(250), math.radians(270))),))
+    >>> [round(math.degrees(a), 6) for a in breakpoints(press)]
+    [250.0, 270.0]
+    """
     out: list[float] = []
     for load in (*mech.forces, *mech.torques):
         active = getattr(load, "active", None)
@@ -123,11 +144,41 @@ def breakpoints(mech: Mechanism) -> np.ndarray:
 def refine(evaluate: Callable[[np.ndarray], Mapping[str, np.ndarray]], phi: np.ndarray,
            sampled: Mapping[str, tuple[np.ndarray, str]], kinks: Sequence[float] = (), *,
            periodic: bool = True) -> dict[str, float]:
-    """The exact extreme of each series of ``sampled`` (name -> (values at ``phi`` [rad], "max", "min" or
-    "max_abs")), as reduced by that reduction: ``evaluate(angles)`` gives every series (name -> values) at any
-    crank angles [rad]; ``kinks`` [rad] the loads' breakpoints (:func:`breakpoints`); ``periodic`` whether
-    ``phi`` covers one turn (else the search stays within [phi[0], phi[-1]]). A series with no finite sample
-    keeps its sampled reduction (NaN)."""
+    """The exact extreme of each of several sampled series, between the samples and at the loads' breakpoints.
+
+    For each series the best :data:`CANDIDATES` local extremes among the samples and the breakpoints are
+    bracketed by their neighbours; each pass evaluates :data:`POINTS` angles across every bracket (all series
+    in one call of ``evaluate``) and keeps the best point and its neighbours, until the bracket is narrower than
+    :data:`ANGLE_TOL`. The value kept is the most extreme ever evaluated, so it is never less extreme than the
+    samples.
+
+    Parameters
+    ----------
+    evaluate : callable
+        Maps crank angles [rad] to ``{name: values}`` [any unit], every series of ``sampled`` at those angles.
+    phi : numpy.ndarray
+        The sampled crank angles [rad], increasing.
+    sampled : mapping
+        ``name -> (values at phi, extreme)``, extreme "max", "min" or "max_abs".
+    kinks : sequence of float
+        The loads' breakpoints [rad] (:func:`breakpoints`).
+    periodic : bool
+        Whether ``phi`` covers one turn (else the search stays within [phi[0], phi[-1]]).
+
+    Returns
+    -------
+    dict
+        ``name -> extreme`` [unit of the series]: the largest value, the smallest or the largest magnitude; a
+        series with no finite sample is left out.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> phi = np.linspace(0.0, 2 * np.pi, 12, endpoint=False)
+    >>> got = refine(lambda x: {"s": np.sin(x - 0.3)}, phi, {"s": (np.sin(phi - 0.3), "max")})
+    >>> round(got["s"], 12)
+    1.0
+    """
     phi = np.asarray(phi, dtype=float)
     lo, hi = float(phi.min()), float(phi.max())
     if periodic:

@@ -16,8 +16,10 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
-from ..linkage import energy_fluctuation, harmonics, inertial_force
+from ..linkage import analyse, energy_fluctuation, harmonics, inertial_force
 from ..linkage import model as _model
+from ..linkage.analysis import analysed_range
+from ..linkage.extremes import breakpoints, refine
 from ..linkage.grashof import grashof_margin
 from ..linkage.loads import applied_forces, applied_torques
 from ..linkage.mass_centre import inertial_shaking_moment
@@ -305,10 +307,6 @@ def exact_extremes(analysis: Any, values: dict[str, Any], about: tuple[float, fl
     between the samples and at the loads' breakpoints (:func:`machdyn.linkage.extremes.refine`), so that a
     peak does not depend on the number of positions. A single design at a constant crank speed and
     acceleration only (else the values stay as sampled). Returns the keys refined."""
-    from ..linkage import analyse
-    from ..linkage.analysis import analysed_range
-    from ..linkage.extremes import breakpoints, refine
-
     kin = analysis.kinematics
     mech = kin.mechanism
     phi = np.asarray(kin.crank_angle, dtype=float)
