@@ -86,3 +86,20 @@ def test_two_designs_get_their_own_harmonics():
         if amp[0] > 1e-9 * amp.max():
             phase = got[f"driving_torque.harmonic_{k}.phase"]
             assert phase[1] == pytest.approx(phase[0], abs=1e-9)
+
+
+def test_a_compactor_run_reports_the_figures_its_sweeps_report():
+    """The compactor's figures (seed 003: plate angle, crank and lever force gains) are results of a run of the
+    machine, as they are columns of its sweeps, by the same function."""
+    from machdyn.pipeline import no_step
+    from machdyn.pipelines.linkage_run import analyse_linkage
+
+    problem = load_problem(EXAMPLE.with_name("compactor_optimise.toml"))
+    mech = build_mechanism(problem)
+    run = analyse_linkage(problem, mech, no_step).scalars
+    keys = [k for k in result_names(mech, "compactor") if k.startswith("compactor.")]
+    assert len(keys) == 4
+    got = evaluate_population(mech, crank_angles(problem), problem.drive.speed, problem.drive.acceleration, keys,
+                              machine="compactor", engine="numpy")
+    for key in keys:
+        assert run[key] == pytest.approx(float(got[key][0]), rel=1e-12), key

@@ -437,6 +437,17 @@ def _transmission(kin, ok, shape) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return (np.where(none, np.nan, low), np.where(none, np.nan, high), np.where(none, np.nan, worst))
 
 
+def compactor_results(mech: Mechanism, kin: Any) -> dict[str, float]:
+    """The compactor's results (see the module's docstring) of one analysed design, as a run reports them: the
+    same function as a population's, over the run's crank angles."""
+    phi = np.asarray(kin.crank_angle, dtype=float)
+    shape = (1, phi.size)
+    ok = np.broadcast_to(np.asarray(kin.assembled, dtype=bool), shape)
+    with np.errstate(all="ignore"):
+        found = _compactor_results(mech, kin, phi, ok, shape)
+    return {k: float(np.ravel(v)[0]) for k, v in found.items()}
+
+
 def _compactor_results(mech, kin, phi, ok, shape) -> dict[str, np.ndarray]:
     plate = compactor_plate(mech)
     if plate is None:
