@@ -142,7 +142,7 @@ def breakpoints(mech: Mechanism) -> np.ndarray:
 
 
 def refine(evaluate: Callable[[np.ndarray], Mapping[str, np.ndarray]], phi: np.ndarray,
-           sampled: Mapping[str, tuple[np.ndarray, str]], kinks: Sequence[float] = (), *,
+           sampled: Mapping[str, tuple[np.ndarray, str]], kinks: Sequence[float] | np.ndarray = (), *,
            periodic: bool = True) -> dict[str, float]:
     """The exact extreme of each of several sampled series, between the samples and at the loads' breakpoints.
 
@@ -208,11 +208,11 @@ def refine(evaluate: Callable[[np.ndarray], Mapping[str, np.ndarray]], phi: np.n
             break
         layout = [(n, a, z) for n, bs in live.items() for a, z in bs]
         points = np.concatenate([np.linspace(a, z, POINTS) for _, a, z in layout])
-        values = evaluate(points)
+        found = evaluate(points)
         for n in live:
             brackets[n] = []
         for k, (name, a, z) in enumerate(layout):
-            score = _SENSE[sampled[name][1]](np.asarray(values[name][k * POINTS:(k + 1) * POINTS], dtype=float))
+            score = _SENSE[sampled[name][1]](np.asarray(found[name][k * POINTS:(k + 1) * POINTS], dtype=float))
             score = np.where(np.isfinite(score), score, -np.inf)
             i = int(np.argmax(score))
             if not np.isfinite(score[i]):

@@ -110,7 +110,8 @@ def result_names(mech: Mechanism, machine: str | None = None, harmonics: int = 0
         elif q.key == "stroke.<body>":
             names += [f"stroke.{b}" for b in outputs]
         elif "<load>" in q.key:
-            names += [q.key.replace("<load>", load.name) for load in (*mech.forces, *mech.torques)]
+            loads: list[Any] = [*mech.forces, *mech.torques]
+            names += [q.key.replace("<load>", load.name) for load in loads]
         elif "<series*>" in q.key:
             names += [q.key.replace("<series*>", s).replace("<order>", str(k)) for s in HARMONIC_SERIES
                       for k in range(1, harmonics + 1)]
