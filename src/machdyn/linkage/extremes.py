@@ -86,12 +86,12 @@ def refine_extreme(
     return x, v
 
 
-#: Width [rad] of the crank-angle bracket at which the search stops (1e-10 rad: far below any load table's
-#: resolution; the closed form is smooth between breakpoints, so the value is exact to rounding there).
-ANGLE_TOL = 1e-10
+#: Width [rad] of the crank-angle bracket at which the search stops: the value of a smooth extreme is then exact
+#: to rounding (its error is of the order of the square of the angle's), and a kink's is a candidate itself.
+ANGLE_TOL = 1e-8
 #: Points per bracket in each pass (the bracket shrinks by (POINTS - 1) / 2 per pass).
 POINTS = 17
-#: Most passes (from a bracket of two steps of 360 positions, 9 passes reach ANGLE_TOL).
+#: Most passes (from a bracket of two steps of 360 positions, 8 passes reach ANGLE_TOL).
 MAX_PASSES = 14
 #: Sampled local extremes refined per series: the best few, for a second peak that the sampling undercut.
 CANDIDATES = 3
@@ -225,7 +225,9 @@ def refine(evaluate: Callable[[np.ndarray], Mapping[str, np.ndarray]], phi: np.n
 
 
 def _peaks(score: np.ndarray, periodic: bool) -> list[int]:
-    """The indices of the best :data:`CANDIDATES` local maxima of a sampled score."""
+    """The indices of the best :data:`CANDIDATES` local maxima of a sampled score that may hold the extreme: a
+    local maximum whose value and larger step to a neighbour (what a smooth curve can rise above it between
+    them) reach the best sample's value."""
     left = np.roll(score, 1)
     right = np.roll(score, -1)
     if not periodic:
@@ -233,7 +235,12 @@ def _peaks(score: np.ndarray, periodic: bool) -> list[int]:
     local = np.flatnonzero((score >= left) & (score >= right) & np.isfinite(score))
     if not local.size:
         local = np.array([int(np.argmax(score))])
-    return [int(i) for i in local[np.argsort(score[local])[::-1][:CANDIDATES]]]
+    with np.errstate(invalid="ignore"):
+        rise = np.fmax(np.nan_to_num(score[local] - left[local], posinf=0.0),
+                       np.nan_to_num(score[local] - right[local], posinf=0.0))
+    best = float(np.max(score))
+    hopeful = local[score[local] + rise >= best]
+    return [int(i) for i in hopeful[np.argsort(score[hopeful])[::-1][:CANDIDATES]]]
 
 
 def _bracket(grid: np.ndarray, i: int, periodic: bool) -> tuple[float, float]:

@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, SingularPositionError
 from ..linkage import analyse, energy_fluctuation, harmonics, inertial_force
 from ..linkage import model as _model
 from ..linkage.analysis import analysed_range
@@ -331,7 +331,10 @@ def exact_extremes(analysis: Any, values: dict[str, Any], about: tuple[float, fl
     sampled = {job: (series(analysis, name, about), how) for job, (name, how) in jobs.items()}
 
     def evaluate(angles: np.ndarray) -> dict[str, np.ndarray]:
-        at = analyse(mech, angles, float(speed.ravel()[0]), float(acceleration.ravel()[0]), diagnostics=False)
+        try:
+            at = analyse(mech, angles, float(speed.ravel()[0]), float(acceleration.ravel()[0]), diagnostics=False)
+        except (InputError, SingularPositionError):  # a searched angle at a dead position: that pass gives nothing
+            return {job: np.full(angles.shape, np.nan) for job in jobs}
         found = {name: series(at, name, about) for name in names}
         return {job: found[name] for job, (name, _how) in jobs.items()}
 
