@@ -140,7 +140,7 @@ def verify(problem: Any, ev: Evaluator) -> tuple[dict[str, float], bool]:
     if isinstance(ev, RunEvaluator):
         return verify_by_runs(problem, ev)
     mech = build_mechanism(problem)
-    wanted = set(result_names(mech, ev.machine)) & (ev.wanted | _all_cheap(mech, ev.machine))
+    wanted = set(result_names(mech, ev.machine, harmonics_of(problem))) & (ev.wanted | _all_cheap(mech, ev.machine))
     res = evaluate(mech, ev.phi, problem.drive.speed, problem.drive.acceleration, wanted, ev.about,
                    machine=ev.machine, min_transmission_angle=ev.min_transmission_angle)
     if ev.per_design_wanted:
