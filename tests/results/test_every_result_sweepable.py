@@ -103,3 +103,28 @@ def test_a_compactor_run_reports_the_figures_its_sweeps_report():
                               machine="compactor", engine="numpy")
     for key in keys:
         assert run[key] == pytest.approx(float(got[key][0]), rel=1e-12), key
+
+
+def test_the_optimiser_minimises_a_harmonic_under_a_load_power_constraint():
+    """A harmonic amplitude as an [optimise] objective and a load's mean power as a constraint: the optimiser's
+    population gives each design its own values, and its verification of a design alone (the best design's
+    figures) gives the population's number for it."""
+    from machdyn.optimise.study import setup, verify
+
+    text = EXAMPLE.with_name("compactor_optimise.toml").read_text(encoding="utf-8")
+    objective = 'result = "compactor.force_gain.min"\nsense = "maximise"'
+    assert objective in text
+    text = text.replace(objective, 'result = "driving_torque.harmonic_2.amplitude"\nsense = "minimise"')
+    text = text.replace("[optimise]\n", '[output]\nharmonics = 3\n\n[optimise]\n', 1) + (
+        '\n[[optimise.constraints]]\nresult = "load.compaction_at_A.mean_power"\nmax = "0 W"\n')
+    problem = load_problem(text)
+    ev = setup(problem, problem.optimise)
+    x = ev.space.lower + np.array([[0.3], [0.6]]) * (ev.space.upper - ev.space.lower)
+    results, costs, _violations = ev(x)
+    amplitude = results["driving_torque.harmonic_2.amplitude"]
+    assert np.all(amplitude > 0) and amplitude[0] != amplitude[1]
+    assert np.allclose(costs[:, 0], amplitude)
+    alone, _feasible = verify(ev.space.problem_at(x[1]), ev)
+    assert alone["driving_torque.harmonic_2.amplitude"] == pytest.approx(float(amplitude[1]), rel=1e-9)
+    assert alone["load.compaction_at_A.mean_power"] == pytest.approx(
+        float(results["load.compaction_at_A.mean_power"][1]), rel=1e-9)
