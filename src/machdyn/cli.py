@@ -138,60 +138,6 @@ class Progress:
 # --------------------------------------------------------------------------------------------- tables
 
 
-def _cell(value: Any) -> str:
-    if isinstance(value, float):
-        return f"{value:.7g}"
-    if isinstance(value, list):
-        return ", ".join(_cell(v) for v in value)
-    return str(value)
-
-
-def _print_rows(summary: Any, fmt: TableFormat, warnings: list[str]) -> None:
-    """Print a :class:`~machdyn.results.Summary` in the chosen format (JSON rows also carry the result key)."""
-    out = _console()
-    title = summary.title
-    rows = summary.as_tuples()
-    if fmt is TableFormat.table:
-        from rich.table import Table
-
-        table = Table(title=title, title_justify="left", show_lines=False)
-        table.add_column("quantity")
-        table.add_column("value", justify="right")
-        table.add_column("unit")
-        for q, v, u in rows:
-            table.add_row(str(q), _cell(v), str(u or ""))
-        out.print(table)
-        for w in warnings:
-            typer.echo(f"warning: {w}", err=True)
-    elif fmt is TableFormat.csv:
-        import csv
-        import io
-
-        buf = io.StringIO()
-        writer = csv.writer(buf, lineterminator="\n")
-        writer.writerow(["quantity", "value", "unit"])
-        for q, v, u in rows:
-            writer.writerow([q, _cell(v), u or ""])
-        sys.stdout.write(buf.getvalue())
-    elif fmt is TableFormat.json:
-        from .outputs import json_text
-
-        data = {"problem": title,
-                "summary": [{"key": r.key, "quantity": r.label, "value": r.value, "unit": r.unit or ""}
-                            for r in summary.rows],
-                "warnings": warnings}
-        sys.stdout.write(json_text(data))
-    else:
-        def esc(text: str) -> str:
-            return text.replace("|", "\\|")
-
-        lines = [f"## {esc(title)}", "", "| quantity | value | unit |", "|---|---:|---|"]
-        lines += [f"| {esc(str(q))} | {esc(_cell(v))} | {esc(str(u or ''))} |" for q, v, u in rows]
-        if warnings:
-            lines += ["", "Warnings:", ""] + [f"- {esc(w)}" for w in warnings]
-        sys.stdout.write("\n".join(lines) + "\n")
-
-
 # ------------------------------------------------------------------------------------------- commands
 
 
@@ -487,7 +433,9 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
     for note in result.folder_notes:  # the user's own files, kept: said even with --quiet
         typer.echo(f"note: {note}", err=True)
     if not quiet:
-        _print_rows(result.summary, format, result.warnings + ignored_where(loaded.spec, result.warnings))
+        from .runner import print_summary
+
+        print_summary(result.summary, format, result.warnings + ignored_where(loaded.spec, result.warnings))
         for outcome in result.outcomes.values():  # a resumed exploration says what it took from disk
             explored: Any = getattr(outcome, "results", None)
             if getattr(explored, "reused", 0):
@@ -527,6 +475,32 @@ def _check(file: Path) -> None:
     for w in warnings:
         typer.echo(f"warning: {w}", err=True)
     typer.echo(f"{file}: OK")
+
+
+@app.command(name="results", epilog=EXIT_CODES_HELP)
+def results_of(file: FileArg, debug: DebugOpt = False) -> None:
+    """List every result key a run of FILE reports, with its unit, meaning and better direction (the names a
+    [sweep], an exploration and [optimise] accept). The file is run; nothing is written."""
+    from .errors import AssemblyError, InputError, ProblemFileError, SingularPositionError
+
+    loaded = _load(file)
+    try:
+        from .listing import listed
+        from .runner import run_problem
+
+        rows = listed(run_problem(loaded).results.labels)
+    except (ProblemFileError, AssemblyError, InputError, SingularPositionError) as exc:
+        raise _engine_error(exc, file) from None
+    except Exception as exc:  # noqa: BLE001 - anything unexpected becomes exit 4 without a traceback
+        raise _internal_error(exc, debug) from None
+    from rich.table import Table
+
+    table = Table(title=f"Results of {file.name} ({len(rows)} keys)", title_justify="left")
+    for column in ("key", "unit", "meaning", "better"):
+        table.add_column(column)
+    for row in rows:
+        table.add_row(row.key, row.unit, row.meaning, row.better or "–")
+    _console().print(table)
 
 
 def _examples_dir() -> Path:

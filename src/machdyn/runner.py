@@ -13,18 +13,24 @@ in SI with its label (:mod:`machdyn.results`), and write the outputs (:mod:`mach
 
 from __future__ import annotations
 
+import csv
+import io
 import json
 import math
 import os
+import sys
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+from rich.console import Console
+from rich.table import Table
+
 from . import __version__
 from .errors import AnalysisError, AssemblyError, InputError, ProblemFileError, SingularPositionError
 from .kinds import KINDS, capabilities_for, capability, kind
-from .outputs import OutputSet
+from .outputs import OutputSet, json_text
 from .pipeline import Outcome, StageContext, Step, import_object, no_step
 from .problem.dumper import dump_problem
 from .reading import LoadedProblem, load_problem, read_problem
@@ -315,3 +321,54 @@ def _refuse_non_finite(values: dict[str, Any]) -> None:
 
 # re-exported for callers that catch what a run may raise
 ERRORS = (ProblemFileError, AssemblyError, InputError, SingularPositionError)
+
+
+# ------------------------------------------------------------------------------------------- printing
+
+
+def _cell(value: Any) -> str:
+    if isinstance(value, float):
+        return f"{value:.7g}"
+    if isinstance(value, list):
+        return ", ".join(_cell(v) for v in value)
+    return str(value)
+
+
+def print_summary(summary: Any, fmt: str, warnings: list[str]) -> None:
+    """Print a :class:`~machdyn.results.Summary` to stdout in ``fmt`` ("table", "csv", "json" or "markdown"; JSON rows
+    also carry the result key), the warnings of a table to stderr."""
+    out = Console(highlight=False, soft_wrap=False)
+    title = summary.title
+    rows = summary.as_tuples()
+    if fmt == "table":
+        table = Table(title=title, title_justify="left", show_lines=False)
+        table.add_column("quantity")
+        table.add_column("value", justify="right")
+        table.add_column("unit")
+        for q, v, u in rows:
+            table.add_row(str(q), _cell(v), str(u or ""))
+        out.print(table)
+        for w in warnings:
+            print(f"warning: {w}", file=sys.stderr)
+    elif fmt == "csv":
+        buf = io.StringIO()
+        writer = csv.writer(buf, lineterminator="\n")
+        writer.writerow(["quantity", "value", "unit"])
+        for q, v, u in rows:
+            writer.writerow([q, _cell(v), u or ""])
+        sys.stdout.write(buf.getvalue())
+    elif fmt == "json":
+        data = {"problem": title,
+                "summary": [{"key": r.key, "quantity": r.label, "value": r.value, "unit": r.unit or ""}
+                            for r in summary.rows],
+                "warnings": warnings}
+        sys.stdout.write(json_text(data))
+    else:
+        def esc(text: str) -> str:
+            return text.replace("|", "\\|")
+
+        lines = [f"## {esc(title)}", "", "| quantity | value | unit |", "|---|---:|---|"]
+        lines += [f"| {esc(str(q))} | {esc(_cell(v))} | {esc(str(u or ''))} |" for q, v, u in rows]
+        if warnings:
+            lines += ["", "Warnings:", ""] + [f"- {esc(w)}" for w in warnings]
+        sys.stdout.write("\n".join(lines) + "\n")

@@ -193,7 +193,9 @@ def test_inertial_shaking_force_is_told_apart_from_the_frame_load():
     inertial, frame = rows["inertial_shaking_force.max"], rows["frame_force.max"]
     assert "inertial" in inertial.label and "Frame force" in frame.label
     ix, iy = mass_centre(result.analysis.kinematics).inertia_force
-    assert inertial.value == pytest.approx(float(np.max(np.hypot(ix, iy))), rel=1e-12)
+    # the run's peak is the closed form's, between the samples: at least the largest sample, within a step of it
+    sampled = float(np.max(np.hypot(ix, iy)))
+    assert sampled * (1 - 1e-12) <= inertial.value == pytest.approx(sampled, rel=1e-4)
     assert abs(frame.value - inertial.value) > 1e-3 * frame.value
 
 

@@ -44,7 +44,10 @@ def test_shaking_moment_about_a_point_and_harmonics():
     import numpy as np
 
     moment = result.analysis.forces.shaking_moment(about=(0.1, 0.0))
-    assert result.scalars["shaking_moment.max_abs"]["value"] == pytest.approx(np.max(np.abs(moment)))
+    # The run's peak is the closed form's, between the samples: at least the largest sample and within the
+    # series' change over half a step of it.
+    peak, sampled = result.scalars["shaking_moment.max_abs"]["value"], np.max(np.abs(moment))
+    assert sampled * (1 - 1e-12) <= peak == pytest.approx(sampled, rel=2e-3)
     assert result.frames["shaking"]["shaking_moment [N*m]"].to_numpy() == pytest.approx(moment)
     assert "driving_torque.harmonic_6.amplitude" in result.scalars
     assert "driving_torque.harmonic_7.amplitude" not in result.scalars
@@ -85,7 +88,7 @@ def _doc_blocks() -> list[str]:
 
 def test_the_documented_files_are_valid():
     blocks = _doc_blocks()
-    linkage, custom, sweep, screen = blocks
+    linkage, custom, sweep, screen = blocks[:4]  # the complete files; the later blocks are fragments of tables
     assert check_problem(load_problem(linkage)) is not None
     assert check_problem(load_problem(linkage + "\n" + sweep)) is not None
     drive = '[drive]\nspeed = "60 rpm"\n'

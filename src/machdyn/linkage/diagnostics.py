@@ -16,6 +16,7 @@ from .grashof import grashof_type
 from .kinematics import kinematics
 from .model import Mechanism, output_bodies
 from .motion import Kinematics, angle_ranges, crank_angles, format_ranges, is_full_turn, singular
+from .reductions import worst_of
 
 #: Below this transmission angle [deg] force transmission is poor (Norton, §4.10: keep mu >= 40 deg).
 MIN_GOOD_TRANSMISSION_DEG = 40.0
@@ -171,7 +172,7 @@ def _diagnose(mech: Mechanism, kin: Kinematics, window: tuple[float, float] | No
     for rep in kin.dyad_reports:
         mu_all = np.asarray(rep.transmission, dtype=float)
         if mu_all.shape == phi.shape:
-            margin = np.where(ok & np.isfinite(mu_all), np.minimum(mu_all, np.pi - mu_all), np.inf)
+            margin = np.where(ok & np.isfinite(mu_all), worst_of(mu_all, mu_all), np.inf)
             if margin.size and np.isfinite(margin.min()) and margin.min() < closest[0]:
                 closest = (float(margin.min()), float(phi[int(np.argmin(margin))]))
         mu = np.asarray(rep.transmission)[ok]

@@ -32,7 +32,8 @@ from .motion import is_full_turn
 
 #: The text of the reductions, hashed into each kernel's text: a changed reduction is a new kernel (numba's
 #: cache does not follow a kernel's callees).
-_REDUCE_VERSION = hashlib.sha1((Path(__file__).parent / "fused_reduce.py").read_bytes()).hexdigest()[:12]
+_REDUCE_VERSION = hashlib.sha1(b"".join((Path(__file__).parent / name).read_bytes()
+                                        for name in ("fused_reduce.py", "reductions.py"))).hexdigest()[:12]
 
 
 #: Positions (designs x crank angles) below which one thread runs the whole pass (a thread's start costs more).

@@ -17,6 +17,11 @@ import math
 
 import numba
 
+from .reductions import worst_of
+
+#: The worst transmission angle of :mod:`.reductions`, the same code compiled for the kernels' scalars.
+_worst_of = numba.njit(cache=True, error_model="numpy", nogil=True)(worst_of)
+
 #: |normalised determinant| below which a position is dead (machdyn.linkage.kinematics.DEAD_TOL).
 DEAD_TOL = 1e-6
 #: |normalised determinant| below which a design is near a dead point (results.population.NEAR_DEAD).
@@ -117,12 +122,12 @@ def _transmission(x, ok, acos, m, out, col):
         large = math.acos(lo)
         out[col] = small
         out[col + 1] = large
-        out[col + 2] = min(small, math.pi - large)
+        out[col + 2] = _worst_of(small, large)
     else:  # increasing, 0..pi/2: the worst angle is the smallest
         small = math.asin(lo)
         out[col] = small
         out[col + 1] = math.asin(hi)
-        out[col + 2] = min(small, math.pi - math.asin(hi))
+        out[col + 2] = _worst_of(small, math.asin(hi))
 
 
 @numba.njit(cache=True, error_model="numpy", nogil=True)

@@ -9,7 +9,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from .averages import time_mean, time_rms
 from .engines import use_fused
 from .fused import run
 from .fused_source import SUMMARY_FIELDS
@@ -17,6 +16,7 @@ from .kinematics import kinematics
 from .kinetostatics import kinetostatics
 from .model import Mechanism
 from .motion import singular
+from .reductions import mean_over_time, peak_abs, rms_over_time
 
 #: Positions (designs x crank angles) evaluated per chunk: large enough to amortise NumPy's per-call cost,
 #: small enough that the ~100 float64 arrays alive at once stay near 100 MB.
@@ -158,16 +158,16 @@ def _summaries(forces, about) -> dict:
     ok = assembled & regular & np.isfinite(torque).all(axis=-1)
     bad = np.where(ok, 0.0, np.nan)
 
-    def peak(values):  # the largest magnitude, NaN ignored (fmax: no warning for a design without values)
-        return np.fmax.reduce(np.abs(np.atleast_2d(values)), axis=-1) + bad
+    def peak(values):  # the largest magnitude, NaN ignored
+        return peak_abs(np.atleast_2d(values)) + bad
 
     return {
         "assembled": assembled,
         "regular": ok,
         "max_driving_torque": peak(torque),
-        "rms_driving_torque": np.atleast_1d(time_rms(np.where(np.isfinite(torque), torque, 0.0), kin)) + bad,
+        "rms_driving_torque": np.atleast_1d(rms_over_time(np.where(np.isfinite(torque), torque, 0.0), kin)) + bad,
         "mean_input_power": np.atleast_1d(
-            time_mean(np.where(np.isfinite(torque), np.atleast_2d(forces.input_power), 0.0), kin)) + bad,
+            mean_over_time(np.where(np.isfinite(torque), np.atleast_2d(forces.input_power), 0.0), kin)) + bad,
         "max_joint_force": {name: peak(r.magnitude) for name, r in forces.reactions.items()},
         "max_shaking_force": peak(forces.shaking_force),
         "max_shaking_moment": peak(forces.shaking_moment(about)),

@@ -13,6 +13,7 @@ from ..linkage.analysis import analysed_range
 from ..pipeline import Outcome, Step
 from ..problem.build import crank_angles
 from ..results.linkage import LINKAGE_SUMMARY, full_uniform_cycle, linkage_scalars, load_powers
+from ..results.population import compactor_results
 
 
 def crank_range(problem: Any) -> tuple[Any, float, float]:
@@ -42,8 +43,10 @@ def analyse_linkage(problem: Any, mech: Any, step: Step, warnings: list[str] | N
     about = tuple(problem.output.shaking_moment_about)
     notes: list[str] = []
     values, units = linkage_scalars(analysis, mech, about=about, harmonic_orders=problem.output.harmonics,
-                                    notes=notes)
+                                    notes=notes, exact=True)
     said += notes
+    if getattr(problem.mechanism, "machine", None) == "compactor" and np.ndim(analysis.forces.driving_torque) == 1:
+        values.update(compactor_results(mech, analysis.kinematics))  # the figures a sweep of it reports
     balance = float(np.max(np.atleast_1d(analysis.work_balance.relative)))
     if not balance < 1e-6:
         said.append(
@@ -56,7 +59,6 @@ def analyse_linkage(problem: Any, mech: Any, step: Step, warnings: list[str] | N
             said.append(str(w))
     if np.ndim(analysis.forces.driving_torque) == 1:
         for name, (mean, rms) in load_powers(analysis).items():
-            values[f"load.{name}.mean_power"] = mean
             # Over a whole turn a process load takes work out of the machine; one that puts work in has
             # most likely been given the wrong sign.
             if full_uniform_cycle(analysis.kinematics.crank_angle) and mean > 1e-3 * rms:

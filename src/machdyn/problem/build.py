@@ -36,6 +36,12 @@ def crank_angles(problem: LinkageProblem) -> np.ndarray:
     return np.linspace(start, stop, d.positions)
 
 
+def harmonics_of(problem: LinkageProblem) -> int:
+    """How many harmonics of the driving torque and the shaking loads a run reports (``[output] harmonics``)."""
+    output = getattr(problem, "output", None)
+    return int(getattr(output, "harmonics", 0) or 0)
+
+
 def gravity_vector(problem: LinkageProblem) -> tuple[float, float]:
     g = problem.loads.gravity
     if g == "on":

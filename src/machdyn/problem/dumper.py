@@ -115,10 +115,13 @@ def _container_args(annotation: Any, origin: type) -> tuple[Any, ...]:
 
 
 def _fields(model: BaseModel):
-    """(name, value, annotation, metadata) of the fields of ``model`` that are set (None is left out)."""
+    """(name, value, annotation, metadata) of the fields of ``model`` that are set (None is left out). A field the
+    file did not give keeps its default and is left out too: written, a default could say twice what another
+    table says once (a flywheel's ``speed_ratio = 1`` beside the drive train's stages), which the reader refuses."""
+    given = model.model_fields_set
     for name, info in type(model).model_fields.items():
         value = getattr(model, name)
-        if value is None:
+        if value is None or (name not in given and name != "type"):
             continue
         yield name, value, info.annotation, tuple(info.metadata)
 

@@ -27,6 +27,7 @@ from markupsafe import Markup, escape
 
 from ..linkage import inertial_force
 from ..linkage import model as _model
+from ..linkage.reductions import worst_of
 from .plotkit import PALETTE
 
 #: At most this many crank positions are played back (a longer run is sampled evenly).
@@ -96,7 +97,7 @@ def _marks(diagnostics: Any, kin: Any, design: int) -> list[dict[str, Any]]:
         except (AttributeError, TypeError, ValueError):
             continue
         mu = mu[design] if mu.ndim == 2 else np.broadcast_to(mu, phi.shape)
-        badness = np.where(np.isfinite(mu), np.minimum(mu, np.pi - mu), np.inf)
+        badness = np.where(np.isfinite(mu), worst_of(mu, mu), np.inf)
         i = int(np.argmin(badness))
         if np.isfinite(badness[i]) and (worst is None or badness[i] < worst[1]):
             worst = (float(phi[i]), float(mu[i]))

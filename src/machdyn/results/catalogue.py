@@ -21,20 +21,14 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from functools import cache
 
+from ..linkage.reductions import REDUCTIONS
 from .labels import Label
 
-#: How a quantity is reduced over the crank positions of one design.
-OVER_POSITIONS = {
-    "max": "largest value",
-    "min": "smallest value",
-    "max_abs": "largest magnitude",
-    "time_mean": "mean over time",
-    "time_rms": "root mean square over time",
-    "range": "largest minus smallest value",
-    "cycle": "a figure of the whole cycle",
-    "count": "a count over the cycle",
-    "value": "one value per design (no reduction)",
-}
+#: How a quantity is reduced over the crank positions of one design: the reductions written once in
+#: :mod:`machdyn.linkage.reductions`, by name.
+OVER_POSITIONS = {name: r.text for name, r in REDUCTIONS.items()}
+#: The better design by a quantity, in words, by ``over_designs``.
+BETTER = {"min": "lower", "max": "higher", "": "", "all": "true"}
 #: How designs compare by a quantity: the better design has the lower ("min") or higher ("max") value; ""
 #: for a figure with no better direction (a stroke, the time ratio), "all" for a yes/no status.
 OVER_DESIGNS = ("min", "max", "", "all")
@@ -45,7 +39,7 @@ GROUPS = {
     "forces": "the engine's sweep (kinetostatics summarised per design; the compiled path when available)",
     "motion": "kinematics of the designs over the crank positions",
     "geometry": "the link lengths alone",
-    "analysis": "the full analysis of the designs (energy, reduced inertia, work balance)",
+    "analysis": "the full analysis of the designs (energy, reduced inertia, work balance, harmonics, loads' power)",
     "status": "the checks of each design (assembly, dead points, transmission angle)",
 }
 
@@ -56,8 +50,10 @@ class Quantity:
     SI ``unit`` and ``display`` unit (the SI unit if None), the reductions ``over_positions`` and
     ``over_designs``, the ``producer`` (a problem kind, ``kind:machine`` or a capability's table), the
     ``group`` of the population evaluator that computes it for many designs ("" for single designs only, with
-    ``why`` saying why), ``zero_below`` (a result whose magnitude sets this one's round-off scale) and ``kind``
-    ("number" or "text": a category such as the Grashof class, which can be a column but not an objective)."""
+    ``why`` saying why), ``zero_below`` (a result whose magnitude sets this one's round-off scale), ``kind``
+    ("number" or "text": a category such as the Grashof class, which can be a column but not an objective) and
+    ``series``: the series over the crank positions (a key of :data:`machdyn.results.linkage.SERIES`, its
+    pattern parts those of the key) that ``over_positions`` reduces, "" for a figure computed otherwise."""
 
     key: str
     text: str
@@ -70,6 +66,12 @@ class Quantity:
     why: str = ""
     zero_below: str | None = None
     kind: str = "number"
+    series: str = ""
+
+    @property
+    def better(self) -> str:
+        """"lower", "higher" or "" (no better direction), "true" for a yes/no check."""
+        return BETTER[self.over_designs]
 
     @property
     def is_pattern(self) -> bool:
@@ -87,33 +89,42 @@ def _q(key, text, unit="", over_positions="value", over_designs="", group="", **
 
 _SINGLE = "a figure of one analysed design"
 
-#: The results of a linkage analysis (the ``mechanism`` and ``rotary_screen`` kinds).
+#: The results of a linkage analysis (the ``mechanism`` and ``rotary_screen`` kinds). ``series`` names the series
+#: of :data:`machdyn.results.linkage.SERIES` a quantity reduces; the reduction is ``over_positions``.
 MECHANISM: tuple[Quantity, ...] = (
-    _q("crank_speed.mean", "Crank speed, mean", "rad/s", "time_mean", "", "analysis"),
-    _q("driving_torque.max_abs", "Driving torque, max |T|", "N*m", "max_abs", "min", "forces"),
-    _q("driving_torque.max", "Driving torque, maximum", "N*m", "max", "min", "analysis"),
-    _q("driving_torque.min", "Driving torque, minimum", "N*m", "min", "max", "analysis"),
+    _q("crank_speed.mean", "Crank speed, mean", "rad/s", "angle_mean", "", "analysis", series="crank_speed"),
+    _q("driving_torque.max_abs", "Driving torque, max |T|", "N*m", "max_abs", "min", "forces",
+       series="driving_torque"),
+    _q("driving_torque.max", "Driving torque, maximum", "N*m", "max", "min", "analysis", series="driving_torque"),
+    _q("driving_torque.min", "Driving torque, minimum", "N*m", "min", "max", "analysis", series="driving_torque"),
     _q("driving_torque.mean", "Driving torque, mean", "N*m", "time_mean", "min", "analysis",
-       zero_below="driving_torque.max_abs"),
-    _q("driving_torque.rms", "Driving torque, RMS", "N*m", "time_rms", "min", "forces"),
-    _q("input_power.mean", "Input power, mean", "W", "time_mean", "min", "forces", zero_below="input_power.max"),
-    _q("input_power.max", "Input power, maximum", "W", "max", "min", "analysis"),
+       zero_below="driving_torque.max_abs", series="driving_torque"),
+    _q("driving_torque.rms", "Driving torque, RMS", "N*m", "time_rms", "min", "forces", series="driving_torque"),
+    _q("input_power.mean", "Input power, mean", "W", "time_mean", "min", "forces", zero_below="input_power.max",
+       series="input_power"),
+    _q("input_power.max", "Input power, maximum", "W", "max", "min", "analysis", series="input_power"),
     _q("input_power.min", "Input power, minimum (negative: power flows back into the drive)", "W", "min", "max",
-       "analysis"),
-    _q("inertial_shaking_force.max", "Shaking force, inertial (-sum m a_G), max", "N", "max", "min", "motion"),
+       "analysis", series="input_power"),
+    _q("inertial_shaking_force.max", "Shaking force, inertial (-sum m a_G), max", "N", "max", "min", "motion",
+       series="inertial_shaking_force"),
     _q("inertial_shaking_moment.max_abs", "Shaking moment, inertial (of -m a_G and -I alpha), max |M|", "N*m",
-       "max_abs", "min", "motion", zero_below="driving_torque.max_abs"),
-    _q("frame_force.max", "Frame force, max (inertia, process loads and weight)", "N", "max", "min", "forces"),
+       "max_abs", "min", "motion", zero_below="driving_torque.max_abs", series="inertial_shaking_moment"),
+    _q("frame_force.max", "Frame force, max (inertia, process loads and weight)", "N", "max", "min", "forces",
+       series="frame_force"),
     _q("shaking_moment.max_abs", "Shaking moment on the frame, max |M| (inertia, loads, weight, drive reaction)",
-       "N*m", "max_abs", "min", "forces", zero_below="driving_torque.max_abs"),
+       "N*m", "max_abs", "min", "forces", zero_below="driving_torque.max_abs", series="shaking_moment"),
     _q("shaking_moment.about_x", "Shaking moment reference point, x", "m", why="the point given in [output]"),
     _q("shaking_moment.about_y", "Shaking moment reference point, y", "m", why="the point given in [output]"),
-    _q("kinetic_energy.max", "Kinetic energy, max", "J", "max", "min", "analysis"),
-    _q("kinetic_energy.min", "Kinetic energy, min", "J", "min", "", "analysis"),
-    _q("kinetic_energy.fluctuation", "Kinetic energy, fluctuation (max - min)", "J", "range", "min", "analysis"),
-    _q("reduced_inertia.min", "Reduced inertia at the crank, minimum", "kg*m^2", "min", "", "analysis"),
-    _q("reduced_inertia.max", "Reduced inertia at the crank, maximum", "kg*m^2", "max", "", "analysis"),
-    _q("reduced_inertia.mean", "Reduced inertia at the crank, mean", "kg*m^2", "time_mean", "", "analysis"),
+    _q("kinetic_energy.max", "Kinetic energy, max", "J", "max", "min", "analysis", series="kinetic_energy"),
+    _q("kinetic_energy.min", "Kinetic energy, min", "J", "min", "", "analysis", series="kinetic_energy"),
+    _q("kinetic_energy.fluctuation", "Kinetic energy, fluctuation (max - min)", "J", "range", "min", "analysis",
+       series="kinetic_energy"),
+    _q("reduced_inertia.min", "Reduced inertia at the crank, minimum", "kg*m^2", "min", "", "analysis",
+       series="reduced_inertia"),
+    _q("reduced_inertia.max", "Reduced inertia at the crank, maximum", "kg*m^2", "max", "", "analysis",
+       series="reduced_inertia"),
+    _q("reduced_inertia.mean", "Reduced inertia at the crank, mean", "kg*m^2", "angle_mean", "", "analysis",
+       series="reduced_inertia"),
     _q("flywheel.energy_fluctuation", "Energy to store in a flywheel (constant speed)", "J", "cycle", "min",
        "analysis"),
     _q("work_balance.input_work", "Work balance: input work", "J", "cycle", "", "analysis"),
@@ -124,14 +135,14 @@ MECHANISM: tuple[Quantity, ...] = (
     _q("time_ratio", "Time ratio (advance / return)", "", "cycle", "", "motion"),
     _q("transmission_angle.min", "Transmission angle, min", "rad", "min", "max", "motion"),
     _q("transmission_angle.max", "Transmission angle, max", "rad", "max", "min", "motion"),
-    _q("transmission_angle.worst", "Transmission angle, worst (closest to 0 or 180 deg)", "rad", "min", "max",
+    _q("transmission_angle.worst", "Transmission angle, worst (closest to 0 or 180 deg)", "rad", "worst", "max",
        "motion"),
-    _q("dead_positions.count", "Dead positions (count)", "", "count", "min",
-       why="a design with a dead position is flagged in a population (status dead_point)"),
+    _q("dead_positions.count", "Dead positions (count)", "", "count", "min", "motion"),
     _q("grashof.margin", "Grashof margin s + l - (p + q) (negative: a link turns fully)", "m", "value", "min",
        "geometry"),
     _q("grashof.class", "Grashof class", "", "value", "", "geometry", kind="text"),
-    _q("joint.<joint>.max_force", "Joint {joint}, max force", "N", "max", "min", "forces"),
+    _q("joint.<joint>.max_force", "Joint {joint}, max force", "N", "max", "min", "forces",
+       series="joint.<joint>.force"),
     _q("stroke.<body>", "Stroke of {body}", "m or rad", "range", "", "motion"),
     _q("time_ratio.<body>", "Time ratio (advance / return) of {body}", "", "cycle", "", "motion"),
     _q("transmission_angle.<body>.min", "Transmission angle of the dyad driving {body}, min", "rad", "min", "max",
@@ -139,11 +150,11 @@ MECHANISM: tuple[Quantity, ...] = (
     _q("transmission_angle.<body>.max", "Transmission angle of the dyad driving {body}, max", "rad", "max", "min",
        "motion"),
     _q("load.<load>.mean_power", "Load {load}, mean power (negative: the drive works against it)", "W",
-       "time_mean", "", why=_SINGLE),
-    _q("<series*>.harmonic_<order>.amplitude", "{series}, harmonic {order}, amplitude", "", "cycle",
-       why="a spectrum of one design ([output] harmonics)"),
-    _q("<series*>.harmonic_<order>.phase", "{series}, harmonic {order}, phase", "rad", "cycle",
-       why="a spectrum of one design ([output] harmonics)"),
+       "time_mean", "", "analysis", series="load.<load>.power"),
+    _q("<series*>.harmonic_<order>.amplitude", "{series}, harmonic {order}, amplitude", "", "harmonic_amplitude",
+       "min", "analysis", series="<series*>"),
+    _q("<series*>.harmonic_<order>.phase", "{series}, harmonic {order}, phase", "rad", "harmonic_phase", "",
+       "analysis", series="<series*>"),
 )
 
 #: The results of a compactor (``[mechanism] machine = "compactor"``: a four-bar whose coupler is the

@@ -10,23 +10,23 @@ variants each value is a list of N floats.
 
 from __future__ import annotations
 
-import math
-import warnings
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from typing import Any
 
 import numpy as np
 
-from ..errors import InputError
-from ..linkage import energy_fluctuation, harmonics, inertial_force
+from ..errors import InputError, SingularPositionError
+from ..linkage import analyse, energy_fluctuation, harmonics, inertial_force
 from ..linkage import model as _model
-from ..linkage.averages import time_mean, time_rms
+from ..linkage.analysis import analysed_range
+from ..linkage.extremes import breakpoints, refine
 from ..linkage.grashof import grashof_margin
 from ..linkage.loads import applied_forces, applied_torques
 from ..linkage.mass_centre import inertial_shaking_moment
 from ..linkage.model import output_bodies
 from ..linkage.motion import is_full_turn
-from .catalogue import MECHANISM, labels
+from ..linkage.reductions import REDUCTIONS, reduce, worst_of
+from .catalogue import MECHANISM, Quantity, labels
 from .labels import Label
 from .store import collect
 
@@ -81,24 +81,9 @@ def joint_list(forces: Any) -> list[tuple[str, str, str, str]]:
     return out
 
 
-def _reduce(values: Any, how: str, designs: int | None) -> float | list[float]:
-    arr = np.asarray(values, dtype=float)
-    if arr.ndim == 0:
-        arr = arr.reshape(1)
-    funcs: dict[str, Any] = {
-        "max": np.nanmax,
-        "min": np.nanmin,
-        "max_abs": lambda a, axis: np.nanmax(np.abs(a), axis=axis),
-        "mean": np.nanmean,
-        "range": lambda a, axis: np.nanmax(a, axis=axis) - np.nanmin(a, axis=axis),
-    }
-    # An all-NaN slice (a design that never assembles) stays NaN without numpy's warning.
-    with np.errstate(all="ignore"), warnings.catch_warnings():
-        warnings.simplefilter("ignore", RuntimeWarning)
-        out = funcs[how](arr, axis=-1)
-    if designs is None:
-        return float(np.ravel(out)[0]) if np.ndim(out) else float(out)
-    return [float(v) for v in np.broadcast_to(out, (designs,))]
+def _reduced(values: Any, how: str, kin: Any, designs: int | None) -> float | list[float]:
+    """``values`` reduced over the positions by the catalogue's reduction ``how``, one float per design."""
+    return _scalar(reduce(values, how, kin), designs)
 
 
 def _scalar(value: Any, designs: int | None) -> float | list[float]:
@@ -137,6 +122,79 @@ def _flatten(items: Iterable) -> Iterable:
             yield item
 
 
+# ------------------------------------------------------------------------------------------------ series
+
+
+def _joint_force(a: Any, about: tuple[float, float], joint: str) -> Any:
+    return a.forces.joint(joint).magnitude
+
+
+def _load_power(a: Any, about: tuple[float, float], load: str) -> Any:
+    """P = F·v of the point for a force, T·ω of the body for a torque [W]."""
+    kin = a.kinematics
+    for f in applied_forces(kin):
+        if f.name == load:
+            return np.asarray(f.fx * f.motion.vx + f.fy * f.motion.vy, dtype=float)
+    for t in applied_torques(kin):
+        if t.name == load:
+            return np.asarray(t.torque * kin.body(t.body).omega, dtype=float)
+    raise KeyError(load)
+
+
+#: The series over the crank positions that the quantities of the catalogue reduce (``Quantity.series``): each a
+#: function of (analysis, point of the moments [m], the parts of its pattern), values shaped like the torque.
+SERIES: dict[str, Callable[..., Any]] = {
+    "crank_speed": lambda a, about: np.broadcast_to(np.asarray(a.kinematics.speed, dtype=float),
+                                                    np.shape(a.forces.driving_torque)),
+    "driving_torque": lambda a, about: a.forces.driving_torque,
+    "input_power": lambda a, about: a.forces.input_power,
+    "frame_force": lambda a, about: np.hypot(*a.forces.frame_force),
+    "frame_force.fx": lambda a, about: a.forces.frame_force[0],
+    "frame_force.fy": lambda a, about: a.forces.frame_force[1],
+    "shaking_moment": lambda a, about: a.forces.shaking_moment(about=tuple(about)),
+    # The inertial shaking force and moment alone (what balancing removes), apart from the process loads and the
+    # weight the frame also carries: -M a_G of the whole moving mechanism and the moment of the d'Alembert loads
+    # (zero for a massless, statics model).
+    "inertial_shaking_force": lambda a, about: np.hypot(*inertial_force(a.kinematics)),
+    "inertial_shaking_moment": lambda a, about: inertial_shaking_moment(a.kinematics, (about[0], about[1])),
+    "kinetic_energy": lambda a, about: a.energy.kinetic_total,
+    "reduced_inertia": lambda a, about: a.energy.reduced_inertia,
+    "joint.<joint>.force": _joint_force,
+    "load.<load>.power": _load_power,
+}
+#: The series whose harmonics a run reports when ``[output] harmonics`` asks for them, with their SI unit.
+HARMONIC_SERIES = {"driving_torque": "N*m", "shaking_moment": "N*m", "frame_force.fx": "N", "frame_force.fy": "N"}
+
+
+def series(analysis: Any, name: str, about: tuple[float, float] = (0.0, 0.0)) -> np.ndarray:
+    """The series ``name`` (a key of :data:`SERIES`, or one of its patterns filled in: ``joint.B.force``) of an
+    analysis over its crank positions."""
+    if name in SERIES:
+        return np.asarray(SERIES[name](analysis, about), dtype=float)
+    for pattern, part in (("joint.<joint>.force", "joint."), ("load.<load>.power", "load.")):
+        suffix = pattern.split(">")[1]
+        if name.startswith(part) and name.endswith(suffix):
+            return np.asarray(SERIES[pattern](analysis, about, name[len(part):-len(suffix)]), dtype=float)
+    raise KeyError(f"'{name}' is not a series of a linkage analysis")
+
+
+def _declared(quantity: Quantity, analysis: Any) -> list[tuple[str, str]]:
+    """(key, series) of each result of ``quantity`` for this analysis (a pattern once per joint or load)."""
+    if "<joint>" in quantity.key:
+        names = [j[0] for j in joint_list(analysis.forces)]
+        return [(quantity.key.replace("<joint>", j), quantity.series.replace("<joint>", j)) for j in names]
+    if "<load>" in quantity.key:
+        names = [f.name for f in applied_forces(analysis.kinematics)]
+        names += [t.name for t in applied_torques(analysis.kinematics)]
+        return [(quantity.key.replace("<load>", n), quantity.series.replace("<load>", n)) for n in names]
+    return [(quantity.key, quantity.series)]
+
+
+#: The quantities a run reduces from their series here (the others are figures of the cycle or of the
+#: diagnostics, or the harmonics, formed below).
+REDUCED = tuple(q for q in MECHANISM if q.series and REDUCTIONS[q.over_positions].function is not None)
+
+
 # ------------------------------------------------------------------------------------------------ scalars
 
 
@@ -147,49 +205,34 @@ def linkage_scalars(
     about: tuple[float, float] = (0.0, 0.0),
     harmonic_orders: int = 0,
     notes: list[str] | None = None,
+    with_loads: bool = True,
+    exact: bool = False,
 ) -> tuple[dict[str, Any], dict[str, str]]:
     """Every scalar result of an :func:`~machdyn.linkage.analyse` result in SI: (values, units of the keys made
     at run time). ``about`` [m] is the point of the shaking moment; ``harmonic_orders`` > 0 adds the amplitude
     and phase of that many harmonics of the driving torque, the shaking moment and the frame force components;
-    ``notes`` collects why a result could not be formed (the energy fluctuation of a partial crank range)."""
+    ``notes`` collects why a result could not be formed (the energy fluctuation of a partial crank range);
+    ``with_loads`` adds the mean power of each applied load (``load.<load>.mean_power``); ``exact`` makes
+    the extremes of the series exact between the samples (:func:`exact_extremes`; a single design).
+
+    The results that reduce a series (:data:`REDUCED`) are formed from their declaration alone: the catalogue
+    names the series (:data:`SERIES`) and the reduction (:mod:`machdyn.linkage.reductions`)."""
     designs = design_count(analysis)
     kin, forces, energy = analysis.kinematics, analysis.forces, analysis.energy
     mech = mechanism if mechanism is not None else mechanism_of(analysis)
     out: dict[str, Any] = {}
     units: dict[str, str] = {}
 
-    speed = np.asarray(kin.speed, dtype=float)
-    out["crank_speed.mean"] = _reduce(np.broadcast_to(speed, np.shape(forces.driving_torque)), "mean", designs)
-    torque = forces.driving_torque
-    out["driving_torque.max_abs"] = _reduce(torque, "max_abs", designs)
-    out["driving_torque.max"] = _reduce(torque, "max", designs)
-    out["driving_torque.min"] = _reduce(torque, "min", designs)
-    # Means and RMS over time, not over crank angle: they differ when the crank speed varies.
-    out["driving_torque.mean"] = _scalar(time_mean(torque, kin), designs)
-    out["driving_torque.rms"] = _scalar(time_rms(torque, kin), designs)
-    out["input_power.mean"] = _scalar(time_mean(forces.input_power, kin), designs)
-    out["input_power.max"] = _reduce(forces.input_power, "max", designs)
-    out["input_power.min"] = _reduce(forces.input_power, "min", designs)
-    for name, _kind, _b1, _b2 in joint_list(forces):
-        out[f"joint.{name}.max_force"] = _reduce(forces.joint(name).magnitude, "max", designs)
-    fx, fy = forces.frame_force
-    out["frame_force.max"] = _reduce(np.hypot(fx, fy), "max", designs)
-    # The inertial shaking force and moment alone (what balancing removes), apart from the process loads and the
-    # weight the frame also carries: -M a_G of the whole moving mechanism and the moment of the d'Alembert loads.
-    ix, iy = inertial_force(kin)  # zero for a massless (statics) model, which has no centre of mass
-    out["inertial_shaking_force.max"] = _reduce(np.hypot(ix, iy), "max", designs)
-    out["inertial_shaking_moment.max_abs"] = _reduce(inertial_shaking_moment(kin, (about[0], about[1])), "max_abs",
-                                                     designs)
-    out["shaking_moment.max_abs"] = _reduce(forces.shaking_moment(about=tuple(about)), "max_abs", designs)
+    for quantity in REDUCED:
+        if quantity.key.startswith("load.") and not with_loads:
+            continue
+        for key, name in _declared(quantity, analysis):
+            out[key] = _reduced(series(analysis, name, about), quantity.over_positions, kin, designs)
+    if exact:
+        exact_extremes(analysis, out, about)
     if tuple(about) != (0.0, 0.0):
         out["shaking_moment.about_x"], out["shaking_moment.about_y"] = float(about[0]), float(about[1])
-
-    out["kinetic_energy.max"] = _reduce(energy.kinetic_total, "max", designs)
-    out["kinetic_energy.min"] = _reduce(energy.kinetic_total, "min", designs)
-    out["kinetic_energy.fluctuation"] = _reduce(energy.kinetic_total, "range", designs)
-    out["reduced_inertia.min"] = _reduce(energy.reduced_inertia, "min", designs)
-    out["reduced_inertia.max"] = _reduce(energy.reduced_inertia, "max", designs)
-    out["reduced_inertia.mean"] = _reduce(energy.reduced_inertia, "mean", designs)
+    torque = forces.driving_torque
     if np.all(np.isfinite(torque)):
         try:
             out["flywheel.energy_fluctuation"] = _scalar(energy_fluctuation(torque, kin.crank_angle), designs)
@@ -220,8 +263,8 @@ def linkage_scalars(
         if getattr(diag, "transmission_angle_max", None) is not None:
             out["transmission_angle.max"] = _scalar(diag.transmission_angle_max, designs)
         if getattr(diag, "transmission_angle_min", None) is not None and np.isfinite(diag.transmission_angle_min):
-            out["transmission_angle.worst"] = _scalar(min(diag.transmission_angle_min,
-                                                          math.pi - diag.transmission_angle_max), designs)
+            out["transmission_angle.worst"] = _scalar(worst_of(diag.transmission_angle_min,
+                                                               diag.transmission_angle_max), designs)
         # With more than one slider (the double slider-crank), each slider's own figures, named by it.
         per_slider = [b for b in (getattr(diag, "strokes", None) or {}) if b in sliders]
         if len(per_slider) > 1:
@@ -245,52 +288,103 @@ def linkage_scalars(
         margin = grashof_margin(mech)
         if margin is not None:  # the class itself (text) is in the diagnostics and a sweep's columns
             out["grashof.margin"] = _scalar(margin, designs)
-    if harmonic_orders > 0 and designs is None:
+    if harmonic_orders > 0:
         values, hunits = harmonic_scalars(analysis, (float(about[0]), float(about[1])), harmonic_orders)
-        out.update(values)
+        out.update({k: _scalar(v, designs) for k, v in values.items()})
         units.update(hunits)
     return out, units
 
 
+#: The reductions whose value is an extreme of the series, refined by :func:`exact_extremes`: each is the
+#: extreme of the series it names (a range is its largest minus its smallest value).
+_EXTREMES = {"max": ("max",), "min": ("min",), "max_abs": ("max_abs",), "range": ("max", "min")}
+
+
+def exact_extremes(analysis: Any, values: dict[str, Any], about: tuple[float, float] = (0.0, 0.0),
+                   keys: Iterable[str] | None = None) -> list[str]:
+    """Replace in ``values`` each extreme of a series (:data:`REDUCED` quantities reduced by a maximum, a
+    minimum, a largest magnitude or a range; only ``keys`` if given) by the exact extreme of the closed form
+    between the samples and at the loads' breakpoints (:func:`machdyn.linkage.extremes.refine`), so that a
+    peak does not depend on the number of positions. A single design at a constant crank speed and
+    acceleration only (else the values stay as sampled). Returns the keys refined."""
+    kin = analysis.kinematics
+    mech = kin.mechanism
+    phi = np.asarray(kin.crank_angle, dtype=float)
+    speed, acceleration = np.asarray(kin.speed, dtype=float), np.asarray(kin.acceleration, dtype=float)
+    constant = all(v.size and np.all(v == v.ravel()[0]) for v in (speed, acceleration))
+    if design_count(analysis) is not None or phi.ndim != 1 or not constant:
+        return []
+    wanted = None if keys is None else set(keys)
+    jobs: dict[str, tuple[str, str]] = {}  # "<series>|<extreme>" -> (series, extreme)
+    refined: dict[str, tuple[str, tuple[str, ...]]] = {}
+    for quantity in REDUCED:
+        if quantity.over_positions not in _EXTREMES:
+            continue
+        for key, name in _declared(quantity, analysis):
+            if key in values and (wanted is None or key in wanted):
+                refined[key] = (name, _EXTREMES[quantity.over_positions])
+                for how in _EXTREMES[quantity.over_positions]:
+                    jobs[f"{name}|{how}"] = (name, how)
+    if not jobs:
+        return []
+    names = sorted({name for name, _ in jobs.values()})
+    sampled = {job: (series(analysis, name, about), how) for job, (name, how) in jobs.items()}
+
+    def evaluate(angles: np.ndarray) -> dict[str, np.ndarray]:
+        try:
+            at = analyse(mech, angles, float(speed.ravel()[0]), float(acceleration.ravel()[0]), diagnostics=False)
+        except (InputError, SingularPositionError):  # a searched angle at a dead position: that pass gives nothing
+            return {job: np.full(angles.shape, np.nan) for job in jobs}
+        found = {name: series(at, name, about) for name in names}
+        return {job: found[name] for job, (name, _how) in jobs.items()}
+
+    with np.errstate(all="ignore"):
+        exact = refine(evaluate, phi, sampled, breakpoints(mech), periodic=analysed_range(phi) is None)
+    done = []
+    for key, (name, hows) in refined.items():
+        if all(f"{name}|{how}" in exact for how in hows):
+            found = [exact[f"{name}|{how}"] for how in hows]
+            values[key] = float(found[0] - found[1]) if len(found) == 2 else float(found[0])
+            done.append(key)
+    return done
+
+
 def harmonic_scalars(analysis: Any, about: tuple[float, float], orders: int) -> tuple[dict, dict]:
-    """Amplitude [unit of the series] and phase [rad] of the first ``orders`` harmonics of the driving torque,
-    the shaking moment about ``about`` and the frame force components, over a uniform full cycle (else none)."""
-    values: dict[str, float] = {}
+    """Amplitude [unit of the series] and phase [rad] of the first ``orders`` harmonics of each series of
+    :data:`HARMONIC_SERIES` (the driving torque, the shaking moment about ``about``, the frame force components),
+    over a uniform full cycle (else none); one value per design (an (N,) array for N designs)."""
+    values: dict[str, Any] = {}
     units: dict[str, str] = {}
     phi = np.asarray(analysis.kinematics.crank_angle, dtype=float)
     n = phi.size
-    if n < 4 or not is_full_turn(phi) or orders >= n / 2:
+    if n < 4 or phi.ndim != 1 or not is_full_turn(phi) or orders >= n / 2:
         return values, units
-    series = {
-        "driving_torque": (analysis.forces.driving_torque, "N*m"),
-        "shaking_moment": (analysis.forces.shaking_moment(about=about), "N*m"),
-        "frame_force.fx": (analysis.forces.frame_force[0], "N"),
-        "frame_force.fy": (analysis.forces.frame_force[1], "N"),
-    }
-    for name, (data, unit) in series.items():
-        if not np.all(np.isfinite(data)):
+    for name, unit in HARMONIC_SERIES.items():
+        data = series(analysis, name, about)
+        finite = np.all(np.isfinite(data), axis=-1)
+        if not np.any(finite):
             continue
-        h = harmonics(data, phi, orders=orders)
-        for k, amp, ph in zip(np.ravel(h.orders), np.ravel(h.amplitude), np.ravel(h.phase), strict=True):
-            values[f"{name}.harmonic_{int(k)}.amplitude"] = float(amp)
-            units[f"{name}.harmonic_{int(k)}.amplitude"] = unit
-            values[f"{name}.harmonic_{int(k)}.phase"] = float(ph)
-            units[f"{name}.harmonic_{int(k)}.phase"] = "rad"
+        h = harmonics(np.where(finite[..., None], data, 0.0) if data.ndim > 1 else data, phi, orders=orders)
+        amplitude, phase = np.asarray(h.amplitude), np.asarray(h.phase)
+        for i, k in enumerate(np.ravel(h.orders)):
+            key = f"{name}.harmonic_{int(k)}"
+            values[f"{key}.amplitude"] = np.where(finite, amplitude[..., i], np.nan)
+            values[f"{key}.phase"] = np.where(finite, phase[..., i], np.nan)
+            units[f"{key}.amplitude"], units[f"{key}.phase"] = unit, "rad"
     return values, units
 
 
 def load_powers(analysis: Any) -> dict[str, tuple[float, float]]:
-    """(time-mean, RMS) power [W] of each applied point force and body torque over the analysed positions:
-    P = F·v_point for a force, T·ω_body for a torque. A negative mean is a load the drive works against; a
+    """(time-mean, RMS) power [W] of each applied point force and body torque over the analysed positions
+    (the series ``load.<load>.power`` of :data:`SERIES`). A negative mean is a load the drive works against; a
     positive mean is a load that drives the mechanism. Single designs only."""
     kin = analysis.kinematics
+    names = [f.name for f in applied_forces(kin)] + [t.name for t in applied_torques(kin)]
     out: dict[str, tuple[float, float]] = {}
-    for f in applied_forces(kin):
-        power = np.asarray(f.fx * f.motion.vx + f.fy * f.motion.vy, dtype=float)
-        out[f.name] = (float(np.ravel(time_mean(power, kin))[0]), float(np.ravel(time_rms(power, kin))[0]))
-    for t in applied_torques(kin):
-        power = np.asarray(t.torque * kin.body(t.body).omega, dtype=float)
-        out[t.name] = (float(np.ravel(time_mean(power, kin))[0]), float(np.ravel(time_rms(power, kin))[0]))
+    for name in names:
+        power = series(analysis, f"load.{name}.power")
+        out[name] = (float(np.ravel(reduce(power, "time_mean", kin))[0]),
+                     float(np.ravel(reduce(power, "time_rms", kin))[0]))
     return out
 
 

@@ -50,8 +50,9 @@ from ..linkage.loads import window
 from ..linkage.mass_centre import inertial_force, inertial_shaking_moment
 from ..linkage.model import GROUND, RRR, Mechanism, joints, output_bodies, split_ref
 from ..linkage.motion import DEAD_TOL, is_full_turn
-from .catalogue import ENGINE_SUMMARIES, MECHANISM, find, population_quantities
-from .linkage import linkage_scalars
+from ..linkage.reductions import worst_of
+from .catalogue import ENGINE_SUMMARIES, find, population_quantities
+from .linkage import HARMONIC_SERIES, linkage_scalars
 
 #: Default threshold [deg] of ``poor_transmission``: a design whose transmission angle comes closer than this to
 #: 0 or 180 deg is degenerate (its joint forces grow as 1/sin mu: 5.8 times those at 90 deg at 10 deg). Norton,
@@ -92,8 +93,10 @@ def compactor_plate(mech: Mechanism) -> tuple[Any, str] | None:
     return (d, extra[0]) if len(extra) == 1 else None
 
 
-def result_names(mech: Mechanism, machine: str | None = None) -> list[str]:
-    """Every numeric result the population evaluator gives for a mechanism of this structure (of ``machine``)."""
+def result_names(mech: Mechanism, machine: str | None = None, harmonics: int = 0) -> list[str]:
+    """Every numeric result the population evaluator gives for a mechanism of this structure (of ``machine``),
+    the amplitude and phase of its first ``harmonics`` harmonics (``[output] harmonics``) included: the
+    results a run of it reports."""
     names = []
     outputs = [b for b, _ in output_bodies(mech)]
     per = per_output(mech)
@@ -106,6 +109,12 @@ def result_names(mech: Mechanism, machine: str | None = None) -> list[str]:
             names += [q.key.replace("<joint>", j[0]) for j in joints(mech)]
         elif q.key == "stroke.<body>":
             names += [f"stroke.{b}" for b in outputs]
+        elif "<load>" in q.key:
+            loads: list[Any] = [*mech.forces, *mech.torques]
+            names += [q.key.replace("<load>", load.name) for load in loads]
+        elif "<series*>" in q.key:
+            names += [q.key.replace("<series*>", s).replace("<order>", str(k)) for s in HARMONIC_SERIES
+                      for k in range(1, harmonics + 1)]
         elif "<body>" in q.key:
             names += [q.key.replace("<body>", b) for b in per]
         else:
@@ -133,10 +142,13 @@ def sweep_columns(mech: Mechanism, machine: str | None = None, objective: str | 
 
 
 def result_unit(key: str, mech: Mechanism | None = None) -> str:
-    """The SI unit of result ``key`` (a stroke's from its output: m for a slider, rad for a rocker)."""
+    """The SI unit of result ``key`` (a stroke's from its output: m for a slider, rad for a rocker; a harmonic
+    amplitude's from its series)."""
     if key.startswith("stroke.") and mech is not None:
         return "m" if dict(output_bodies(mech)).get(key[7:]) == "slide" else "rad"
     found = find(key)
+    if found is not None and found[0].over_positions == "harmonic_amplitude":
+        return HARMONIC_SERIES.get(found[1]["series"], "")  # the unit of its series
     return found[0].unit if found is not None else ""
 
 
@@ -195,10 +207,12 @@ def evaluate_population(mech: Mechanism, phi, speed, acceleration, wanted: Itera
         if "geometry" in groups:
             out.update(_geometry(mech, n))
         regular = _regular(status)
+        if "dead_positions.count" in wanted:  # a design that passes one is flagged (dead_point) and not regular
+            out["dead_positions.count"] = np.where(np.asarray(status["dead_point"], dtype=bool), np.nan, 0.0)
         if "analysis" in groups:
             found = _analysis(mech, phi, speed, acceleration, n, regular, wanted, about) if regular.any() else {}
-            out.update({q.key: found.get(q.key, np.full(n, np.nan)) for q in MECHANISM
-                        if q.group == "analysis" and q.key in wanted})
+            out.update({key: found.get(key, np.full(n, np.nan)) for key in wanted
+                        if (f := find(key)) is not None and f[0].group == "analysis"})
     for key, values in list(out.items()):
         arr = np.broadcast_to(values, (n,))
         # A figure of the geometry (the Grashof margin) holds for every design: it tells why one fails.
@@ -419,9 +433,20 @@ def _transmission(kin, ok, shape) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     good = np.broadcast_to(ok, mu.shape) & np.isfinite(mu)
     low = np.where(good, mu, np.inf).min(axis=(0, 2))
     high = np.where(good, mu, -np.inf).max(axis=(0, 2))
-    worst = np.where(good, np.minimum(mu, np.pi - mu), np.inf).min(axis=(0, 2))
+    worst = np.where(good, worst_of(mu, mu), np.inf).min(axis=(0, 2))
     none = ~good.any(axis=(0, 2))
     return (np.where(none, np.nan, low), np.where(none, np.nan, high), np.where(none, np.nan, worst))
+
+
+def compactor_results(mech: Mechanism, kin: Any) -> dict[str, float]:
+    """The compactor's results (see the module's docstring) of one analysed design, as a run reports them: the
+    same function as a population's, over the run's crank angles."""
+    phi = np.asarray(kin.crank_angle, dtype=float)
+    shape = (1, phi.size)
+    ok = np.broadcast_to(np.asarray(kin.assembled, dtype=bool), shape)
+    with np.errstate(all="ignore"):
+        found = _compactor_results(mech, kin, phi, ok, shape)
+    return {k: float(np.ravel(v)[0]) for k, v in found.items()}
 
 
 def _compactor_results(mech, kin, phi, ok, shape) -> dict[str, np.ndarray]:
@@ -468,18 +493,22 @@ def _geometry(mech: Mechanism, n: int) -> dict[str, np.ndarray]:
 
 
 def _analysis(mech, phi, speed, acceleration, n, regular, wanted, about) -> dict[str, np.ndarray]:
-    """The analysis group's results of the regular designs, reduced by the run's own function."""
+    """The analysis group's results of the regular designs, reduced by the run's own function (the harmonics
+    up to the highest order wanted, the loads' mean powers)."""
     index = np.flatnonzero(regular)
     sub = mech.take_designs(index) if mech.design_count else mech
     spd, acc = (_rows(_column(v, n, phi), index) for v in (speed, acceleration))
     analysis = analyse(sub, phi, spd, acc, diagnostics=False)
-    values, _ = linkage_scalars(analysis, sub, about=tuple(about))
-    keys = {q.key for q in MECHANISM if q.group == "analysis"} & wanted
+    orders = max((int(f[1]["order"]) for k in wanted if (f := find(k)) is not None and "order" in f[1]), default=0)
+    values, _ = linkage_scalars(analysis, sub, about=tuple(about), harmonic_orders=orders,
+                                with_loads=any(k.startswith("load.") for k in wanted))
     out = {}
-    for key in keys:
-        if key not in values:
+    for key in wanted:
+        found = find(key)
+        if found is None or found[0].group != "analysis" or key not in values:
             continue
         full = np.full(n, np.nan)
         full[index] = np.broadcast_to(np.asarray(values[key], dtype=float), (index.size,))
         out[key] = full
     return out
+

@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 
 from ..linkage import four_bar, slider_crank
+from ..linkage.reductions import worst_of
 
 TWO_PI = 2.0 * np.pi
 
@@ -135,7 +136,7 @@ class Candidate:
             beta = np.angle((b - a) * np.exp(-1j * self.slide_angle))
             return np.pi / 2 - np.abs(np.arcsin(np.sin(beta)))
         mu = np.abs(wrap(np.angle(b - a) - np.angle(b - self.rocker_pivot)))
-        return np.minimum(mu, np.pi - mu)
+        return worst_of(mu, mu)
 
     def working_angles(self, count: int = 181) -> np.ndarray:
         """``count`` crank angles [rad] from the first precision position to the last, the way the crank turns

@@ -33,16 +33,34 @@ import numpy as np
 
 from ..dynamics.flywheel import flywheel_inertia_classic
 from ..linkage import BodyTorque, PointForce, energy_fluctuation, four_bar, kinematics, kinetostatics, slider_crank
+from ..linkage.reductions import reduce
+from ..results.catalogue import find
 from .candidate import TWO_PI, Candidate
 from .defects import Report
 
-#: Rankable quantities: key -> (label, SI unit, larger is better).
+#: The rankable quantities that are results of a mechanism: name -> the catalogue key whose unit, better
+#: direction and reduction (:mod:`machdyn.linkage.reductions`) they are.
+AS_RESULTS: dict[str, str] = {
+    "peak_torque": "driving_torque.max_abs",
+    "inertial_shaking_force": "inertial_shaking_force.max",
+    "frame_force": "frame_force.max",
+    "min_transmission": "transmission_angle.worst",
+    "flywheel_energy": "flywheel.energy_fluctuation",
+}
+_SHORT = {"peak_torque": "Peak driving torque", "inertial_shaking_force": "Peak inertial shaking force",
+          "frame_force": "Peak force on the frame", "min_transmission": "Worst transmission angle",
+          "flywheel_energy": "Fluctuation of energy per turn"}
+
+
+def _declared(name: str) -> tuple[str, str, bool]:
+    found = find(AS_RESULTS[name])
+    assert found is not None, AS_RESULTS[name]
+    return _SHORT[name], found[0].unit, found[0].better == "higher"
+
+
+#: Rankable quantities: key -> (label, SI unit, larger is better); those of :data:`AS_RESULTS` from the catalogue.
 QUANTITIES: dict[str, tuple[str, str, bool]] = {
-    "peak_torque": ("Peak driving torque", "N*m", False),
-    "inertial_shaking_force": ("Peak inertial shaking force", "N", False),
-    "frame_force": ("Peak force on the frame", "N", False),
-    "min_transmission": ("Worst transmission angle", "rad", True),
-    "flywheel_energy": ("Fluctuation of energy per turn", "J", False),
+    **{name: _declared(name) for name in AS_RESULTS},
     "flywheel_inertia": ("Flywheel needed", "kg*m^2", False),
     "error": ("Kinematic error at the positions", "", False),
 }
@@ -138,14 +156,13 @@ def evaluate(cands: list[Candidate], reports: list[Report], drive: Drive = Drive
                 shake = np.asarray(forces.shaking_force)
                 mu = np.asarray(kin.dyad_reports[0].transmission)
                 inertial = _inertial_shaking(mech, kin)
-            mu = np.minimum(mu, np.pi - mu)
             k = len(idx)
             bad = ~np.isfinite(torque[:k]).all(axis=1)
-            # fmax / fmin skip NaN without warning (a design that cannot close is NaN throughout)
-            out["peak_torque"][idx] = np.where(bad, np.nan, np.fmax.reduce(np.abs(torque[:k]), axis=1))
-            out["frame_force"][idx] = np.where(bad, np.nan, np.fmax.reduce(shake[:k], axis=1))
-            out["inertial_shaking_force"][idx] = np.where(bad, np.nan, np.fmax.reduce(inertial[:k], axis=1))
-            out["min_transmission"][idx] = np.where(bad, np.nan, np.fmin.reduce(mu[:k], axis=1))
+            # the catalogue's reductions, NaN skipped (a design that cannot close is NaN throughout)
+            out["peak_torque"][idx] = np.where(bad, np.nan, reduce(torque[:k], "max_abs"))
+            out["frame_force"][idx] = np.where(bad, np.nan, reduce(shake[:k], "max"))
+            out["inertial_shaking_force"][idx] = np.where(bad, np.nan, reduce(inertial[:k], "max"))
+            out["min_transmission"][idx] = np.where(bad, np.nan, reduce(mu[:k], "worst"))
             if turns:
                 grid = np.linspace(0.0, TWO_PI, drive.positions, endpoint=False)
                 de = energy_fluctuation(np.where(np.isfinite(torque[:k]), torque[:k], 0.0), grid)

@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 
 from ...errors import ProblemFileError
-from ...problem.build import build_mechanism, crank_angles
+from ...problem.build import build_mechanism, crank_angles, harmonics_of
 from ...problem.dumper import dump_problem
 from ...results.labels import display_factor
 from ...results.population import DEFAULT_MIN_TRANSMISSION_DEG
@@ -60,7 +60,7 @@ def setup(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None = None)
         problems += exc.problems
     mech = build_mechanism(problem)
     machine = getattr(problem.mechanism, "machine", None)
-    linkage_names = result_names(mech, machine)
+    linkage_names = result_names(mech, machine, harmonics_of(problem))
     per_design = {k: u for k, u in capability_results(problem).items() if k not in set(linkage_names)}
     names = linkage_names + sorted(per_design)
 
@@ -152,7 +152,7 @@ def verify(problem: Any, ev: Evaluator) -> tuple[dict[str, float], bool]:
     if isinstance(ev, RunEvaluator):
         return verify_by_runs(problem, ev)
     mech = build_mechanism(problem)
-    wanted = set(result_names(mech, ev.machine)) & (ev.wanted | _all_cheap(mech, ev.machine))
+    wanted = set(result_names(mech, ev.machine, harmonics_of(problem))) & (ev.wanted | _all_cheap(mech, ev.machine))
     res = evaluate(mech, ev.phi, problem.drive.speed, problem.drive.acceleration, wanted, ev.about,
                    machine=ev.machine, min_transmission_angle=ev.min_transmission_angle)
     if ev.per_design_wanted:

@@ -13,7 +13,7 @@ from ...limits import held_values_error
 from ...linkage import stack_designs
 from ...pipeline import Outcome, StageContext
 from ...pipelines.linkage_run import crank_range
-from ...problem.build import build_mechanism, crank_angles
+from ...problem.build import build_mechanism, crank_angles, harmonics_of
 from ...problem.errors import did_you_mean
 from ...results.catalogue import label
 from ...results.labels import Label
@@ -78,7 +78,8 @@ def check(problem: Any, _table: Any, source: str | None = None) -> list[tuple[st
 def unknown_columns(problem: Any, mech: Any) -> list[tuple[str, str]]:
     """The ``[sweep] columns`` that name no result of this mechanism or of the file's other tables (a capability's
     result, computed by a run of each variant), as (path, message)."""
-    known = result_names(mech, getattr(problem.mechanism, "machine", None)) + sorted(capability_results(problem))
+    known = result_names(mech, getattr(problem.mechanism, "machine", None), harmonics_of(problem)) \
+        + sorted(capability_results(problem))
     return [(f"sweep.columns[{i}]", f"'{key}' is not a result of this mechanism{did_you_mean(key, known)}")
             for i, key in enumerate(problem.sweep.extra_columns) if key not in known]
 
