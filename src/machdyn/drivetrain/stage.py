@@ -49,7 +49,7 @@ from ..problem.build import build_mechanism
 from ..problem.fields import Angle, Inertia, Time, Torque
 from ..problem.schema import Spec
 from ..results.labels import Label
-from .clutch import Engagement, Stop, engage, stop_machine
+from .clutch import Engagement, Stop, brake_balance_problem, engage, stop_machine
 from .single_stroke import single_stroke, single_stroke_duty
 from .train import DriveTrain, Stage
 
@@ -167,14 +167,31 @@ def check(problem: Any, table: DriveTrainSpec, source: str | None = None) -> lis
             flywheel_shaft(train, float(flywheel.speed_ratio))
         except InputError as exc:
             return [("drivetrain.stages", str(exc))]
-    if table.clutch is None:
+    if table.clutch is None and table.brake is None:
         return []
     try:
         mech = build_mechanism(problem)
-        torque = analyse(mech, crank_angles(360), abs(problem.drive.speed)).forces.driving_torque
+        out = brake_problems(table, train, mech)
+        if table.clutch is not None:
+            torque = analyse(mech, crank_angles(360), abs(problem.drive.speed)).forces.driving_torque
+            out += _clutch_problems(table, train, np.asarray(torque, dtype=float))
     except (ProblemFileError, InputError):
         return []  # the kind's own check reports them
-    return _clutch_problems(table, train, np.asarray(torque, dtype=float))
+    return out
+
+
+def brake_problems(table: DriveTrainSpec, train: DriveTrain, mechanism: Any) -> list[tuple[str, str]]:
+    """The brake's torque against the loads of the linkage (:func:`~machdyn.drivetrain.clutch.brake_balance_problem`,
+    the balance of work over a turn): a brake that cannot stop the machine is refused by ``check`` and by ``run``
+    alike, before any stop is integrated."""
+    if table.brake is None or getattr(mechanism, "design_count", None) is not None:
+        return []
+    at_shaft = len(train.stages) if table.brake.shaft is None else table.brake.shaft
+    if not 0 <= at_shaft <= len(train.stages):
+        return []  # the table's own rule reports it
+    weak = brake_balance_problem(equivalent_machine(mechanism, 360), table.brake.torque * train.speed_ratios[at_shaft])
+    return [] if weak is None else [("drivetrain.brake.torque", f"{weak}; got {table.brake.torque:.4g} N*m on "
+                                                                 f"shaft {at_shaft}")]
 
 
 def _clutch_problems(table: DriveTrainSpec, train: DriveTrain, torque: np.ndarray) -> list[tuple[str, str]]:
@@ -199,6 +216,7 @@ def run(ctx: StageContext) -> Outcome:
         raise InputError("[drivetrain] analyses a single design; the file describes several.")
     crank_speed = float(np.mean(np.abs(np.ravel(ctx.analysis.kinematics.speed))))
     problems = _clutch_problems(table, train, torque) if table.clutch is not None else []
+    problems += brake_problems(table, train, ctx.mechanism)
     if problems:
         raise ProblemFileError(problems)
     shaft_torques = train.shaft_torques(torque)
@@ -373,8 +391,12 @@ def _outcome(done: DriveTrainRun, table: DriveTrainSpec) -> Outcome:
                                    "clutch_torque": (k.clutch_torque, "N*m"), "motor_torque": (k.motor_torque, "N*m")}
     summary = tuple(key for key in scalars if not key.startswith("drivetrain.shaft_")) + \
         ("drivetrain.shaft_0.torque.max_abs",)
+    estimated = [st for st in done.stops if st.estimated]
+    warnings = (f"brake: {len(estimated)} of the {len(done.stops)} stops last longer than the turns integrated; "
+                "their rest is found by the energy balance from there (an upper bound on the angle and time)",
+                ) if estimated else ()
     return Outcome(results=done, scalars=scalars, labels=labels, series=series, summary=summary,
-                   failed_checks=tuple(failed))
+                   warnings=warnings, failed_checks=tuple(failed))
 
 
 LABELS = {

@@ -17,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from ..errors import MachdynError
 from ..explore.execution import announce_estimate
 from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
 from .constraints import CLOSES, violations
@@ -159,10 +160,15 @@ def differential_evolution(evaluator: Evaluator, *, population: int, generations
         history["best"].append(fun if fun < INFEASIBLE else math.nan)
 
     start = time.perf_counter()
-    res = scipy_de(
-        func, bounds, maxiter=generations, popsize=multiplier, tol=tolerance, seed=seed, polish=False,
-        vectorized=True, updating="deferred", callback=callback, init="latinhypercube", x0=x0,
-    )
+    try:
+        res = scipy_de(
+            func, bounds, maxiter=generations, popsize=multiplier, tol=tolerance, seed=seed, polish=False,
+            vectorized=True, updating="deferred", callback=callback, init="latinhypercube", x0=x0,
+        )
+    except RuntimeError as exc:  # scipy wraps what the evaluator raised (no design buildable): say that instead
+        if isinstance(exc.__cause__, MachdynError):
+            raise exc.__cause__ from None
+        raise
     seconds = time.perf_counter() - start
     if not float(res.fun) < INFEASIBLE:
         raise NoFeasibleDesign(evaluator.infeasible_message(show or _plain))

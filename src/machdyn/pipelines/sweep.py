@@ -14,10 +14,10 @@ from ..linkage import stack_designs
 from ..optimise.per_design import capability_results, evaluate_designs
 from ..pipeline import Outcome, StageContext
 from ..problem.build import build_mechanism, crank_angles
-from ..problem.errors import did_you_mean
 from ..problem.sweep import expand_sweep
 from ..results.catalogue import label
 from ..results.labels import Label
+from ..results.names import did_you_mean_result, results_to_choose
 from ..results.population import FAULTS, evaluate_population, result_names, result_unit, sweep_columns
 from .design_views import MAX_VIEWS, analysed, design_problem
 from .linkage_run import crank_range
@@ -78,7 +78,8 @@ def unknown_columns(problem: Any, mech: Any) -> list[tuple[str, str]]:
     """The ``[sweep] columns`` that name no result of this mechanism or of the file's other tables (a capability's
     result, computed by a run of each variant), as (path, message)."""
     known = result_names(mech, getattr(problem.mechanism, "machine", None)) + sorted(capability_results(problem))
-    return [(f"sweep.columns[{i}]", f"'{key}' is not a result of this mechanism{did_you_mean(key, known)}")
+    return [(f"sweep.columns[{i}]", f"'{key}' is not a result of this file{did_you_mean_result(key, known)} "
+                                    f"({results_to_choose(key, known)})")
             for i, key in enumerate(problem.sweep.extra_columns) if key not in known]
 
 

@@ -33,11 +33,11 @@ from ..explore.execution import announce_estimate, current
 from ..kinds import KINDS
 from ..optimise.per_design import KnownResults, capability_results, unit_of
 from ..pipeline import Outcome, StageContext
-from ..problem.errors import did_you_mean
 from ..problem.paths import design_problem
 from ..problem.sweep import expand_sweep
 from ..results.catalogue import catalogue, find
 from ..results.labels import Label
+from ..results.names import did_you_mean_result, results_to_choose
 from .sweep import SweepRun
 
 #: A sweep that runs each variant whole takes at most this many variants (a cam's run takes about half a second).
@@ -106,7 +106,7 @@ def check(problem: Any, table: Any) -> list[tuple[str, str]]:
                                           f"[\"{known[0]}\"]; a {kind} file's results are {_some(known)}"))
     for i, key in enumerate(table.extra_columns):
         if key not in known:
-            hint = did_you_mean(key, known) or f"; a {kind} file's results are {_some(known)}"
+            hint = f"{did_you_mean_result(key, known)} ({results_to_choose(key, known)})"
             problems.append((f"sweep.columns[{i}]", f"'{key}' is not a result of this {kind} file{hint}"))
     return problems
 

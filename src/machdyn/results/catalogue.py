@@ -180,6 +180,65 @@ STATUS: tuple[Quantity, ...] = tuple(
     )
 )
 
+#: The checks of ``[parts]``, one key per check: ``parts.<part kind>.<name>.<figure>`` (the name of the joint or
+#: link); the keys built from the checks' labels before are read through :data:`PATTERN_ALIASES`.
+PARTS: tuple[Quantity, ...] = tuple(
+    Quantity(key, text, unit, display, producer="parts")
+    for key, text, unit, display in (
+        ("parts.bearing.<name>.rating_life", "Bearing {name}: rating life at its reliability", "s", "h"),
+        ("parts.bearing.<name>.peak_pressure", "Bearing {name}: peak pressure p", "Pa", "MPa"),
+        ("parts.bearing.<name>.mean_pv", "Bearing {name}: mean p·v over the cycle", "Pa*m/s", "MPa*m/s"),
+        ("parts.pin.<name>.peak_shear_stress", "Pin {name}: peak shear stress", "Pa", "MPa"),
+        ("parts.pin.<name>.peak_bearing_pressure", "Pin {name}: peak bearing pressure", "Pa", "MPa"),
+        ("parts.link.<name>.fatigue_safety", "Link {name}: fatigue safety factor (modified Goodman)", "", None),
+    )
+)
+
+#: The shaft line's results whose keys are made from the file's names (planes, bearings, frame points,
+#: cylinders), each with its SI unit; matched before the general patterns below them.
+SHAFT_LINE: tuple[Quantity, ...] = tuple(
+    Quantity(key, text, unit, display, producer=producer)
+    for key, text, unit, display, producer in (
+        ("shaft.balance.<plane>.mass", "Correction in plane {plane}: mass", "kg", None, "shaft_line"),
+        ("shaft.balance.<plane>.angle", "Correction in plane {plane}: angle from the reference mark", "rad", None,
+         "shaft_line"),
+        ("shaft.balance.<plane>.hole<hole>.mass", "Correction in plane {plane}: mass in hole {hole}", "kg", None,
+         "shaft_line"),
+        ("shaft.field.<plane>.mass", "Field balancing, plane {plane}: correction mass", "kg", "g", "shaft_line"),
+        ("shaft.field.<plane>.angle", "Field balancing, plane {plane}: correction angle", "rad", None, "shaft_line"),
+        ("shaft.field.<plane>.trial_effect", "Field balancing, plane {plane}: trial effect", "", None, "shaft_line"),
+        ("shaft.field.<plane>.hole<hole>.mass", "Field balancing, plane {plane}: mass in hole {hole}", "kg", "g",
+         "shaft_line"),
+        ("shaft.records.<plane>.mass", "Field balancing from records, plane {plane}: correction mass", "kg", "g",
+         "field_records"),
+        ("shaft.records.<plane>.angle", "Field balancing from records, plane {plane}: correction angle", "rad", None,
+         "field_records"),
+        ("shaft.records.<plane>.hole<hole>.mass", "Field balancing from records, plane {plane}: mass in hole {hole}",
+         "kg", "g", "field_records"),
+        ("shaft.records.original.sensor<index>.phase", "Original run, sensor {index}: 1x phase lag", "rad", None,
+         "field_records"),
+        ("shaft.bearing.<bearing>.peak", "Bearing {bearing}: largest force", "N", None, "shaft_line"),
+        ("shaft.bearing.<bearing>.peak_after", "Bearing {bearing}: largest force after correction", "N", None,
+         "shaft_line"),
+        ("shaft.engine.order<order>.force", "Engine: largest force of order {order}, exact", "N", None,
+         "shaft_line"),
+        ("shaft.engine.order<order>.couple", "Engine: largest couple of order {order}, exact", "N*m", None,
+         "shaft_line"),
+        ("shaft.frame.mode<order>.frequency", "Frame on its mounts: natural frequency {order}", "Hz", None,
+         "shaft_line"),
+        ("shaft.frame.mount.<mount>.force", "Mount {mount}: largest dynamic force", "N", None, "shaft_line"),
+        ("shaft.frame.point.<point>.rms_velocity", "Frame point {point}: RMS vibration velocity", "m/s", "mm/s",
+         "shaft_line"),
+        ("shaft.grade.<plane>.allowed", "ISO 21940-11: permissible unbalance of bearing plane {plane}", "kg*m",
+         "g*mm", "shaft_line"),
+        ("shaft.grade.<plane>.residual", "ISO 21940-11: residual unbalance in bearing plane {plane}", "kg*m", "g*mm",
+         "shaft_line"),
+        ("shaft.locomotive.<side>.balance_mass", "Locomotive: balance mass, {side} wheel", "kg", None, "shaft_line"),
+        ("shaft.locomotive.<side>.balance_angle", "Locomotive: balance-mass angle, {side} wheel", "rad", None,
+         "shaft_line"),
+    )
+)
+
 #: Results of the capabilities and kinds whose keys are made at run time (their fixed keys are declared in each
 #: capability's ``labels``, gathered by :func:`catalogue`).
 RUN_TIME: tuple[Quantity, ...] = (
@@ -205,22 +264,13 @@ RUN_TIME: tuple[Quantity, ...] = (
     Quantity("frame.mean_acceleration_reduction", "Frame: mean acceleration reduction", producer="frame"),
     Quantity("drivetrain.shaft_<index>.torque.max_abs", "Drive train: shaft {index}, max |torque|", "N*m",
              producer="drivetrain"),
-    Quantity("parts.<part>.<name>.<figure>", "Parts: {part} {name}, {figure}", producer="parts"),
+    *PARTS,
     Quantity("rotary_screen.<figure>.<source>", "Rotary screen: {figure} ({source})", producer="rotary_screen"),
     Quantity("synthesis.best.<figure>", "Synthesis: best candidate, {figure}", producer="synthesis"),
+    *SHAFT_LINE,
     Quantity("shaft.balance.<plane>.<figure*>", "Shaft line: balance in plane {plane}, {figure}",
              producer="shaft_line"),
-    Quantity("shaft.field.<plane>.<figure*>", "Shaft line: field balancing, plane {plane}, {figure}",
-             producer="shaft_line"),
     Quantity("shaft.records.<what>.<figure*>", "Shaft line: from the records, {what}, {figure}",
-             producer="shaft_line"),
-    Quantity("shaft.bearing.<bearing>.<figure>", "Shaft line: bearing {bearing}, {figure}", "N",
-             producer="shaft_line"),
-    Quantity("shaft.engine.<order>.<figure>", "Shaft line: engine {order}, {figure}", producer="shaft_line"),
-    Quantity("shaft.frame.<what>.<figure*>", "Shaft line: frame, {what}, {figure}", producer="shaft_line"),
-    Quantity("shaft.grade.<plane>.<figure>", "Shaft line: balance grade, plane {plane}, {figure}",
-             producer="shaft_line"),
-    Quantity("shaft.locomotive.<side>.<figure>", "Shaft line: locomotive, {side}, {figure}",
              producer="shaft_line"),
     Quantity("check_<name*>_utilisation", "Check {name}, utilisation", producer="screw_conveyor"),
 )
@@ -236,6 +286,14 @@ ALIASES: dict[str, str] = {
 }
 #: Renamed key prefixes: old prefix -> new (the frame force's harmonics).
 PREFIX_ALIASES: dict[str, str] = {"shaking_force.fx.": "frame_force.fx.", "shaking_force.fy.": "frame_force.fy."}
+#: Renamed keys that follow a pattern: (old key's regular expression, the new key's template).
+PATTERN_ALIASES: tuple[tuple[re.Pattern, str], ...] = (
+    (re.compile(r"(parts\.bearing\.[^.]+)\.rating_life_(?:l\d+(?:_\d+)?_p_\d+(?:_\d+)?|no_requirement)"),
+     r"\1.rating_life"),
+    (re.compile(r"(parts\.bearing\.[^.]+)\.peak_pressure_p"), r"\1.peak_pressure"),
+    (re.compile(r"(parts\.bearing\.[^.]+)\.mean_p_v_over_the_cycle"), r"\1.mean_pv"),
+    (re.compile(r"(parts\.link\.[^.]+)\.fatigue_safety_factor_modified_goodman"), r"\1.fatigue_safety"),
+)
 #: Prefixes of capability keys that carry a result's name after them (``sweep.best.<result>``).
 _CARRIERS = ("sweep.best.", "sweep.lowest_", "optimise.best.", "sweep.")
 
@@ -257,6 +315,10 @@ def canonical(name: str) -> str:
     for old, new in PREFIX_ALIASES.items():
         if name.startswith(old):
             return new + name[len(old):]
+    for regex, template in PATTERN_ALIASES:
+        m = regex.fullmatch(name)
+        if m:
+            return m.expand(template)
     for carrier in _CARRIERS:
         if name.startswith(carrier):
             rest = name[len(carrier):]
