@@ -58,10 +58,17 @@ class Jump:
     after: float
     between: tuple[int, int]
 
-    def __str__(self) -> str:
-        unit = "per rad" if self.quantity == "velocity" else "per rad^2"
-        return (f"{self.quantity} jumps from {self.before:.4g} to {self.after:.4g} {unit} at cam angle "
+    def describe(self, lift_unit: str = "m") -> str:
+        """``"an acceleration jump from 0 to 0.18 m/rad^2 at cam angle 110 deg (segments 1 to 2)"``:
+        ``lift_unit`` the unit of the follower's lift ("m" for a translating follower, "rad" for an oscillating
+        one), the values per radian (velocity) or per radian squared (acceleration) of cam angle."""
+        unit = f"{lift_unit}/rad" if self.quantity == "velocity" else f"{lift_unit}/rad^2"
+        article = "an" if self.quantity[:1] in "aeiou" else "a"
+        return (f"{article} {self.quantity} jump from {self.before:.4g} to {self.after:.4g} {unit} at cam angle "
                 f"{np.degrees(self.angle):.4g} deg (segments {self.between[0] + 1} to {self.between[1] + 1})")
+
+    def __str__(self) -> str:
+        return self.describe()
 
 
 @dataclass(frozen=True)

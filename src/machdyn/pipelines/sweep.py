@@ -143,13 +143,13 @@ def run(ctx: StageContext) -> Outcome:
     unit = plan.display_unit
     regular = np.asarray(cols["regular"], dtype=bool)
     values: dict[str, Any] = {
-        f"sweep.{plan.parameter}": [float(v) for v in plan.values_display],
+        f"sweep.{plan.parameter}": [float(v) for v in plan.values_si],
         "sweep.regular": [bool(v) for v in regular],
         "sweep.status": [str(v) for v in cols["status"]],
         "sweep.designs": float(regular.size),
         "sweep.regular_count": float(regular.sum()),
     }
-    labels = {f"sweep.{plan.parameter}": Label(f"Sweep: values of {plan.parameter}", unit, unit)}
+    labels = {f"sweep.{plan.parameter}": Label(f"Sweep: values of {plan.parameter}", plan.si_unit, unit)}
     units: dict[str, str] = {}
     for key, data in cols.items():
         if key in ("regular", "status") or key.startswith("sweep."):
@@ -185,8 +185,8 @@ def run(ctx: StageContext) -> Outcome:
         warnings.append(f"No design of the sweep of {plan.parameter} is regular: each fails to assemble, passes or "
                         "nears a dead point, changes branch or transmits poorly somewhere in the crank range "
                         "(see sweep.status).")
-    columns: dict[str, tuple[Any, str]] = {
-        plan.parameter: (np.asarray(plan.values_display, dtype=float), unit),
+    columns: dict[str, tuple[Any, str]] = {  # SI throughout, as every other column
+        plan.parameter: (np.asarray(plan.values_si, dtype=float), plan.si_unit),
     }
     for key, data in cols.items():
         columns[key] = (data, done.units.get(key, ""))

@@ -195,13 +195,13 @@ def run(ctx: StageContext) -> Outcome:
     regular = np.asarray(cols["regular"], dtype=bool)
     swept = f"sweep.{plan.parameter}"
     values: dict[str, Any] = {
-        swept: [float(v) for v in plan.values_display],
+        swept: [float(v) for v in plan.values_si],
         "sweep.regular": [bool(v) for v in regular],
         "sweep.status": [str(v) for v in cols["status"]],
         "sweep.designs": float(regular.size),
         "sweep.regular_count": float(regular.sum()),
     }
-    labels = {swept: Label(f"Sweep: values of {plan.parameter}", unit, unit)}
+    labels = {swept: Label(f"Sweep: values of {plan.parameter}", plan.si_unit, unit)}
     listed = [swept]
     for key in done.asked:
         if key == plan.parameter:  # the swept quantity itself: its values are listed already
@@ -221,7 +221,7 @@ def run(ctx: StageContext) -> Outcome:
     if not regular.any():
         warnings.append(f"No variant of the sweep of {plan.parameter} was built, ran and reported every column "
                         "(see sweep.status).")
-    columns: dict[str, tuple[Any, str]] = {plan.parameter: (np.asarray(plan.values_display, dtype=float), unit)}
+    columns: dict[str, tuple[Any, str]] = {plan.parameter: (np.asarray(plan.values_si, dtype=float), plan.si_unit)}
     for key in done.asked:
         if key != plan.parameter:
             columns[key] = (cols[key], done.units[key])
