@@ -114,3 +114,35 @@ def test_a_motor_that_stalls_against_a_damper_is_a_failed_check_not_bad_input(tm
     assert check.code == 0 and run.code == 3, (check, run)
     assert "The machine stalls: its speed falls to zero" in run.stderr and "breakdown torque" in run.stderr
     assert (tmp_path / "out" / "report.html").is_file()
+
+
+def _single_stroke_press(extra: str = "", overhauling: str | None = None) -> str:
+    """The drive-train press without its parts, at 90 positions, with ``extra`` after its single-stroke table."""
+    text = _example("crank_press_drive")
+    text = text[: text.index("[[parts.bearings]]")] + extra
+    text = _replaced(text, "positions = 360", "positions = 90")
+    text = _replaced(text, "[flywheel.motor]", "start_up = false\n\n[flywheel.motor]")
+    if overhauling is not None:
+        text = _replaced(text, "[flywheel]\n", f'[[loads.torques]]\nname = "overhauling"\nbody = "crank"\n'
+                                               f'torque = "{overhauling}"\n\n[flywheel]\n')
+    return text
+
+
+def test_a_brake_angle_outside_the_single_stroke_is_refused_by_check_and_run(tmp_path):
+    text = _replaced(_single_stroke_press(), 'start = "90 deg"', 'start = "90 deg"\nbrake_at = "45 deg"')
+    check, run = check_and_run(tmp_path, text)
+    assert (check.code, run.code) == (2, 2), (check, run)
+    assert "single_stroke.brake_at must lie within the stroke" in check.stderr
+
+
+def test_a_single_stroke_the_brake_cannot_end_is_a_failed_check(tmp_path):
+    """1150 N*m driving the crank against the brake's 1200 N*m (no flywheel: the clutch's own motor torque): the
+    brake stops the machine (the balance holds) but not within the half turn a single stroke leaves it: a failed
+    check of a valid file (exit 3), not bad input after check said OK."""
+    text = _single_stroke_press(overhauling="1150 N*m")
+    text = text[: text.index("[flywheel]")] + text[text.index("[drivetrain]"):]
+    text = _replaced(text, "strokes_per_minute = 20", "strokes_per_minute = 20\nmotor_torque = \"100 N*m\"")
+    check, run = check_and_run(tmp_path, text)
+    assert check.code == 0 and run.code == 3, (check, run)
+    assert "single stroke: The brake torque 1200 N*m (at the crank) cannot stop the crank within half a turn" \
+        in run.stderr
