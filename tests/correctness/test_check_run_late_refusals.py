@@ -94,8 +94,8 @@ def test_check_refuses_what_run_refuses_naming_the_field(tmp_path, make, message
 
 
 def test_a_brake_just_stronger_than_the_overhauling_load_stops_the_press(tmp_path):
-    """1150 N*m driving against the brake's 1200 N*m: the balance holds, and the stop, many turns long, fails the
-    brake's 30 deg limit (exit 3) within the turns integrated."""
+    """1150 N*m driving against the brake's 1200 N*m: the balance holds, the stop is integrated, and at about a
+    third of a turn it fails the brake's 30 deg limit (exit 3)."""
     text = _replaced(_press_with_brake("1150 N*m"), "positions = 360", "positions = 90")
     text = _replaced(text, "shaft = 1\nmax_angle", 'shaft = 1\nat = ["0 deg"]\nmax_angle')
     check, run = check_and_run(tmp_path, text)
