@@ -4,6 +4,7 @@ carry their units; the parts' keys follow a grammar and their old names still re
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -113,3 +114,14 @@ def test_the_shaft_line_lists_only_what_it_reports():
     assert {"shaft.bearing.front.peak", "shaft.engine.order1.couple"} <= set(keys)
     assert keys["shaft.engine.order1.couple"] == "N*m"
     assert not any(k.startswith("shaft.balance.") for k in keys)  # the file has no balancing planes
+
+
+def test_an_infeasible_shaft_line_search_speaks_of_runs_not_of_crank_angles():
+    from machdyn.runner import run_problem
+
+    text = LINE + OPTIMISE.replace('result = "shaft.engine.primary_force"', 'result = "shaft.engine.gross_force"')
+    text = re.sub(r"generations = \d+", "generations = 1", text).replace("population = 12", "population = 6")
+    result = run_problem(text)
+    [failed] = [c for c in result.failed_checks if c.startswith("No design within the bounds")]
+    assert "builds and runs, reporting every result named" in failed and "the closest design ran" in failed
+    assert "angles" not in failed and "shaft.engine.gross_force <= 1 N: violated" in failed
