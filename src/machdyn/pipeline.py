@@ -149,6 +149,9 @@ class ProblemKind:
     validate : ``(data, source) -> problem`` for a kind that validates its tables itself, instead of the schema.
     dump : ``(problem) -> str``, the problem written back as TOML (None: the generic dumper).
     problem_type : ``() -> type`` of the kind's validated problems, where that is not ``schema``.
+    result_keys : ``(problem) -> {key: SI unit}``, the results a run of ``problem`` reports whose keys are made
+        from its own names (a bearing's, a frame point's), for a kind whose catalogue entries are patterns; a study
+        ([sweep] columns, [optimise] results) accepts only these of the pattern's keys. None: the patterns alone.
     """
 
     name: str
@@ -163,6 +166,7 @@ class ProblemKind:
     validate: Callable[[dict[str, Any], str | None], Any] | None = None
     dump: Callable[[Any], str] | None = None
     problem_type: Callable[[], type] | None = None
+    result_keys: Callable[[Any], Mapping[str, str]] | None = None
 
     def owns(self, problem: Any) -> bool:
         """True if ``problem`` is a validated problem of this kind."""

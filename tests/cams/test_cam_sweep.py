@@ -66,7 +66,7 @@ def test_each_column_of_the_sweep_is_what_a_run_of_that_variant_alone_reports(sw
 def test_the_table_is_in_results_json_the_summary_and_its_labels(swept):
     values = swept.results.values
     assert values["sweep.designs"] == 9 and values["sweep.regular_count"] == 9
-    assert values["sweep.cam.base_radius"] == pytest.approx(list(np.linspace(20.0, 60.0, 9)))
+    assert values["sweep.cam.base_radius"] == pytest.approx(list(np.linspace(0.020, 0.060, 9)))  # SI
     shown = {row.key: row for row in swept.summary.rows}
     angles = shown["sweep.cam.max_pressure_angle"]
     assert angles.unit == "deg"
@@ -124,8 +124,10 @@ def test_a_mistake_of_the_sweep_is_refused_by_check_and_run_with_the_same_messag
 def test_a_wrong_column_names_the_field_and_the_result_it_meant():
     with pytest.raises(ProblemFileError) as ran:
         run_problem(_with_sweep('parameter = "cam.base_radius"\nvalues = ["40 mm"]\ncolumns = ["cam.speeed"]\n'))
-    assert ran.value.problems == [("sweep.columns[0]", "'cam.speeed' is not a result of this cam file; did you "
-                                                       "mean 'cam.speed'?")]
+    [(path, message)] = ran.value.problems
+    assert path == "sweep.columns[0]"
+    assert message.startswith("'cam.speeed' is not a result of this cam file; did you mean 'cam.speed'? (results of "
+                              "cam.*: ")  # and the cam's results to choose from
 
 
 def test_the_command_line_runs_the_example_and_writes_the_table(tmp_path):
@@ -135,10 +137,10 @@ def test_the_command_line_runs_the_example_and_writes_the_table(tmp_path):
     ran = runner.invoke(app, ["run", str(EXAMPLE), "--out", str(out), "-q"])
     assert ran.exit_code == 0, ran.output
     table = pd.read_csv(out / "sweep.csv")
-    assert list(table.columns) == ["cam.base_radius [mm]", "cam.max_pressure_angle [deg]",
+    assert list(table.columns) == ["cam.base_radius [m]", "cam.max_pressure_angle [deg]",
                                    "cam.min_pitch_curvature_radius [m]", "cam.max_normal_force [N]", "regular",
                                    "status"]
-    np.testing.assert_allclose(table["cam.base_radius [mm]"], np.linspace(20.0, 60.0, 9))
+    np.testing.assert_allclose(table["cam.base_radius [m]"], np.linspace(0.020, 0.060, 9))  # SI, as every column
     assert list(table["regular"]) == [True] * 9
     assert list(table["status"])[3:] == ["regular"] * 6 and table["status"][0].startswith("failed check")
     scalars = json.loads((out / "results.json").read_text())["scalars"]

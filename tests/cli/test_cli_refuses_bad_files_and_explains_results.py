@@ -108,7 +108,7 @@ def test_the_time_ratio_has_one_name(runner, tmp_path):
     assert result.exit_code == EXIT_OK
     html = (tmp_path / "o" / "report.html").read_text(encoding="utf-8")
     names = set(re.findall(r"Time ratio[^<]*", html))
-    assert names == {"Time ratio (advance / return)"}, names
+    assert names == {"Time ratio (the longer over the shorter stroke time, &gt;= 1)"}, names
 
 
 def test_a_sweep_whose_designs_tie_says_so(runner, tmp_path):

@@ -91,8 +91,20 @@ def test_a_linkage_brought_to_rest_has_spent_its_energy_on_the_brake_and_the_loa
 
 def test_a_brake_weaker_than_the_load_that_drives_never_stops():
     machine = EquivalentMachine.from_tables(torque_table([0.0, np.pi, 2 * np.pi], [50.0, 50.0, 50.0]), inertia=1.0)
-    with pytest.raises(InputError, match="does not stop the machine"):
+    with pytest.raises(InputError, match="never stops the machine"):
         stop_machine(machine, 0.0, 10.0, 20.0, 0.0)
+
+
+def test_a_stop_longer_than_the_turns_integrated_is_finished_by_the_energy_balance():
+    """A constant load of 30 N*m driving against a 40 N*m brake leaves 10 N*m: from 30 rad/s a 2.5 kg*m^2 machine
+    needs J w^2 / (2 x 10) = 112.5 rad (17.9 turns). Integrated over 2 turns only, the rest is the energy balance,
+    which is exact for a constant inertia and load (Newton's second law for rotation, stop_constant)."""
+    machine = EquivalentMachine.from_tables(torque_table([0.0, np.pi, 2 * np.pi], [30.0, 30.0, 30.0]), inertia=2.0)
+    stop = stop_machine(machine, 0.5, 30.0, 40.0, 1.0, max_turns=2)
+    closed = stop_constant(2.5, 30.0, 40.0, resisting_torque=-30.0)
+    assert stop.estimated and not stop_machine(machine, 0.5, 30.0, 40.0, 1.0).estimated
+    assert stop.angle == pytest.approx(closed.angle, rel=1e-7)
+    assert stop.time == pytest.approx(closed.time, rel=1e-7)
 
 
 def test_bad_stages_are_named():

@@ -23,6 +23,10 @@ from .laws import LAWS, normalised
 
 TWO_PI = 2.0 * np.pi
 MOTIONS = ("rise", "return", "dwell")
+#: The least span of a segment [rad], 0.001 deg: 17 micro-radians, an arc of 17 um on a cam of 1 m radius, finer
+#: than any cam is cut; a shorter segment only divides its lift by a vanishing span (velocities of 1e300 and
+#: more), so it is refused as an input error rather than carried into the analysis.
+MIN_SEGMENT_ANGLE = np.radians(1e-3)
 
 
 @dataclass(frozen=True)
@@ -54,10 +58,17 @@ class Jump:
     after: float
     between: tuple[int, int]
 
-    def __str__(self) -> str:
-        unit = "per rad" if self.quantity == "velocity" else "per rad^2"
-        return (f"{self.quantity} jumps from {self.before:.4g} to {self.after:.4g} {unit} at cam angle "
+    def describe(self, lift_unit: str = "m") -> str:
+        """``"an acceleration jump from 0 to 0.18 m/rad^2 at cam angle 110 deg (segments 1 to 2)"``:
+        ``lift_unit`` the unit of the follower's lift ("m" for a translating follower, "rad" for an oscillating
+        one), the values per radian (velocity) or per radian squared (acceleration) of cam angle."""
+        unit = f"{lift_unit}/rad" if self.quantity == "velocity" else f"{lift_unit}/rad^2"
+        article = "an" if self.quantity[:1] in "aeiou" else "a"
+        return (f"{article} {self.quantity} jump from {self.before:.4g} to {self.after:.4g} {unit} at cam angle "
                 f"{np.degrees(self.angle):.4g} deg (segments {self.between[0] + 1} to {self.between[1] + 1})")
+
+    def __str__(self) -> str:
+        return self.describe()
 
 
 @dataclass(frozen=True)
@@ -153,6 +164,9 @@ def program(segments, field: str = "cam.segments", tolerance: float = 1e-9) -> P
             raise InputError(f"{name}.law must be one of {', '.join(LAWS)}; got {seg.law!r}.")
         if not np.isfinite(seg.duration) or seg.duration <= 0:
             raise InputError(f"{name}.angle must be > 0 deg; got {np.degrees(seg.duration):g} deg.")
+        if seg.duration < MIN_SEGMENT_ANGLE:
+            raise InputError(f"{name}.angle must be at least {np.degrees(MIN_SEGMENT_ANGLE):g} deg (the least span "
+                             f"of a segment: finer than any cam is cut); got {np.degrees(seg.duration):g} deg.")
         if seg.motion != "dwell" and (not np.isfinite(seg.lift) or seg.lift <= 0):
             raise InputError(f"{name}.lift of a {seg.motion} must be > 0; got {seg.lift:g}.")
         if seg.motion == "dwell" and seg.lift != 0:

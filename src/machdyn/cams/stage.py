@@ -29,7 +29,9 @@ _FIXED = {
     "cam.min_pitch_curvature_radius": Label("Pitch curve: smallest convex radius of curvature", "m", "mm"),
     "cam.min_surface_curvature_radius": Label("Cam surface: smallest convex radius of curvature", "m", "mm"),
     "cam.min_base_radius_pressure": Label("Smallest base circle radius meeting the pressure-angle limit", "m", "mm"),
-    "cam.min_base_radius_curvature": Label("Smallest base circle radius free of undercut / cusps", "m", "mm"),
+    "cam.min_base_radius_curvature": Label("Smallest base circle radius meeting the curvature limit (roller: convex "
+                                           "pitch radius >= curvature factor x roller radius; flat face: no cusp)",
+                                           "m", "mm"),
     "cam.base_radius": Label("Base circle radius", "m", "mm"),
     "cam.face_width": Label("Flat face: width needed (contact range + margins)", "m", "mm"),
     "cam.spring_preload": Label("Return spring: preload", "N"),
@@ -196,7 +198,13 @@ def check(problem: CamProblem, model: CamModel | None) -> list[str]:
         return []
     if model.train is not None:
         _spring(problem, model)
-    return [f"the motion program has a {j}" for j in model.program.jumps]
+    return jump_warnings(model)
+
+
+def jump_warnings(model: CamModel) -> list[str]:
+    """The program's jumps of velocity or acceleration, each said once, in the unit of the follower's lift."""
+    unit = "rad" if model.follower.motion == "oscillating" else "m"
+    return [f"the motion program has {j.describe(unit)}" for j in model.program.jumps]
 
 
 def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
@@ -222,7 +230,7 @@ def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
         values["cam.min_pitch_curvature_radius"] = chk.min_pitch_radius
     if np.isfinite(chk.min_surface_radius):
         values["cam.min_surface_curvature_radius"] = chk.min_surface_radius
-    warnings = [f"the motion program has a {jmp}" for jmp in model.program.jumps] + list(chk.warnings)
+    warnings = jump_warnings(model) + list(chk.warnings)
     failed = list(chk.failed)
     rim = rim_speed_failure(float(np.max(np.hypot(prof.surface[0], prof.surface[1]))), speed)
     if rim is not None:

@@ -204,12 +204,16 @@ def _objective(value: str) -> str:
     return value
 
 
+#: A candidate list of the design search: an empty list leaves nothing to search, so it is refused at the file.
+_Candidates = Field(min_length=1)
+
+
 class OptimiseIn(_Table):
     objective: Annotated[str, AfterValidator(_objective)] = "power"
-    diameters: list[ScrewSize] | None = None
-    pitch_ratios: list[Positive] = [1.0, 0.75, 0.5]
-    speed_fractions: list[Fraction] = [0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0]
-    fillings: list[Fraction] = [0.15, 0.25, 0.3, 0.4, 0.45]
+    diameters: Annotated[list[ScrewSize], _Candidates] | None = None
+    pitch_ratios: Annotated[list[Positive], _Candidates] = [1.0, 0.75, 0.5]
+    speed_fractions: Annotated[list[Fraction], _Candidates] = [0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0]
+    fillings: Annotated[list[Fraction], _Candidates] = [0.15, 0.25, 0.3, 0.4, 0.45]
     motor_mass_per_kw: Positive = 10.0
 
 

@@ -113,6 +113,9 @@ class Stop:
     t: np.ndarray
     phi: np.ndarray
     omega: np.ndarray
+    #: True when the stop was integrated over its first ``max_turns`` turns only and its rest found by the
+    #: energy balance from there (an upper bound: the speed-dependent loads that also brake are left out).
+    estimated: bool = False
 
 
 def stop_constant(inertia: float, speed: float, brake_torque: float, resisting_torque: float = 0.0) -> Stop:
@@ -151,6 +154,28 @@ def stop_constant(inertia: float, speed: float, brake_torque: float, resisting_t
     return Stop(float(time), float(phi[-1]), float(phi[-1]), t, phi, omega)
 
 
+def mean_load_moment_at_rest(machine: Any, samples: int = 720) -> float:
+    """The mean over one crank turn of the reduced moment of a machine's loads at rest, M̄ = (1/2π) ∮ M(φ, 0) dφ
+    [N·m] (positive drives the crank): the work its loads do per turn divided by 2π, the speed-dependent loads
+    (dampers) left out as they vanish at rest. ``samples`` evenly spaced crank angles (the rectangle rule, exact
+    for a trigonometric polynomial of degree < ``samples``)."""
+    phi = np.linspace(0.0, 2 * np.pi, samples, endpoint=False)
+    return float(np.mean(np.ravel(machine.moment_at(phi, np.zeros_like(phi)))))
+
+
+def brake_balance_problem(machine: Any, brake_torque: float) -> str | None:
+    """Why a brake torque T_b [N·m] at the crank cannot stop a machine, or None: by the balance of work over a
+    turn, a brake that does not exceed the loads' mean driving moment M̄ (:func:`mean_load_moment_at_rest`)
+    absorbs less per turn than the loads put in, so the machine does not come to rest (and a brake that is
+    closed on a machine at rest cannot hold it against them)."""
+    mean = mean_load_moment_at_rest(machine)
+    if brake_torque > mean:
+        return None
+    return (f"the brake's {brake_torque:.4g} N*m at the crank does not exceed the mean driving moment of the loads "
+            f"over a turn, {mean:.4g} N*m: the loads put more work into each turn than the brake takes out, so it "
+            f"never stops the machine")
+
+
 def stop_machine(machine: Any, extra_inertia: float, speed: float, brake_torque: float, start_angle: float,
                  *, max_turns: float = 200.0) -> Stop:
     """Stop of a linkage machine (its reduced inertia J(φ), the reduced moment of its loads M(φ, ω)) with an
@@ -159,16 +184,20 @@ def stop_machine(machine: Any, extra_inertia: float, speed: float, brake_torque:
 
     (J(φ) + J_x) ω' = M(φ, ω) − ½ J'(φ) ω² − T_b   (the equation of motion of the equivalent machine, seed 003
     eqs 18–19; the machine's moment is that of :class:`~machdyn.dynamics.equivalent.EquivalentMachine`),
-    integrated by :func:`scipy.integrate.solve_ivp` until ω = 0.
+    integrated by :func:`scipy.integrate.solve_ivp` until ω = 0, over at most ``max_turns`` crank turns. A stop
+    longer than that is finished by the energy balance from the state reached: the kinetic energy ½ J̄ ω² [J]
+    (J̄ the mean inertia over a turn) taken out by the net torque T_b − M̄ [N·m] (:func:`mean_load_moment_at_rest`)
+    over the angle ½ J̄ ω²/(T_b − M̄) in the time J̄ ω/(T_b − M̄), and the stop is marked ``estimated``.
 
     Parameters
     ----------
     machine : an :class:`~machdyn.dynamics.equivalent.EquivalentMachine` of one design.
     extra_inertia : J_x [kg·m²] >= 0.
     speed : ω0 [rad/s] > 0.
-    brake_torque : T_b [N·m] > 0, on the crank.
+    brake_torque : T_b [N·m] > 0, on the crank; it must exceed the loads' mean moment M̄
+        (:func:`brake_balance_problem`), or the machine never stops (refused).
     start_angle : φ0 [rad].
-    max_turns : a stop longer than this many crank turns is refused (the brake is too weak).
+    max_turns : the most crank turns integrated (bounds the time of the computation).
 
     Returns
     -------
@@ -179,6 +208,9 @@ def stop_machine(machine: Any, extra_inertia: float, speed: float, brake_torque:
     if not (speed > 0 and brake_torque > 0 and extra_inertia >= 0):
         raise InputError(f"A stop needs a speed and a brake torque > 0 and an extra inertia >= 0; got {speed!r}, "
                          f"{brake_torque!r}, {extra_inertia!r}.")
+    weak = brake_balance_problem(machine, brake_torque)
+    if weak is not None:
+        raise InputError(f"The brake cannot stop the machine: {weak}.")
 
     def rate(_t: float, y: np.ndarray) -> list[float]:
         phi, w = y
@@ -190,15 +222,28 @@ def stop_machine(machine: Any, extra_inertia: float, speed: float, brake_torque:
     def at_rest(_t: float, y: np.ndarray) -> float:
         return y[1]
 
+    def turned_out(_t: float, y: np.ndarray) -> float:
+        return (y[0] - start_angle) - 2 * np.pi * max_turns
+
     at_rest.terminal = True  # type: ignore[attr-defined]
     at_rest.direction = -1  # type: ignore[attr-defined]
+    turned_out.terminal = True  # type: ignore[attr-defined]
+    turned_out.direction = 1  # type: ignore[attr-defined]
     j0 = float(np.ravel(machine.inertia(start_angle))[0]) + extra_inertia
     horizon = 10.0 * j0 * speed / brake_torque + 1.0  # ten times the constant-inertia stop: ample
-    sol = solve_ivp(rate, (0.0, horizon), [start_angle, speed], events=at_rest, rtol=1e-9, atol=1e-9,
-                    max_step=horizon / 200)
-    if sol.status != 1 or (sol.y[0, -1] - start_angle) > 2 * np.pi * max_turns:
-        raise InputError(f"The brake torque {brake_torque:g} N*m does not stop the machine within "
-                         f"{horizon:.3g} s: the loads drive it harder than the brake brakes.")
-    t_end = float(sol.t_events[0][0])
-    phi_end = float(sol.y_events[0][0][0])
-    return Stop(t_end, phi_end - start_angle, float(np.mod(phi_end, 2 * np.pi)), sol.t, sol.y[0], sol.y[1])
+    sol = solve_ivp(rate, (0.0, horizon), [start_angle, speed], events=(at_rest, turned_out), rtol=1e-9,
+                    atol=1e-9, max_step=horizon / 200)
+    if sol.status == 1 and sol.t_events[0].size:
+        t_end = float(sol.t_events[0][0])
+        phi_end = float(sol.y_events[0][0][0])
+        return Stop(t_end, phi_end - start_angle, float(np.mod(phi_end, 2 * np.pi)), sol.t, sol.y[0], sol.y[1])
+    # Still turning after max_turns (or the horizon): the rest of the stop by the energy balance.
+    phi1, w1, t1 = float(sol.y[0, -1]), float(sol.y[1, -1]), float(sol.t[-1])
+    turn = np.linspace(0.0, 2 * np.pi, 720, endpoint=False)
+    j_mean = float(np.mean(np.ravel(machine.inertia(turn)))) + extra_inertia
+    net = brake_torque - mean_load_moment_at_rest(machine)
+    w1 = max(w1, 0.0)
+    t_end = t1 + j_mean * w1 / net
+    phi_end = phi1 + 0.5 * j_mean * w1 * w1 / net
+    return Stop(t_end, phi_end - start_angle, float(np.mod(phi_end, 2 * np.pi)), np.append(sol.t, t_end),
+                np.append(sol.y[0], phi_end), np.append(sol.y[1], 0.0), estimated=True)

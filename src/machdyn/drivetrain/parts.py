@@ -32,6 +32,8 @@ class PartCheck:
     limit: float
     utilisation: float
     unit: str
+    #: the last part of the result's key, ``parts.<part kind>.<name>.<figure>`` (``rating_life``, ``mean_pv``)
+    figure: str = ""
 
     @property
     def passed(self) -> bool:
@@ -133,20 +135,22 @@ def link_fatigue_checks(link: LinkSpec, top: np.ndarray, bottom: np.ndarray) -> 
     peak = amp + abs(mean)
     if peak >= link.ultimate_strength:  # broken in the first cycle: no fatigue factor to give
         return [PartCheck(name, "peak stress", peak, link.ultimate_strength, peak / link.ultimate_strength,
-                          "Pa")], point
+                          "Pa", "peak_stress")], point
     safety = fatigue_safety(amp, mean, link.endurance_limit, link.ultimate_strength, link.yield_strength,
                             link.criterion)  # type: ignore[arg-type]
     checks = [PartCheck(name, f"fatigue safety factor ({CRITERION_NAMES[link.criterion]})", float(safety.fatigue),
                         link.min_safety, link.min_safety / safety.fatigue if np.isfinite(safety.fatigue) else 0.0,
-                        "")]
+                        "", "fatigue_safety")]
     if link.yield_strength is not None:
         checks.append(PartCheck(name, "yield safety factor (Langer)", float(safety.yielding), link.min_safety,
-                                link.min_safety / safety.yielding if np.isfinite(safety.yielding) else 0.0, ""))
+                                link.min_safety / safety.yielding if np.isfinite(safety.yielding) else 0.0, "",
+                                "yield_safety"))
     if link.required_cycles is not None:
         line = sn_line(link.ultimate_strength, link.endurance_limit, link.fraction)
         cycles = line.cycles(reversed_equivalent(amp, mean, link.ultimate_strength))
         damage = link.required_cycles / cycles if np.isfinite(cycles) else 0.0  # 0: below the endurance limit
-        checks.append(PartCheck(name, "fatigue damage over the required cycles", damage, 1.0, damage, ""))
+        checks.append(PartCheck(name, "fatigue damage over the required cycles", damage, 1.0, damage, "",
+                                "fatigue_damage"))
     return checks, point
 
 
@@ -222,29 +226,32 @@ def size_parts(forces: Any, *, bearings: tuple[BearingSpec, ...] = (), pins: tup
             bearing_loads[b.joint] = (load, equivalent)
             if b.life is not None:
                 checks.append(PartCheck(f"bearing {b.joint}", f"rating life L{100 - b.reliability:g} "
-                                        f"(p = {life_exponent(b.kind):.3g})", life, b.life, b.life / life, "s"))
+                                        f"(p = {life_exponent(b.kind):.3g})", life, b.life, b.life / life, "s",
+                                        "rating_life"))
             else:
-                checks.append(PartCheck(f"bearing {b.joint}", "rating life (no requirement)", life, 0.0, 0.0, "s"))
+                checks.append(PartCheck(f"bearing {b.joint}", "rating life (no requirement)", life, 0.0, 0.0, "s",
+                                        "rating_life"))
         else:
             assert b.diameter is not None and b.length is not None
             p, pv = plain_bearing_pv(load, b.diameter, b.length, w_rel * b.diameter / 2.0)
             bearing_loads[b.joint] = (load, None)  # a plain bearing has no equal-life load
             if b.max_pressure is not None:
                 checks.append(PartCheck(f"bearing {b.joint}", "peak pressure p", float(p.max()), b.max_pressure,
-                                        float(p.max()) / b.max_pressure, "Pa"))
+                                        float(p.max()) / b.max_pressure, "Pa", "peak_pressure"))
             mean_pv = float(np.sum(pv * dt) / period)
             if b.max_pv is not None:
                 checks.append(PartCheck(f"bearing {b.joint}", "mean p·v over the cycle", mean_pv, b.max_pv,
-                                        mean_pv / b.max_pv, "Pa*m/s"))
+                                        mean_pv / b.max_pv, "Pa*m/s", "mean_pv"))
     for pin in pins:
         fx, fy, _j = joint(pin.joint, f"pin at {pin.joint}")
         tau, p = pin_stresses(np.hypot(fx, fy), pin.diameter, pin.length, pin.shear_planes)
         if pin.allowable_shear is not None:
             checks.append(PartCheck(f"pin {pin.joint}", "peak shear stress", float(tau.max()), pin.allowable_shear,
-                                    float(tau.max()) / pin.allowable_shear, "Pa"))
+                                    float(tau.max()) / pin.allowable_shear, "Pa", "peak_shear_stress"))
         if pin.allowable_pressure is not None:
             checks.append(PartCheck(f"pin {pin.joint}", "peak bearing pressure", float(p.max()),
-                                    pin.allowable_pressure, float(p.max()) / pin.allowable_pressure, "Pa"))
+                                    pin.allowable_pressure, float(p.max()) / pin.allowable_pressure, "Pa",
+                                    "peak_bearing_pressure"))
     for link in links:
         ends = [(n, b1, b2) for n, (k, b1, b2) in joints.items() if k == "R" and link.body in (b1, b2)]
         if len(ends) != 2:

@@ -243,7 +243,7 @@ def run(ctx: StageContext) -> Outcome:
     scalars, labels = {}, {}
     worst = 0.0
     for c in done.checks:
-        key = "parts." + c.part.replace(" ", ".") + "." + _slug(c.quantity)
+        key = "parts." + c.part.replace(" ", ".") + "." + (c.figure or _slug(c.quantity))
         scalars[key] = c.value
         labels[key] = Label(f"{c.part[0].upper()}{c.part[1:]}: {c.quantity}", c.unit,
                             {"s": "h", "Pa": "MPa", "Pa*m/s": "MPa*m/s"}.get(c.unit))

@@ -34,6 +34,7 @@ shaft torques are those at the real speed.
 
 from __future__ import annotations
 
+import math
 from typing import Any, Literal
 
 from pydantic import Field, model_validator
@@ -128,6 +129,12 @@ class DriveTrainSpec(Spec):
             _one_of("brake", "torque", self.brake.torque, self.brake.geometry)
         if self.single_stroke is not None and (self.clutch is None or self.brake is None):
             raise ValueError("single_stroke needs both a [drivetrain.clutch] and a [drivetrain.brake]")
+        stroke = self.single_stroke
+        if stroke is not None and stroke.brake_at is not None and not (
+                stroke.start < stroke.brake_at < stroke.start + 2 * math.pi):
+            raise ValueError(f"single_stroke.brake_at must lie within the stroke, after start "
+                             f"({math.degrees(stroke.start):g} deg) and less than a turn later; got "
+                             f"{math.degrees(stroke.brake_at):g} deg")
         return self
 
 

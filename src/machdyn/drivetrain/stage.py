@@ -4,7 +4,7 @@ in :mod:`machdyn.drivetrain.schema`)."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -19,7 +19,7 @@ from ..pipeline import Capability, Outcome, StageContext
 from ..problem.build import build_mechanism
 from ..results.labels import Label
 from .brakes import BrakeTorque, Heating
-from .clutch import Engagement, Stop, engage, stop_machine
+from .clutch import Engagement, Stop, brake_balance_problem, engage, stop_machine
 from .gear_stage import GearCheck, check_teeth, gear_results
 from .geometry_tables import (
     ClutchRating,
@@ -55,6 +55,9 @@ class DriveTrainRun:
     brake_torque: float | None = None             # on the brake's shaft [N*m]
     gear_checks: tuple[GearCheck, ...] = ()       # the teeth of the gear stages that describe them
     shaft_checks: tuple[ShaftCheck, ...] = ()     # the shafts of [[drivetrain.shafts]]
+    #: why the single stroke could not be completed (a clutch that does not turn the machine, a brake that does
+    #: not stop it within the turn, a motor that does not bring the flywheel back): a design that fails, not input
+    single_stroke_failure: str | None = None
 
 
 def _line(problem: Any) -> DriveLine:
@@ -110,17 +113,36 @@ def check(problem: Any, table: DriveTrainSpec, source: str | None = None) -> lis
             brake_rating(table)
         except ProblemFileError as exc:
             return list(exc.problems)
-    if table.clutch is None:
+    if table.clutch is None and table.brake is None:
         return []
     try:
         mech = build_mechanism(problem)
-        torque = analyse(mech, crank_angles(360), abs(problem.drive.speed)).forces.driving_torque
+        torque = analyse(mech, crank_angles(360), abs(problem.drive.speed)).forces.driving_torque \
+            if table.clutch is not None else None
     except (ProblemFileError, InputError):
         return []  # the kind's own check reports them
     try:
-        return _clutch_problems(table, line, np.asarray(torque, dtype=float), abs(float(problem.drive.speed)))
+        out = brake_problems(table, line, mech)
+        if torque is not None:
+            out += _clutch_problems(table, line, np.asarray(torque, dtype=float), abs(float(problem.drive.speed)))
     except ProblemFileError as exc:
         return list(exc.problems)
+    except InputError:
+        return []  # the kind's own check reports them
+    return out
+
+
+def brake_problems(table: DriveTrainSpec, line: DriveLine, mechanism: Any) -> list[tuple[str, str]]:
+    """The brake's torque against the loads of the linkage (:func:`~machdyn.drivetrain.clutch.brake_balance_problem`,
+    the balance of work over a turn): a brake that cannot stop the machine is refused by ``check`` and by ``run``
+    alike, before any stop is integrated."""
+    if table.brake is None or getattr(mechanism, "design_count", None) is not None:
+        return []
+    at_shaft = line.crank if line.brake_shaft is None else line.brake_shaft
+    torque = brake_rating(table).torque
+    weak = brake_balance_problem(equivalent_machine(mechanism, 360), torque * line.train.speed_ratios[at_shaft])
+    field = "drivetrain.brake.torque" if table.brake.geometry is None else "drivetrain.brake.geometry"
+    return [] if weak is None else [(field, f"{weak}; got {torque:.4g} N*m on shaft {at_shaft}")]
 
 
 def _clutch_problems(table: DriveTrainSpec, line: DriveLine, torque: np.ndarray,
@@ -151,9 +173,14 @@ def run(ctx: StageContext) -> Outcome:
     if torque.ndim != 1:
         raise InputError("[drivetrain] analyses a single design; the file describes several.")
     crank_speed = float(np.mean(np.abs(np.ravel(ctx.analysis.kinematics.speed))))
-    problems = _clutch_problems(table, line, torque, crank_speed) if table.clutch is not None else []
-    if problems:
+    nominal = np.asarray(ctx.analysis.forces.driving_torque, dtype=float)
+    problems = _clutch_problems(table, line, nominal, crank_speed) if table.clutch is not None else []
+    problems += brake_problems(table, line, ctx.mechanism)
+    if problems:  # what check finds at the nominal speed: bad input
         raise ProblemFileError(problems)
+    # At the real speed under the flywheel's drive the clutch may carry more than check could see: a failed check.
+    overloaded = [f"clutch: {message}" for _path, message in _clutch_problems(table, line, torque, crank_speed)] \
+        if table.clutch is not None and flywheel is not None else []
     shaft_torques = train.shaft_torques(torque)
     if flywheel is not None:
         # Upstream of the flywheel the shafts carry the motor's torque, not the linkage's peaks.
@@ -197,11 +224,16 @@ def run(ctx: StageContext) -> Outcome:
             except InputError as exc:
                 raise ProblemFileError([("drivetrain.brake.heating", str(exc))]) from None
 
-    stroke = None
+    stroke, stroke_failure = None, None
     if table.single_stroke is not None:
         assert rating is not None and braking is not None
-        stroke = _single_stroke(table, line, machine, flywheel, fly_inertia, crank_speed, rating.torque,
-                                braking.torque)
+        try:
+            stroke = _single_stroke(table, line, machine, flywheel, fly_inertia, crank_speed, rating.torque,
+                                    braking.torque)
+        except ProblemFileError:
+            raise
+        except InputError as exc:  # the file is valid (check said so); this design cannot make its single stroke
+            stroke_failure = str(exc).rstrip(".")
     duty = None
     if stroke is not None and flywheel is not None and hasattr(flywheel.drive, "rated_torque"):
         assert table.clutch is not None
@@ -211,8 +243,11 @@ def run(ctx: StageContext) -> Outcome:
     done = DriveTrainRun(train, np.asarray(forces.kinematics.crank_angle, dtype=float), shaft_torques, shaft,
                          engagement, tuple(stops), worst, crank_speed, stroke, duty, rating, braking, heating,
                          braking.torque if braking is not None else None, gears,
-                         _check_shafts(table, shaft_torques, crank_speed * ratios))
-    return _outcome(done, table)
+                         _check_shafts(table, shaft_torques, crank_speed * ratios), stroke_failure)
+    done_outcome = _outcome(done, table)
+    if overloaded:
+        done_outcome = replace(done_outcome, failed_checks=(*overloaded, *done_outcome.failed_checks))
+    return done_outcome
 
 
 def _check_shafts(table: DriveTrainSpec, shaft_torques: np.ndarray, speeds: np.ndarray) -> tuple[ShaftCheck, ...]:
@@ -289,14 +324,11 @@ def _single_stroke(table: DriveTrainSpec, line: DriveLine, machine: Any, flywhee
         def motor(_w: float) -> float:
             return constant
     at_brake = line.crank if line.brake_shaft is None else line.brake_shaft
-    try:
-        return single_stroke(machine, motor, drive_inertia=drive_side, driven_inertia=driven_side,
-                             speed=idle_speed(motor, crank_speed),
-                             slip_torque=float(slip_torque * ratios[shaft]),
-                             brake_torque=float(brake_torque * ratios[at_brake]),
-                             start_angle=float(table.single_stroke.start), brake_angle=table.single_stroke.brake_at)
-    except InputError as exc:
-        raise ProblemFileError([("drivetrain.single_stroke", str(exc))]) from None
+    return single_stroke(machine, motor, drive_inertia=drive_side, driven_inertia=driven_side,
+                         speed=idle_speed(motor, crank_speed),
+                         slip_torque=float(slip_torque * ratios[shaft]),
+                         brake_torque=float(brake_torque * ratios[at_brake]),
+                         start_angle=float(table.single_stroke.start), brake_angle=table.single_stroke.brake_at)
 
 
 def _outcome(done: DriveTrainRun, table: DriveTrainSpec) -> Outcome:
@@ -382,8 +414,14 @@ def _outcome(done: DriveTrainRun, table: DriveTrainSpec) -> Outcome:
                                    "clutch_torque": (k.clutch_torque, "N*m"), "motor_torque": (k.motor_torque, "N*m")}
     summary = tuple(key for key in scalars if not key.startswith(("drivetrain.shaft_", "drivetrain.stage_"))) + \
         ("drivetrain.shaft_0.torque.max_abs",)
+    if done.single_stroke_failure is not None:
+        failed.append(f"single stroke: {done.single_stroke_failure}")
+    estimated = [st for st in done.stops if st.estimated]
+    warnings = (f"brake: {len(estimated)} of the {len(done.stops)} stops last longer than the turns integrated; "
+                "their rest is found by the energy balance from there (an upper bound on the angle and time)",
+                ) if estimated else ()
     return Outcome(results=done, scalars=scalars, labels=labels, series=series, summary=summary,
-                   failed_checks=tuple(failed))
+                   warnings=warnings, failed_checks=tuple(failed))
 
 
 def _clutch_scalars(done: DriveTrainRun, table: DriveTrainSpec) -> dict[str, float]:

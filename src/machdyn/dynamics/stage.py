@@ -400,8 +400,12 @@ def run_flywheel(ctx: StageContext) -> Outcome:
                    failed_checks=tuple(failed))
 
 
-#: the start of the message of :func:`~machdyn.dynamics.simulate.steady_state` for a drive too weak for the load
-_CANNOT_CARRY = ("The drive cannot carry the load", "No standard motor up to")
+#: the starts of the messages of :func:`~machdyn.dynamics.simulate.steady_state` for a drive too weak for the load:
+#: one that cannot carry its mean load, and one under which the machine stalls (or creeps near a stall) in the
+#: cycle, e.g. against a damper; both are designs that fail (exit 3), never bad input, as ``check`` cannot find them
+#: without the simulation
+_CANNOT_CARRY = ("The drive cannot carry the load", "No standard motor up to", "The machine stalls",
+                 "The machine nearly stalls")
 
 
 def _cycle_columns(r) -> dict[str, tuple[Any, str]]:

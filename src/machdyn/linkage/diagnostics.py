@@ -194,7 +194,8 @@ def _diagnose(mech: Mechanism, kin: Kinematics, window: tuple[float, float] | No
                 limits.append(LimitPosition(body, angle, float(values[i])))
         v = values[ok & np.isfinite(values)]
         if v.size:
-            strokes[body] = float(v.max() - v.min())
+            rotating = body not in {b for b, kind in output_bodies(mech) if kind == "slide"}
+            strokes[body] = float(full_turn_stroke(v.max() - v.min(), step)) if rotating else float(v.max() - v.min())
     full_turn = window is None and bool(ok.all())
     # A sign change of the rate right at a dead position is a branch change, not a limit position.
     clear = ok & np.array([all(abs(_angle_between(a, d)) > 2.5 * step for d in dead) for a in phi], dtype=bool)
@@ -310,6 +311,15 @@ def _dead_positions(phi, reports, assembled, ok, assembly_ranges) -> list[float]
         if all(abs(_angle_between(angle, u)) > 2.5 * step for u in unique):
             unique.append(angle)
     return unique
+
+
+def full_turn_stroke(stroke, step: float):
+    """The angular stroke [rad] of an output over the sampled crank angles, with an output that turns fully given
+    its full turn, 2 pi: sampled every ``step`` [rad] of the crank, a lever that turns once per turn of the crank
+    spans only 2 pi less about one step between its first and last sample (359.8 deg at 1 deg steps), so a span
+    within 2.5 steps of 2 pi is a full turn, not a stroke just short of it."""
+    stroke = np.asarray(stroke, dtype=float)
+    return np.where(stroke >= 2 * np.pi - 2.5 * step, 2 * np.pi, stroke)
 
 
 def _outputs(mech: Mechanism, kin):

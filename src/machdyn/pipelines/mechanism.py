@@ -24,18 +24,21 @@ def default_mass_warnings(problem: Any) -> list[str]:
     """What the file left to defaults that the user should know: bars without masses, bare custom bodies."""
     spec = problem.mechanism
     if isinstance(spec, CustomSpec):
-        # Custom bodies have no bar to take defaults from: a mass without inertia or centre of mass is a point
-        # mass at the body's origin, which may not be what the author meant.
-        bare = [
-            f"mechanism.bodies[{i}] ('{b.name}')" for i, b in enumerate(spec.bodies)
-            if b.mass > 0.0 and not {"inertia", "com"} <= b.model_fields_set
-        ]
-        if not bare:
-            return []
-        return [
-            f"{', '.join(bare)}: mass given without inertia or com; taken as inertia 0 kg*m^2 about a centre of "
-            "mass at the body's origin (0, 0). Give inertia and com for a real link."
-        ]
+        # Custom bodies have no bar to take defaults from: a mass without inertia is a point mass, a mass without
+        # a centre of mass sits at the body's origin; either may not be what the author meant. Say only what
+        # was left out.
+        said = []
+        for i, b in enumerate(spec.bodies):
+            given = b.model_fields_set
+            if b.mass <= 0.0 or {"inertia", "com"} <= given:
+                continue
+            left = [text for field, text in (("inertia", "its inertia is taken as 0 kg*m^2 (a point mass)"),
+                                              ("com", "its centre of mass is taken at the body's origin (0, 0)"))
+                    if field not in given]
+            absent = " or ".join(f for f in ("inertia", "com") if f not in given)
+            said.append(f"mechanism.bodies[{i}] ('{b.name}'): mass given without {absent}; {' and '.join(left)}. "
+                        "Give inertia and com for a real link.")
+        return said
     missing = [
         name for name in type(spec).model_fields
         if isinstance(getattr(spec, name), LinkSpec) and getattr(spec, name).mass is None

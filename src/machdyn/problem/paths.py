@@ -49,16 +49,25 @@ def _unit_in(annotation: Any, index: int | None) -> Unit | None:
 
 def quantity_unit(problem: BaseModel, path: str) -> Unit:
     """The unit and sign rule of the quantity at ``path``; a :class:`FieldError` with a did-you-mean if the
-    path names no quantity of the file."""
+    path names no quantity of the file. A table of named entries (a custom body's ``points``) is entered by the
+    entry's name: ``mechanism.bodies[1].points.C[0]``."""
     parts = segments(path)
     node: Any = problem
+    entry_type: Any = None  # the type of the entries of ``node`` when it is a table of named entries
+    metadata: list[Any]
     for i, (name, index) in enumerate(parts):
-        fields = type(node).model_fields if isinstance(node, BaseModel) else {}
-        if name not in fields:
-            where = ".".join(p for p, _ in parts[:i]) or "the file"
-            raise FieldError(f"'{path}' is not a quantity of this file: {where} has no key '{name}'"
-                             f"{did_you_mean(name, list(fields))}")
-        value = getattr(node, name)
+        where = ".".join(p for p, _ in parts[:i]) or "the file"
+        if isinstance(node, dict):
+            if name not in node:
+                raise FieldError(f"'{path}' is not a quantity of this file: {where} has no entry '{name}'"
+                                 f"{did_you_mean(name, [str(k) for k in node])}")
+            value, annotation, metadata = node[name], entry_type, []
+        else:
+            fields = type(node).model_fields if isinstance(node, BaseModel) else {}
+            if name not in fields:
+                raise FieldError(f"'{path}' is not a quantity of this file: {where} has no key '{name}'"
+                                 f"{did_you_mean(name, list(fields))}")
+            value, annotation, metadata = getattr(node, name), fields[name].annotation, list(fields[name].metadata)
         if value is None:
             raise FieldError(f"'{path}' is not set in this file; give it a value first")
         if index is not None and (not isinstance(value, list | tuple) or index >= len(value)):
@@ -66,14 +75,26 @@ def quantity_unit(problem: BaseModel, path: str) -> Unit:
             raise FieldError(f"'{path}' refers to item {index} of '{name}', which has {size} item(s)")
         last = i == len(parts) - 1
         if last:
-            annotation = fields[name].annotation
             unit = _unit_in(annotation, index) if index is not None else (
-                next((m for m in fields[name].metadata if isinstance(m, Unit)), None) or _unit_in(annotation, None))
-            if unit is None or isinstance(value if index is None else value[index], BaseModel):
+                next((m for m in metadata if isinstance(m, Unit)), None) or _unit_in(annotation, None))
+            if unit is None or isinstance(value if index is None else value[index], BaseModel | dict):
                 raise FieldError(f"'{path}' is not a quantity with a unit, so it cannot vary")
             return unit
         node = value if index is None else value[index]
+        entry_type = _entry_type(annotation) if isinstance(node, dict) else None
     raise FieldError(f"'{path}' is not a quantity of this file")
+
+
+def _entry_type(annotation: Any) -> Any:
+    """The value type of a ``dict[key, value]`` annotation (through Optional and Annotated), None if none."""
+    stack = [annotation]
+    while stack:
+        kind = stack.pop()
+        args = typing.get_args(kind)
+        if typing.get_origin(kind) is dict and len(args) == 2:
+            return args[1]
+        stack += [a for a in args if a is not type(None)]
+    return None
 
 
 def assign(model: BaseModel, path: str, value: Any) -> BaseModel:
@@ -82,31 +103,38 @@ def assign(model: BaseModel, path: str, value: Any) -> BaseModel:
     return _assign(model, segments(path), value)
 
 
-def _assign(model: BaseModel, parts: list[tuple[str, int | None]], value: Any) -> BaseModel:
+def _assign(model: Any, parts: list[tuple[str, int | None]], value: Any) -> Any:
     name, index = parts[0]
-    child = getattr(model, name)
+    child = model[name] if isinstance(model, dict) else getattr(model, name)
     if len(parts) == 1:
         if index is None:
-            return model.model_copy(update={name: value})
+            return _with(model, name, value)
         items = list(child)
         items[index] = value
         if np.ndim(value):
             # A point (x, y) with one coordinate per design: the other coordinate as an array too, so that the
             # point converts to one (2, N) array.
             items = [np.broadcast_to(np.asarray(v, dtype=float), np.shape(value)) for v in items]
-        return model.model_copy(update={name: type(child)(items)})
+        return _with(model, name, type(child)(items))
     if index is None:
-        return model.model_copy(update={name: _assign(child, parts[1:], value)})
+        return _with(model, name, _assign(child, parts[1:], value))
     items = list(child)
     items[index] = _assign(items[index], parts[1:], value)
-    return model.model_copy(update={name: type(child)(items)})
+    return _with(model, name, type(child)(items))
+
+
+def _with(model: Any, name: str, value: Any) -> Any:
+    """A copy of ``model`` (a table or a table of named entries) with ``name`` set to ``value``."""
+    if isinstance(model, dict):
+        return {**model, name: value}
+    return model.model_copy(update={name: value})
 
 
 def value_at(model: Any, path: str) -> float:
     """The value [SI] of the quantity at ``path`` of a validated problem."""
     node = model
     for name, index in segments(path):
-        node = getattr(node, name)
+        node = node[name] if isinstance(node, dict) else getattr(node, name)
         if index is not None:
             node = node[index]
     return float(node)

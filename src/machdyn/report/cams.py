@@ -161,7 +161,8 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
                             "torque by virtual work.", (8.0, 3.6), lambda fig: plot_forces(fig.subplots(),
                                                                                                         r),
                             margins=(0.8, 0.8, 0.5, 0.35)))
-    rows = [[str(j), ""] for j in r.model.program.jumps]
+    lift_unit = "rad" if r.model.follower.motion == "oscillating" else "m"
+    rows = [[j.describe(lift_unit), ""] for j in r.model.program.jumps]
     seg_rows = []
     for k, s in enumerate(r.model.program.segments):
         osc = r.model.follower.motion == "oscillating"

@@ -132,7 +132,7 @@ MECHANISM: tuple[Quantity, ...] = (
     _q("work_balance.energy_change", "Work balance: energy change", "J", "cycle", "", "analysis"),
     _q("work_balance.residual", "Work balance: residual", "J", "cycle", "", "analysis"),
     _q("work_balance.relative_residual", "Work balance, relative residual", "", "cycle", "min", "analysis"),
-    _q("time_ratio", "Time ratio (advance / return)", "", "cycle", "", "motion"),
+    _q("time_ratio", "Time ratio (the longer over the shorter stroke time, >= 1)", "", "cycle", "", "motion"),
     _q("transmission_angle.min", "Transmission angle, min", "rad", "min", "max", "motion"),
     _q("transmission_angle.max", "Transmission angle, max", "rad", "max", "min", "motion"),
     _q("transmission_angle.worst", "Transmission angle, worst (closest to 0 or 180 deg)", "rad", "worst", "max",
@@ -144,7 +144,8 @@ MECHANISM: tuple[Quantity, ...] = (
     _q("joint.<joint>.max_force", "Joint {joint}, max force", "N", "max", "min", "forces",
        series="joint.<joint>.force"),
     _q("stroke.<body>", "Stroke of {body}", "m or rad", "range", "", "motion"),
-    _q("time_ratio.<body>", "Time ratio (advance / return) of {body}", "", "cycle", "", "motion"),
+    _q("time_ratio.<body>", "Time ratio of {body} (the longer over the shorter stroke time, >= 1)", "", "cycle", "",
+       "motion"),
     _q("transmission_angle.<body>.min", "Transmission angle of the dyad driving {body}, min", "rad", "min", "max",
        "motion"),
     _q("transmission_angle.<body>.max", "Transmission angle of the dyad driving {body}, max", "rad", "max", "min",
@@ -190,6 +191,71 @@ STATUS: tuple[Quantity, ...] = tuple(
     )
 )
 
+#: The checks of ``[parts]``, one key per check: ``parts.<part kind>.<name>.<figure>`` (the name of the joint or
+#: link); the keys built from the checks' labels before are read through :data:`PATTERN_ALIASES`.
+PARTS: tuple[Quantity, ...] = tuple(
+    Quantity(key, text, unit, display, producer="parts")
+    for key, text, unit, display in (
+        ("parts.bearing.<name>.rating_life", "Bearing {name}: rating life at its reliability", "s", "h"),
+        ("parts.bearing.<name>.peak_pressure", "Bearing {name}: peak pressure p", "Pa", "MPa"),
+        ("parts.bearing.<name>.mean_pv", "Bearing {name}: mean p·v over the cycle", "Pa*m/s", "MPa*m/s"),
+        ("parts.pin.<name>.peak_shear_stress", "Pin {name}: peak shear stress", "Pa", "MPa"),
+        ("parts.pin.<name>.peak_bearing_pressure", "Pin {name}: peak bearing pressure", "Pa", "MPa"),
+        ("parts.link.<name>.fatigue_safety", "Link {name}: fatigue safety factor (by its criterion, modified "
+         "Goodman unless the file names another)", "", None),
+        ("parts.link.<name>.yield_safety", "Link {name}: yield safety factor (Langer)", "", None),
+        ("parts.link.<name>.fatigue_damage", "Link {name}: fatigue damage over the required cycles (Miner)", "",
+         None),
+        ("parts.link.<name>.peak_stress", "Link {name}: peak stress (a point above the ultimate strength)", "Pa",
+         "MPa"),
+    )
+)
+
+#: The shaft line's results whose keys are made from the file's names (planes, bearings, frame points,
+#: cylinders), each with its SI unit; matched before the general patterns below them.
+SHAFT_LINE: tuple[Quantity, ...] = tuple(
+    Quantity(key, text, unit, display, producer=producer)
+    for key, text, unit, display, producer in (
+        ("shaft.balance.<plane>.mass", "Correction in plane {plane}: mass", "kg", None, "shaft_line"),
+        ("shaft.balance.<plane>.angle", "Correction in plane {plane}: angle from the reference mark", "rad", None,
+         "shaft_line"),
+        ("shaft.balance.<plane>.hole<hole>.mass", "Correction in plane {plane}: mass in hole {hole}", "kg", None,
+         "shaft_line"),
+        ("shaft.field.<plane>.mass", "Field balancing, plane {plane}: correction mass", "kg", "g", "shaft_line"),
+        ("shaft.field.<plane>.angle", "Field balancing, plane {plane}: correction angle", "rad", None, "shaft_line"),
+        ("shaft.field.<plane>.trial_effect", "Field balancing, plane {plane}: trial effect", "", None, "shaft_line"),
+        ("shaft.field.<plane>.hole<hole>.mass", "Field balancing, plane {plane}: mass in hole {hole}", "kg", "g",
+         "shaft_line"),
+        ("shaft.records.<plane>.mass", "Field balancing from records, plane {plane}: correction mass", "kg", "g",
+         "field_records"),
+        ("shaft.records.<plane>.angle", "Field balancing from records, plane {plane}: correction angle", "rad", None,
+         "field_records"),
+        ("shaft.records.<plane>.hole<hole>.mass", "Field balancing from records, plane {plane}: mass in hole {hole}",
+         "kg", "g", "field_records"),
+        ("shaft.records.original.sensor<index>.phase", "Original run, sensor {index}: 1x phase lag", "rad", None,
+         "field_records"),
+        ("shaft.bearing.<bearing>.peak", "Bearing {bearing}: largest force", "N", None, "shaft_line"),
+        ("shaft.bearing.<bearing>.peak_after", "Bearing {bearing}: largest force after correction", "N", None,
+         "shaft_line"),
+        ("shaft.engine.order<order>.force", "Engine: largest force of order {order}, exact", "N", None,
+         "shaft_line"),
+        ("shaft.engine.order<order>.couple", "Engine: largest couple of order {order}, exact", "N*m", None,
+         "shaft_line"),
+        ("shaft.frame.mode<order>.frequency", "Frame on its mounts: natural frequency {order}", "Hz", None,
+         "shaft_line"),
+        ("shaft.frame.mount.<mount>.force", "Mount {mount}: largest dynamic force", "N", None, "shaft_line"),
+        ("shaft.frame.point.<point>.rms_velocity", "Frame point {point}: RMS vibration velocity", "m/s", "mm/s",
+         "shaft_line"),
+        ("shaft.grade.<plane>.allowed", "ISO 21940-11: permissible unbalance of bearing plane {plane}", "kg*m",
+         "g*mm", "shaft_line"),
+        ("shaft.grade.<plane>.residual", "ISO 21940-11: residual unbalance in bearing plane {plane}", "kg*m", "g*mm",
+         "shaft_line"),
+        ("shaft.locomotive.<side>.balance_mass", "Locomotive: balance mass, {side} wheel", "kg", None, "shaft_line"),
+        ("shaft.locomotive.<side>.balance_angle", "Locomotive: balance-mass angle, {side} wheel", "rad", None,
+         "shaft_line"),
+    )
+)
+
 #: Results of the capabilities and kinds whose keys are made at run time (their fixed keys are declared in each
 #: capability's ``labels``, gathered by :func:`machdyn.kinds.catalogue`).
 RUN_TIME: tuple[Quantity, ...] = (
@@ -217,22 +283,13 @@ RUN_TIME: tuple[Quantity, ...] = (
              producer="drivetrain"),
     Quantity("drivetrain.shaft_<index>.<figure>", "Drive train: shaft {index}, {figure}", producer="drivetrain"),
     Quantity("drivetrain.stage_<index>.<figure>", "Drive train: gear stage {index}, {figure}", producer="drivetrain"),
-    Quantity("parts.<part>.<name>.<figure>", "Parts: {part} {name}, {figure}", producer="parts"),
+    *PARTS,
     Quantity("rotary_screen.<figure>.<source>", "Rotary screen: {figure} ({source})", producer="rotary_screen"),
     Quantity("synthesis.best.<figure>", "Synthesis: best candidate, {figure}", producer="synthesis"),
+    *SHAFT_LINE,
     Quantity("shaft.balance.<plane>.<figure*>", "Shaft line: balance in plane {plane}, {figure}",
              producer="shaft_line"),
-    Quantity("shaft.field.<plane>.<figure*>", "Shaft line: field balancing, plane {plane}, {figure}",
-             producer="shaft_line"),
     Quantity("shaft.records.<what>.<figure*>", "Shaft line: from the records, {what}, {figure}",
-             producer="shaft_line"),
-    Quantity("shaft.bearing.<bearing>.<figure>", "Shaft line: bearing {bearing}, {figure}", "N",
-             producer="shaft_line"),
-    Quantity("shaft.engine.<order>.<figure>", "Shaft line: engine {order}, {figure}", producer="shaft_line"),
-    Quantity("shaft.frame.<what>.<figure*>", "Shaft line: frame, {what}, {figure}", producer="shaft_line"),
-    Quantity("shaft.grade.<plane>.<figure>", "Shaft line: balance grade, plane {plane}, {figure}",
-             producer="shaft_line"),
-    Quantity("shaft.locomotive.<side>.<figure>", "Shaft line: locomotive, {side}, {figure}",
              producer="shaft_line"),
     Quantity("transient.passage_<index>.<figure>", "Transient: resonance passage {index}, {figure}",
              producer="transient"),
@@ -250,6 +307,14 @@ ALIASES: dict[str, str] = {
 }
 #: Renamed key prefixes: old prefix -> new (the frame force's harmonics).
 PREFIX_ALIASES: dict[str, str] = {"shaking_force.fx.": "frame_force.fx.", "shaking_force.fy.": "frame_force.fy."}
+#: Renamed keys that follow a pattern: (old key's regular expression, the new key's template).
+PATTERN_ALIASES: tuple[tuple[re.Pattern, str], ...] = (
+    (re.compile(r"(parts\.bearing\.[^.]+)\.rating_life_(?:l\d+(?:_\d+)?_p_\d+(?:_\d+)?|no_requirement)"),
+     r"\1.rating_life"),
+    (re.compile(r"(parts\.bearing\.[^.]+)\.peak_pressure_p"), r"\1.peak_pressure"),
+    (re.compile(r"(parts\.bearing\.[^.]+)\.mean_p_v_over_the_cycle"), r"\1.mean_pv"),
+    (re.compile(r"(parts\.link\.[^.]+)\.fatigue_safety_factor_modified_goodman"), r"\1.fatigue_safety"),
+)
 #: Prefixes of capability keys that carry a result's name after them (``sweep.best.<result>``).
 _CARRIERS = ("sweep.best.", "sweep.lowest_", "optimise.best.", "sweep.")
 
@@ -271,6 +336,10 @@ def canonical(name: str) -> str:
     for old, new in PREFIX_ALIASES.items():
         if name.startswith(old):
             return new + name[len(old):]
+    for regex, template in PATTERN_ALIASES:
+        m = regex.fullmatch(name)
+        if m:
+            return m.expand(template)
     for carrier in _CARRIERS:
         if name.startswith(carrier):
             rest = name[len(carrier):]

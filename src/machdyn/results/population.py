@@ -41,7 +41,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..linkage import analyse, kinematics, sweep
-from ..linkage.diagnostics import time_ratio
+from ..linkage.diagnostics import full_turn_stroke, time_ratio
 from ..linkage.engines import available, check_engine
 from ..linkage.fused_population import run_population
 from ..linkage.fused_source import SUMMARY_FIELDS
@@ -269,8 +269,8 @@ def _fused(mech, phi, speed, acceleration, n, wanted, about, machine, limit, out
     results = {"transmission_angle.min": low, "transmission_angle.max": high, "transmission_angle.worst": worst}
     col = 5 + 3 * nd
     per = per_output(mech)
-    for i, (body, _kind) in enumerate(output_bodies(mech)):
-        results[f"stroke.{body}"] = M[:, col]
+    for i, (body, kind) in enumerate(output_bodies(mech)):
+        results[f"stroke.{body}"] = M[:, col] if kind == "slide" else full_turn_stroke(M[:, col], _step(phi))
         if i == 0:
             results["time_ratio"] = M[:, col + 1]
         if body in per:
@@ -347,6 +347,12 @@ def _motion(mech, phi, speed, acceleration, n, wanted, about, machine, limit, ou
     return status
 
 
+def _step(phi) -> float:
+    """The spacing of the crank angles [rad] (a full turn for a single angle)."""
+    phi = np.ravel(np.asarray(phi, dtype=float))
+    return float(abs(phi[1] - phi[0])) if phi.size > 1 else 2 * math.pi
+
+
 def _full_cycle(phi: np.ndarray) -> bool:
     """True if the crank angles are evenly spaced over one full turn without the end point."""
     return is_full_turn(phi)
@@ -398,6 +404,8 @@ def _motion_chunk(mech, kin, phi, shape, wanted, about, machine, limit) -> tuple
             rates = np.broadcast_to(b.omega, shape)
         results[f"stroke.{body}"] = (np.where(ok, values, -np.inf).max(axis=1)
                                      - np.where(ok, values, np.inf).min(axis=1))
+        if kind != "slide":
+            results[f"stroke.{body}"] = full_turn_stroke(results[f"stroke.{body}"], _step(phi))
         ratio = time_ratio(phi, rates, ok, full)
         if i == 0:
             results["time_ratio"] = ratio

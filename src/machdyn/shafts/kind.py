@@ -278,6 +278,17 @@ def _analyse(problem: Any, line: Any, step: Step) -> Outcome:
     return outcome_of(analyse(problem, line), best_phases)
 
 
+def result_keys(problem: Any) -> dict[str, str]:
+    """{key: SI unit} of every result a run of ``problem`` reports (its bearings', frame points', planes' ...):
+    the shaft line analysed once, as the run does; {} for a file whose line cannot be built (its problems are
+    reported by the build)."""
+    line, problems = build(problem)
+    if problems or line is None:
+        return {}
+    done = outcome_of(analyse(problem, line))
+    return {key: (done.labels.get(key) or LABELS.get(key) or Label(key)).unit for key in done.scalars}
+
+
 KIND = ProblemKind(
     name="shaft_line",
     schema=ShaftLineProblem,
@@ -288,4 +299,5 @@ KIND = ProblemKind(
     steps=("shaft line",),
     labels=LABELS,
     report="machdyn.report.shafts:sections",
+    result_keys=result_keys,
 )

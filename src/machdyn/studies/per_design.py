@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import MachdynError
-from ..kinds import catalogue
+from ..kinds import KINDS, catalogue, kind
 from ..results.catalogue import find
 
 #: The tables whose results are not a design's: the studies themselves.
@@ -43,20 +43,56 @@ class KnownResults(list):
 def capability_results(problem: Any) -> dict[str, str]:
     """{key: SI unit} of every numeric result the tables of ``problem`` declare (its kind's main table and every
     other table the file has, but for the studies): what a run of one of its designs reports. Keys made at run
-    time (``balance.<part>.mass``) are declared as patterns; :func:`unit_of` resolves them."""
+    time (``balance.<part>.mass``) are declared as patterns; :func:`unit_of` resolves them, and those a kind makes
+    from the file's own names (``shaft.bearing.front.peak``) are listed here too."""
     present = {t for t in _tables(problem) if getattr(problem, t, None) is not None}
-    return {q.key: q.unit for q in catalogue()
-            if q.producer in present and q.kind == "number" and "<" not in q.key}
+    made = made_keys(problem)
+    if made is not None:  # the kind's own results are those a run of this file reports
+        present -= set(KINDS)
+    declared = {q.key: q.unit for q in catalogue()
+                if q.producer in present and q.kind == "number" and "<" not in q.key}
+    return declared | (made or {})
 
 
 def unit_of(key: str, problem: Any) -> str | None:
     """The SI unit of a result ``key`` of ``problem`` declared by one of its tables (a pattern's too), or None if
-    none declares it."""
+    none declares it. A pattern of a kind that lists the keys it makes from the file's names
+    (:attr:`~machdyn.pipeline.ProblemKind.result_keys`) accepts only those: ``shaft.bearing.<typo>.peak`` is no
+    result of a file without that bearing."""
     present = {t for t in _tables(problem) if getattr(problem, t, None) is not None}
     found = find(key, catalogue())
     if found is None or found[0].producer not in present or found[0].kind != "number":
         return None
+    made = made_keys(problem) if found[0].is_pattern else None
+    if made is not None and found[0].producer in KINDS:
+        return made.get(key)
     return found[0].unit
+
+
+#: The last few problems' keys made from their names, by the problem's identity (the problem is kept, so that
+#: its id is not reused while it is cached).
+_MADE: dict[int, tuple[Any, dict[str, str] | None]] = {}
+
+
+def made_keys(problem: Any) -> dict[str, str] | None:
+    """{key: SI unit} of the results ``problem``'s kind makes from the file's names, None for a kind that does not
+    list them (or whose analysis of the file fails: its own check reports why)."""
+    hit = _MADE.get(id(problem))
+    if hit is not None and hit[0] is problem:
+        return hit[1]
+    made = None
+    fields = getattr(type(problem), "model_fields", {})
+    name = next((t for t in fields if t in KINDS and getattr(problem, t, None) is not None), None)
+    listing = kind(name).result_keys if name is not None else None
+    if listing is not None:
+        try:
+            made = dict(listing(problem))
+        except (MachdynError, ArithmeticError, ValueError):
+            made = None
+    if len(_MADE) >= 8:
+        _MADE.clear()
+    _MADE[id(problem)] = (problem, made)
+    return made
 
 
 def _tables(problem: Any) -> list[str]:

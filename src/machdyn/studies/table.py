@@ -36,10 +36,10 @@ import numpy as np
 from pydantic import BaseModel, Field, field_validator, model_validator
 
 from ..errors import ProblemFileError
-from ..problem.errors import did_you_mean
 from ..problem.fields import Angle, FieldError, Unit, to_si
 from ..problem.paths import assign, quantity_unit
 from ..results.catalogue import ALIASES, canonical, find, population_quantities
+from ..results.names import did_you_mean_result, results_to_choose
 from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG
 from ..units import Q_, convert, quantity_of_text, unit_of_text
 
@@ -154,7 +154,8 @@ class SweepSpec(BaseModel):
         if self.objective is not None:
             found = find(self.goal)
             if found is None or not found[0].group or found[0].kind != "number" or found[0].group == "status":
-                hint = did_you_mean(self.objective, _objective_names())
+                names = _objective_names()
+                hint = f"{did_you_mean_result(self.objective, names)} ({results_to_choose(self.objective, names)})"
                 raise ValueError("objective must name a per-design result (a key of docs/results.md such as "
                                  "driving_torque.max_abs, frame_force.max or joint.<name>.max_force); got "
                                  f"'{self.objective}'{hint}")
@@ -163,7 +164,8 @@ class SweepSpec(BaseModel):
             if found is None and not self.quantities and "." in column:
                 continue  # perhaps a result of another table of the file: the sweep's check knows the file's tables
             if found is None or not found[0].group or found[0].group == "status":
-                hint = did_you_mean(column, _objective_names())
+                names = _objective_names()
+                hint = f"{did_you_mean_result(column, names)} ({results_to_choose(column, names)})"
                 raise ValueError(f"columns[{i}] must name a per-design result (a key of docs/results.md such as "
                                  f"kinetic_energy.fluctuation); got '{column}'{hint}")
         lowest = self.min_transmission_angle

@@ -32,6 +32,39 @@ import numpy as np
 from ..errors import InputError
 from .candidate import Candidate, four_bar_from_points, wrap
 
+#: The functions a function-generation task may name: y = f(x).
+FUNCTIONS: dict[str, Callable[[Any], Any]] = {
+    "log10": np.log10, "ln": np.log, "exp": np.exp, "sqrt": np.sqrt, "square": np.square,
+    "cube": lambda x: np.asarray(x) ** 3, "reciprocal": lambda x: 1.0 / np.asarray(x), "sin": np.sin,
+    "cos": np.cos, "tan": np.tan,
+}
+#: Points at which a function is evaluated over its range to find where it overflows.
+DOMAIN_SAMPLES = 1001
+
+
+def undefined_in(name: str, x0: float, x1: float) -> str | None:
+    """Where the function ``name`` is undefined or not finite over [x0, x1] (a message), None if it is finite
+    there: a non-finite end, log10/ln/sqrt at x <= 0, the poles of 1/x (x = 0) and tan (x = pi/2 + k pi), and an
+    overflow found by evaluating the function at :data:`DOMAIN_SAMPLES` points of the range."""
+    if not (np.isfinite(x0) and np.isfinite(x1)):
+        return f"the range must be finite numbers; got [{x0:g}, {x1:g}]"
+    lo, hi = min(x0, x1), max(x0, x1)
+    if name in ("log10", "ln", "sqrt") and lo <= 0:
+        return f"{name}(x) is undefined at x <= 0 (the range must be > 0); got [{x0:g}, {x1:g}]"
+    if name == "reciprocal" and lo <= 0 <= hi:
+        return f"reciprocal(x) = 1/x is undefined at x = 0, inside the range [{x0:g}, {x1:g}]"
+    if name == "tan":
+        pole = np.pi / 2 + np.ceil((lo - np.pi / 2) / np.pi) * np.pi
+        if pole <= hi:
+            return f"tan(x) is undefined at x = {pole:.6g} (pi/2 + k pi), inside the range [{x0:g}, {x1:g}]"
+    with np.errstate(all="ignore"):
+        x = np.linspace(lo, hi, DOMAIN_SAMPLES)
+        y = np.asarray(FUNCTIONS[name](x), dtype=float)
+    bad = np.flatnonzero(~np.isfinite(y))
+    if bad.size:
+        return f"{name}(x) is not finite at x = {x[bad[0]]:.6g} ({y[bad[0]]:g}), inside the range [{x0:g}, {x1:g}]"
+    return None
+
 
 def chebyshev_spacing(start: float, stop: float, count: int) -> np.ndarray:
     """``count`` Chebyshev precision points over [start, stop] (any unit):

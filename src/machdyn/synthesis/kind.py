@@ -102,8 +102,11 @@ def _series(result: Any) -> dict[str, tuple[Any, str]]:
     cols["ground_angle"] = (np.array([c.ground_angle for c in cands]), "rad")
     cols["branch"] = (np.array([c.branch for c in cands]), "")
     for key, (_, unit, _) in QUANTITIES.items():
-        cols[key] = (np.asarray(result.values[key], dtype=float), unit)
-    cols["defects"] = (np.array([len(r.defects) for r in result.reports]), "")
+        if key != "error":  # the larger of a distance and an angle: written as the two errors, each in its unit
+            cols[key] = (np.asarray(result.values[key], dtype=float), unit)
+    cols["position_error"] = (np.array([r.position_error for r in result.reports], dtype=float), "m")
+    cols["angle_error"] = (np.array([r.angle_error for r in result.reports], dtype=float), "rad")
+    cols["defect_count"] = (np.array([len(r.defects) for r in result.reports]), "")
     return cols
 
 

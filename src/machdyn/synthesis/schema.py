@@ -34,6 +34,7 @@ from pydantic import Field, field_validator
 
 from ..problem.fields import Angle, AngularVelocity, FieldError, Force, Length, LinearDensity, PositiveLength, Torque
 from ..problem.schema import Meta, Spec
+from .function import undefined_in
 
 TASKS = ("function", "quick_return", "slider_quick_return", "motion", "path")
 #: Functions a function-generation task may name: y = f(x).
@@ -116,9 +117,11 @@ def problems(spec: SynthesisSpec) -> list[tuple[str, str]]:
             out.append((f"synthesis.{name}", f"is required by the task '{spec.task}'; it is missing"))
     if spec.task == "function" and spec.x_range is not None and not spec.x_range[1] != spec.x_range[0]:
         out.append(("synthesis.x_range", f"must have two different ends; got {list(spec.x_range)}"))
-    if spec.task == "function" and spec.x_range is not None and spec.function in ("log10", "ln", "sqrt"):
-        if min(spec.x_range) <= 0:
-            out.append(("synthesis.x_range", f"must be > 0 for {spec.function}(x); got {list(spec.x_range)}"))
+    if spec.task == "function" and spec.x_range is not None and spec.function is not None:
+        undefined = undefined_in(spec.function, *spec.x_range)
+        if undefined is not None:
+            out.append(("synthesis.x_range", f"the function {spec.function} must be defined and finite over its "
+                                             f"whole range: {undefined}"))
     if spec.task == "quick_return" and spec.swing is not None and not 0.0 < spec.swing < math.pi:
         out.append(("synthesis.swing", f"must be between 0 and 180 deg; got {math.degrees(spec.swing):.6g} deg"))
     if spec.task == "motion" and not 2 <= len(spec.positions) <= 5:

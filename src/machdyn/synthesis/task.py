@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -11,17 +10,18 @@ import numpy as np
 from ..errors import InputError
 from .candidate import Candidate
 from .defects import Report, Targets, check
-from .function import chebyshev_spacing, freudenstein, freudenstein_least_squares, function_angles, output_error
+from .function import (
+    FUNCTIONS,
+    chebyshev_spacing,
+    freudenstein,
+    freudenstein_least_squares,
+    function_angles,
+    output_error,
+)
 from .motion import motion_candidates
 from .path import path_candidates
 from .quick_return import crank_rocker, slider_crank
 from .rank import QUANTITIES, Drive, evaluate, order
-
-FUNCS: dict[str, Callable[[Any], Any]] = {
-    "log10": np.log10, "ln": np.log, "exp": np.exp, "sqrt": np.sqrt, "square": np.square,
-    "cube": lambda x: np.asarray(x) ** 3, "reciprocal": lambda x: 1.0 / np.asarray(x), "sin": np.sin,
-    "cos": np.cos, "tan": np.tan,
-}
 
 
 @dataclass(frozen=True)
@@ -48,7 +48,7 @@ class SynthesisResult:
 
 
 def _function_task(spec: Any) -> tuple[list[Candidate], list[Targets], dict]:
-    f = FUNCS[spec.function]
+    f = FUNCTIONS[spec.function]
     x0, x1 = spec.x_range
     ground = 0.1 if spec.ground is None else spec.ground
     dense = np.linspace(x0, x1, 201)

@@ -8,6 +8,7 @@ population.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -48,6 +49,14 @@ class RunEvaluator(Evaluator):
     @property
     def per_design_wanted(self) -> set[str]:
         return set(self.wanted)
+
+    #: A design run whole has no crank angles to close at: it is built and its run reports the results named.
+    regular_rule = "builds and runs, reporting every result named"
+
+    def regular_reached(self, fraction: float) -> str:
+        if not math.isfinite(fraction):
+            return ""
+        return "; the closest design ran" if fraction > 0 else "; no design evaluated ran"
 
 
 def setup_by_runs(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None) -> RunEvaluator:

@@ -14,9 +14,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import ProblemFileError
-from ...problem.errors import did_you_mean
 from ...problem.fields import FieldError, Unit, to_si
 from ...results.catalogue import canonical
+from ...results.names import did_you_mean_result, results_to_choose
 from .schema import ObjectiveSpec
 
 SENSES = {"minimise": "minimise", "minimize": "minimise", "maximise": "maximise", "maximize": "maximise"}
@@ -54,8 +54,8 @@ def unknown_result(name: str, names: list[str]) -> str:
     if name.startswith("compactor.") and not any(n.startswith("compactor.") for n in names):
         why = ("; the compactor results need [mechanism] machine = \"compactor\" (a four-bar whose coupler point "
                "is the point of the plate where the material is pressed)")
-    return (f"'{name}' names no result of this mechanism{why}{did_you_mean(name, names)} "
-            f"(results: {', '.join(names)})")
+    return (f"'{name}' names no result of this file{why}{did_you_mean_result(name, names)} "
+            f"({results_to_choose(name, names)})")
 
 
 def parse_objectives(specs: list[ObjectiveSpec], names: list[str], unit_of) -> tuple[Objective, ...]:

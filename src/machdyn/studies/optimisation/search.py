@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from ...errors import MachdynError
 from ...results.population import DEFAULT_MIN_TRANSMISSION_DEG
 from ..evaluator import PopulationEvaluator
 from ..exploration.execution import announce_estimate
@@ -99,11 +100,18 @@ class Evaluator:
         total = viol.sum(axis=1)
         return np.where(total > 0, INFEASIBLE * (1.0 + total), costs[:, 0])
 
+    #: The built-in constraint every design meets first, as the infeasibility message names it.
+    regular_rule = CLOSES
+
+    def regular_reached(self, fraction: float) -> str:
+        """How near the closest design came to the built-in constraint (the share of crank angles it closes at)."""
+        return f"; the closest design closes at {100 * fraction:.0f} % of the angles" if math.isfinite(fraction) else ""
+
     def infeasible_message(self, show) -> str:
         """Why no design is feasible: every constraint with the smallest violation any design reached,
         tightest first, and the values of the design that came closest."""
         assert self.least_violation is not None and self.closest is not None
-        labels = [CLOSES] + [c.describe(show(c)) for c in self.constraints]
+        labels = [self.regular_rule] + [c.describe(show(c)) for c in self.constraints]
         order = np.argsort(-self.least_violation, kind="stable")
         best = self.closest[2]
         lines = [f"No design within the bounds meets every constraint ({self.evaluations} designs evaluated). "
@@ -113,9 +121,7 @@ class Evaluator:
             label = labels[k]
             reached = ""
             if k == 0:
-                fraction = best.get("assembled_fraction", math.nan)
-                if math.isfinite(fraction):
-                    reached = f"; the closest design closes at {100 * fraction:.0f} % of the angles"
+                reached = self.regular_reached(best.get("assembled_fraction", math.nan))
             else:
                 c = self.constraints[k - 1]
                 value = best.get(c.result, math.nan)
@@ -216,10 +222,15 @@ def differential_evolution(evaluator: Evaluator, *, population: int, generations
     if x0 is not None:
         x0 = _inside(np.asarray(x0, dtype=float), np.asarray(space.lower, float), np.asarray(space.upper, float))
     start = time.perf_counter()
-    res = scipy_de(
-        func, bounds, maxiter=generations, popsize=multiplier, tol=tolerance, seed=seed, polish=False,
-        vectorized=True, updating="deferred", callback=callback, init="latinhypercube", x0=x0,
-    )
+    try:
+        res = scipy_de(
+            func, bounds, maxiter=generations, popsize=multiplier, tol=tolerance, seed=seed, polish=False,
+            vectorized=True, updating="deferred", callback=callback, init="latinhypercube", x0=x0,
+        )
+    except RuntimeError as exc:  # scipy wraps what the evaluator raised (no design buildable): say that instead
+        if isinstance(exc.__cause__, MachdynError):
+            raise exc.__cause__ from None
+        raise
     if not float(res.fun) < INFEASIBLE:
         raise NoFeasibleDesign(evaluator.infeasible_message(show or _plain))
     x, cost = polish(evaluator, res.x, float(res.fun))

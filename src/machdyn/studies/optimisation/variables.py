@@ -212,9 +212,63 @@ def search_space(problem: Any, spec: OptimiseSpec) -> SearchSpace:
             rules[path] = meta.rule
         except FieldError as exc:
             problems.append((where, str(exc)))
+    if not problems:
+        problems += formula_problems(variables, formulas, rules)
     if problems:
         raise ProblemFileError(problems)
     return SearchSpace(problem, tuple(variables), tuple(formulas), rules)
+
+
+#: Points of the variables' box at which every derived formula must give a finite value: its centre, its corners
+#: (at most 2**SAMPLE_CORNER_DIMS of them) and a fixed scatter inside.
+SAMPLE_CORNER_DIMS = 8
+SAMPLE_INSIDE = 64
+
+
+def _sample_points(variables: list[Variable]) -> np.ndarray:
+    """(S x V) SI points of the variables' box: the centre, the corners (up to 2**SAMPLE_CORNER_DIMS), and a
+    fixed pseudo-random scatter (the same for every check and run of a file)."""
+    lo = np.array([v.lower for v in variables])
+    hi = np.array([v.upper for v in variables])
+    dims = len(variables)
+    unit = [np.full(dims, 0.5)]
+    if dims <= SAMPLE_CORNER_DIMS:
+        unit += [np.array([(k >> j) & 1 for j in range(dims)], dtype=float) for k in range(2**dims)]
+    unit += list(np.random.default_rng(0).random((SAMPLE_INSIDE, dims)))
+    return lo + np.array(unit) * (hi - lo)
+
+
+def formula_problems(variables: list[Variable], formulas: list[Formula],
+                     rules: dict[str, str] | None = None) -> list[tuple[str, str]]:
+    """Derived formulas that are not finite somewhere in the variables' box (a division by zero, an overflow,
+    the square root of a negative number), or that break their field's rule (``>0``, ``>=0``) over the whole box:
+    each named with its field, the value and the variables where it happens, so that such a file is refused
+    before a search of designs that cannot be built."""
+    if not variables or not formulas:
+        return []
+    points = _sample_points(variables)
+    by_name = {v.name: points[:, i] for i, v in enumerate(variables)}
+    out = []
+    for f in formulas:
+        value = np.broadcast_to(f(by_name), (points.shape[0],))
+        bad = np.flatnonzero(~np.isfinite(value))
+        rule = (rules or {}).get(f.path, "")
+        if bad.size:
+            where = ("is not finite anywhere in the variables' ranges" if bad.size == value.size else
+                     f"is not finite at {bad.size} of {value.size} sampled designs in the variables' ranges")
+            out.append((f"optimise.derived.{f.path}",
+                        f"'{f.expression}' {where} (e.g. {value[bad[0]]:g} at {_at(variables, points[bad[0]])}): "
+                        f"a division by zero, an overflow or a function outside its domain; write a formula "
+                        f"that is finite over the whole range of its variables"))
+        elif rule in (">0", ">=0") and not np.any(value > 0 if rule == ">0" else value >= 0):
+            out.append((f"optimise.derived.{f.path}",
+                        f"'{f.expression}' must be {rule} but is {value[0]:g} {f.unit.unit} at "
+                        f"{_at(variables, points[0])} and breaks the rule over the whole range of its variables"))
+    return out
+
+
+def _at(variables: list[Variable], point: np.ndarray) -> str:
+    return ", ".join(f"{v.name} = {point[i]:.6g} {v.unit}".rstrip() for i, v in enumerate(variables))
 
 
 def _si_unit(unit: str) -> str:

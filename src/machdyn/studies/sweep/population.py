@@ -14,9 +14,9 @@ from ...linkage import stack_designs
 from ...pipeline import Outcome, StageContext
 from ...pipelines.linkage_run import crank_range
 from ...problem.build import build_mechanism, crank_angles, harmonics_of
-from ...problem.errors import did_you_mean
 from ...results.catalogue import label
 from ...results.labels import Label
+from ...results.names import did_you_mean_result, results_to_choose
 from ...results.population import FAULTS, result_names, result_unit, sweep_columns
 from ..evaluator import PopulationEvaluator
 from ..per_design import capability_results
@@ -80,7 +80,8 @@ def unknown_columns(problem: Any, mech: Any) -> list[tuple[str, str]]:
     result, computed by a run of each variant), as (path, message)."""
     known = result_names(mech, getattr(problem.mechanism, "machine", None), harmonics_of(problem)) \
         + sorted(capability_results(problem))
-    return [(f"sweep.columns[{i}]", f"'{key}' is not a result of this mechanism{did_you_mean(key, known)}")
+    return [(f"sweep.columns[{i}]", f"'{key}' is not a result of this file{did_you_mean_result(key, known)} "
+                                    f"({results_to_choose(key, known)})")
             for i, key in enumerate(problem.sweep.extra_columns) if key not in known]
 
 
@@ -138,13 +139,13 @@ def run(ctx: StageContext) -> Outcome:
     unit = plan.display_unit
     regular = np.asarray(cols["regular"], dtype=bool)
     values: dict[str, Any] = {
-        f"sweep.{plan.parameter}": [float(v) for v in plan.values_display],
+        f"sweep.{plan.parameter}": [float(v) for v in plan.values_si],
         "sweep.regular": [bool(v) for v in regular],
         "sweep.status": [str(v) for v in cols["status"]],
         "sweep.designs": float(regular.size),
         "sweep.regular_count": float(regular.sum()),
     }
-    labels = {f"sweep.{plan.parameter}": Label(f"Sweep: values of {plan.parameter}", unit, unit)}
+    labels = {f"sweep.{plan.parameter}": Label(f"Sweep: values of {plan.parameter}", plan.si_unit, unit)}
     units: dict[str, str] = {}
     for key, data in cols.items():
         if key in ("regular", "status") or key.startswith("sweep."):
@@ -180,8 +181,8 @@ def run(ctx: StageContext) -> Outcome:
         warnings.append(f"No design of the sweep of {plan.parameter} is regular: each fails to assemble, passes or "
                         "nears a dead point, changes branch or transmits poorly somewhere in the crank range "
                         "(see sweep.status).")
-    columns: dict[str, tuple[Any, str]] = {
-        plan.parameter: (np.asarray(plan.values_display, dtype=float), unit),
+    columns: dict[str, tuple[Any, str]] = {  # SI throughout, as every other column
+        plan.parameter: (np.asarray(plan.values_si, dtype=float), plan.si_unit),
     }
     for key, data in cols.items():
         columns[key] = (data, done.units.get(key, ""))

@@ -31,10 +31,10 @@ import numpy as np
 from ...errors import MachdynError, ProblemFileError
 from ...kinds import KINDS, catalogue
 from ...pipeline import Outcome, StageContext
-from ...problem.errors import did_you_mean
 from ...problem.paths import design_problem
 from ...results.catalogue import find
 from ...results.labels import Label
+from ...results.names import did_you_mean_result, results_to_choose
 from ..exploration.execution import announce_estimate, current
 from ..per_design import KnownResults, capability_results, unit_of
 from ..table import expand_sweep
@@ -106,7 +106,7 @@ def check(problem: Any, table: Any) -> list[tuple[str, str]]:
                                           f"[\"{known[0]}\"]; a {kind} file's results are {_some(known)}"))
     for i, key in enumerate(table.extra_columns):
         if key not in known:
-            hint = did_you_mean(key, known) or f"; a {kind} file's results are {_some(known)}"
+            hint = f"{did_you_mean_result(key, known)} ({results_to_choose(key, known)})"
             problems.append((f"sweep.columns[{i}]", f"'{key}' is not a result of this {kind} file{hint}"))
     return problems
 
@@ -195,13 +195,13 @@ def run(ctx: StageContext) -> Outcome:
     regular = np.asarray(cols["regular"], dtype=bool)
     swept = f"sweep.{plan.parameter}"
     values: dict[str, Any] = {
-        swept: [float(v) for v in plan.values_display],
+        swept: [float(v) for v in plan.values_si],
         "sweep.regular": [bool(v) for v in regular],
         "sweep.status": [str(v) for v in cols["status"]],
         "sweep.designs": float(regular.size),
         "sweep.regular_count": float(regular.sum()),
     }
-    labels = {swept: Label(f"Sweep: values of {plan.parameter}", unit, unit)}
+    labels = {swept: Label(f"Sweep: values of {plan.parameter}", plan.si_unit, unit)}
     listed = [swept]
     for key in done.asked:
         if key == plan.parameter:  # the swept quantity itself: its values are listed already
@@ -221,7 +221,7 @@ def run(ctx: StageContext) -> Outcome:
     if not regular.any():
         warnings.append(f"No variant of the sweep of {plan.parameter} was built, ran and reported every column "
                         "(see sweep.status).")
-    columns: dict[str, tuple[Any, str]] = {plan.parameter: (np.asarray(plan.values_display, dtype=float), unit)}
+    columns: dict[str, tuple[Any, str]] = {plan.parameter: (np.asarray(plan.values_si, dtype=float), plan.si_unit)}
     for key in done.asked:
         if key != plan.parameter:
             columns[key] = (cols[key], done.units[key])
