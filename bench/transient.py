@@ -232,6 +232,7 @@ def side_by_side(repeats: int, steps: int) -> dict[str, Any]:
               "(pip install -e .[bench])")
         return {"skipped": str(exc)}
     holder: dict[str, Any] = {}
+    machdyn_side()  # warm-up: imports and caches, as in any repeated use
     t_md = timed(lambda: holder.__setitem__("md", machdyn_side()), repeats)
     t_ex = timed(lambda: holder.__setitem__("ex", exudyn_side(steps)), repeats)
     agree = agreement(holder["md"], holder["ex"])
