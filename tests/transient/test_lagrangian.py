@@ -137,3 +137,26 @@ def test_the_coupled_equations_follow_from_the_lagrangian_of_a_slider_crank_on_a
     # of it)
     assert speed_error < 0.01 * beta_max
     assert max(errors) < 0.3 * beta_max
+
+
+def test_the_general_and_the_scalar_right_hand_sides_agree_with_the_frame_turned_and_moving():
+    """The general equations (:meth:`CoupledModel.matrices`, several cranks) and the scalar ones of
+    :mod:`machdyn.transient.fast` (one crank) are the same equations: at a state with the frame displaced, turned
+    and moving they give the same accelerations to round-off."""
+    from machdyn.transient import fast
+
+    mech = slider_crank(CRANK, ROD, masses=MASSES, inertias=INERTIAS, gravity=(0.0, 0.0))
+    frame = Frame(FRAME_MASS, FRAME_INERTIA, tuple(Mount(n, p, math.radians(d), k, c) for n, p, d, k, c in MOUNTS),
+                  com=(0.3, -0.2))
+    model = coupled_model([Exciter(mech, MOTOR, FLYWHEEL, origin=(0.1, 0.2), angle=0.3)], frame)
+    state = {"torques": [lambda w: float(MOTOR.torque_at(w))], "on": True, "brake": 0.0, "load": 0.0}
+    scalar = fast.right_hand_side(model, state, lambda t: None, 1.0)
+    phi, w = 0.7, 25.0
+    q, dq = np.array([0.01, -0.004, 0.006]), np.array([0.2, -0.1, 0.08])
+    got = scalar(0.0, np.concatenate([[phi, w], q, dq, np.zeros(4)]))
+    mass, force, values, slopes = model.matrices(np.array([phi]), np.array([w]), q, dq)
+    rhs = force.copy()
+    rhs[0] += float(MOTOR.torque_at(w)) + model.parts[0].loads(phi, w, values[0]) - slopes[0][1]
+    rhs[1:] += -model.stiffness @ q - model.damping @ dq
+    expected = np.linalg.solve(mass, rhs)
+    assert np.allclose([got[1], *got[5:8]], expected, rtol=1e-11, atol=1e-11 * np.max(np.abs(expected)))
