@@ -52,9 +52,13 @@ def _terms(model: CoupledModel):
         arg = phi * k
         vals = (both @ np.concatenate([np.cos(arg), np.sin(arg)])).tolist()
         j, dv = c0[0] + vals[0] + added, vals[11]
-        ax, ay, ab = c0[2] + vals[2], c0[3] + vals[3], c0[4] + vals[4] + coupling
+        ax0, ay0, ab = c0[2] + vals[2], c0[3] + vals[3], c0[4] + vals[4] + coupling
+        # the momentum per crank speed and its slope turn with the frame (see CoupledModel.matrices)
+        ax, ay = ax0 - b * ay0, ay0 + b * ax0
+        turned = dy * ax0 - dx * ay0
         sx, sy, rr = c0[5] + vals[5], c0[6] + vals[6], c0[7] + vals[7]
-        dj, dax, day, dab, dsx, dsy, dr = vals[10], vals[12], vals[13], vals[14], vals[15], vals[16], vals[17]
+        dj, dax0, day0, dab, dsx, dsy, dr = vals[10], vals[12], vals[13], vals[14], vals[15], vals[16], vals[17]
+        dax, day = dax0 - b * day0, day0 + b * dax0
         moment, damping = c0[8] + vals[8], c0[9] + vals[9]
         # frame block M_frame + Mm, its phi-derivative times q', and the velocity forces
         mq = [[mf[0][0] + mass_m, mf[0][1], mf[0][2] - sy],
@@ -64,13 +68,13 @@ def _terms(model: CoupledModel):
         quad = dx * dmq_dq[0] + dy * dmq_dq[1] + db * dmq_dq[2]
         load = moment - damping * w - load_torque * math.tanh(w / width)
         brake = -brake_torque * math.tanh(w / width)
-        r_phi = -0.5 * dj * w * w + 0.5 * quad + load + brake + b * (gy * dsx - gx * dsy) - dv
+        r_phi = -0.5 * dj * w * w + 0.5 * quad - db * turned + load + brake + b * (gy * dsx - gx * dsy) - dv
         ww = w * w
         cq = (cf[0][0] * dx + cf[0][1] * dy + cf[0][2] * db, cf[1][0] * dx + cf[1][1] * dy + cf[1][2] * db,
               cf[2][0] * dx + cf[2][1] * dy + cf[2][2] * db)
-        r_q = (-(dax * ww + dmq_dq[0] * w) - (kf[0][0] * x + kf[0][1] * yy + kf[0][2] * b) - cq[0],
-               -(day * ww + dmq_dq[1] * w) - (kf[1][0] * x + kf[1][1] * yy + kf[1][2] * b) - cq[1],
-               -(dab * ww + dmq_dq[2] * w) - (kf[2][0] * x + kf[2][1] * yy + kf[2][2] * b) - cq[2]
+        r_q = (-(dax * ww + dmq_dq[0] * w - db * w * ay0) - (kf[0][0] * x + kf[0][1] * yy + kf[0][2] * b) - cq[0],
+               -(day * ww + dmq_dq[1] * w + db * w * ax0) - (kf[1][0] * x + kf[1][1] * yy + kf[1][2] * b) - cq[1],
+               -(dab * ww + dmq_dq[2] * w) + w * turned - (kf[2][0] * x + kf[2][1] * yy + kf[2][2] * b) - cq[2]
                + gy * sx - gx * sy - mean_weight)
         loss = dx * cq[0] + dy * cq[1] + db * cq[2]
         return j, (ax, ay, ab), mq, r_phi, r_q, loss, load, brake
