@@ -205,16 +205,11 @@ def _load(file: Path):
 
 
 def _engine_error(exc: Exception, file: Path) -> typer.Exit:
-    from .errors import AssemblyError, InputError, ProblemFileError, SingularPositionError
+    from .errors import InputError, ProblemFileError, input_problems
 
-    if isinstance(exc, ProblemFileError):
-        return _fail(str(exc), EXIT_BAD_INPUT)
-    if isinstance(exc, AssemblyError):
-        return _fail(f"1 problem(s) in {file}:\n  mechanism: cannot be assembled: {exc}", EXIT_BAD_INPUT)
-    if isinstance(exc, SingularPositionError):
-        return _fail(f"1 problem(s) in {file}:\n  mechanism: passes a dead position: {exc}", EXIT_BAD_INPUT)
-    if isinstance(exc, InputError):
-        return _fail(f"1 problem(s) in {file}:\n  {exc}", EXIT_BAD_INPUT)
+    if isinstance(exc, InputError):  # the same lines the studio shows beside a field
+        shown = exc if isinstance(exc, ProblemFileError) else ProblemFileError(input_problems(exc), str(file))
+        return _fail(str(shown), EXIT_BAD_INPUT)
     return _fail(f"error: the analysis of {file} failed: {type(exc).__name__}: {exc}", EXIT_FAILED)
 
 
@@ -494,6 +489,34 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
         for check in result.failed_checks:
             typer.echo(f"design check failed: {check}", err=True)
         raise typer.Exit(EXIT_CHECKS_FAILED)
+
+
+@app.command(epilog=EXIT_CODES_HELP)
+def studio(
+    file: FileArg,
+    port: Annotated[int, typer.Option("--port", min=0, max=65535, help="The port (0: any free one).")] = 8765,
+    host: Annotated[str, typer.Option("--host", help="The address to listen on (only this machine by default).")]
+    = "127.0.0.1",
+    no_open: Annotated[bool, typer.Option("--no-open", help="Do not open the web browser.")] = False,
+    debug: DebugOpt = False,
+) -> None:
+    """Edit a linkage file in the web browser and see its motion, forces and summary recomputed on each edit.
+
+    The first line printed is the page's URL (with its access token). Stop with Ctrl-C."""
+    from .errors import ProblemFileError
+
+    try:
+        from .studio.server import serve
+
+        serve(file, host=host, port=port, open_browser=not no_open, say=typer.echo)
+    except ProblemFileError as exc:
+        raise _fail(str(exc), EXIT_BAD_INPUT) from None
+    except OSError as exc:
+        raise _fail(f"error: the studio cannot start: {exc.strerror or exc}", EXIT_FAILED) from None
+    except KeyboardInterrupt:
+        typer.echo("studio stopped", err=True)
+    except Exception as exc:  # noqa: BLE001 - anything unexpected becomes exit 4 without a traceback
+        raise _internal_error(exc, debug) from None
 
 
 @app.command(epilog=EXIT_CODES_HELP)
