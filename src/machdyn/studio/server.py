@@ -5,9 +5,16 @@ from __future__ import annotations
 import os
 import secrets
 import socket
+import threading
+import webbrowser
 from collections.abc import Callable
 from pathlib import Path
 
+import typer
+import uvicorn
+
+from ..errors import ProblemFileError
+from .app import create_app
 from .session import Studio
 
 
@@ -19,26 +26,38 @@ def free_port(host: str = "127.0.0.1") -> int:
 
 
 def serve(path: str | os.PathLike, *, host: str = "127.0.0.1", port: int = 8765, open_browser: bool = True,
-          say: Callable[[str], None] = print) -> None:
+          say: Callable[..., None] = typer.echo) -> None:
     """Run the studio of ``path`` until Ctrl-C. The first line said is the page's URL (with its token)."""
-    import uvicorn
-
-    from .app import create_app
-
     studio = Studio(Path(path))
+    first = studio.state()["result"]  # judged and computed once before serving: a file with mistakes is refused
+    if not first["ok"]:
+        raise ProblemFileError([(p["path"], p["message"]) for p in first["problems"]], str(path))
     token = secrets.token_urlsafe(24)
     if port == 0:
         port = free_port(host)
     url = f"http://{'127.0.0.1' if host in ('127.0.0.1', 'localhost') else host}:{port}/?token={token}"
     say(url)
     if not studio.editable:
-        say(f"note: a [{studio.kind}] file opens read-only: its summary and the report of its run")
+        say(f"note: a [{studio.kind}] file opens read-only: its summary and the report of its run", err=True)
     config = uvicorn.Config(create_app(studio, token), host=host, port=port, log_level="warning",
                             lifespan="on", timeout_graceful_shutdown=2)
     server = uvicorn.Server(config)
     if open_browser:
-        import threading
-        import webbrowser
-
         threading.Timer(0.5, lambda: webbrowser.open(url)).start()
     server.run()  # uvicorn stops on SIGINT/SIGTERM: connections closed, the worker shut down
+
+
+def serve_command(path: str | os.PathLike, *, port: int, open_browser: bool, say: Callable[..., None]) -> int:
+    """``machdyn studio``: serve until Ctrl-C; the exit code (0, 2 for a file with mistakes, 1 when the server
+    cannot start). Messages other than the URL go to stderr."""
+    try:
+        serve(path, port=port, open_browser=open_browser, say=say)
+    except ProblemFileError as exc:
+        say(str(exc), err=True)
+        return 2
+    except OSError as exc:
+        say(f"error: the studio cannot start: {exc.strerror or exc}", err=True)
+        return 1
+    except KeyboardInterrupt:
+        say("studio stopped", err=True)
+    return 0

@@ -21,7 +21,11 @@ import numpy as np
 import tomlkit
 
 from ..errors import InputError, MachdynError, ProblemFileError, input_problems
-from ..problem.loader import read_text
+from ..outputs import atomic_write_text
+from ..problem.loader import parse_toml, read_text
+from ..reading import LoadedProblem, kind_of, read_problem
+from ..report.animation import scene
+from ..runner import check_problem, run_problem
 from .dragging import drag_rules
 from .fields import edited_text, fields_of
 
@@ -52,9 +56,6 @@ class Studio:
         self.folder = self.path.resolve().parent
         self.text, _ = read_text(self.path)  # bounded: at most the loader's file size
         self.fields = fields_of(tomlkit.parse(self.text))
-        from ..problem.loader import parse_toml
-        from ..reading import kind_of
-
         self.kind = kind_of(parse_toml(self.text, str(self.path)), str(self.path))
         self.editable = self.kind in EDITABLE_KINDS
         self.last_valid: dict[str, Any] | None = None
@@ -99,9 +100,6 @@ class Studio:
                 "message": str(ProblemFileError(problems, str(self.path)))}
 
     def _compute(self, text: str) -> dict[str, Any]:
-        from ..reading import LoadedProblem, read_problem
-        from ..runner import check_problem, run_problem
-
         loaded = read_problem(text)
         drive = getattr(loaded.spec, "drive", None)
         positions = getattr(drive, "positions", 0) or 0
@@ -117,8 +115,6 @@ class Studio:
         return self._answer(result, warnings)
 
     def _answer(self, result: Any, warnings: list[str]) -> dict[str, Any]:
-        from ..report.animation import scene
-
         rows = [{"label": label, "value": _number(value), "unit": unit}
                 for label, value, unit in result.summary_rows]
         answer: dict[str, Any] = {"ok": True, "title": result.title, "summary": rows,
@@ -159,8 +155,6 @@ class Studio:
             answer = self._evaluate(edits)
             if not answer["ok"]:
                 raise SaveRefused(answer["message"])
-            from ..outputs import atomic_write_text
-
             atomic_write_text(where, text)
             if where == self.path:  # later edits are relative to what is now on disk
                 self.text = text
@@ -173,7 +167,5 @@ class Studio:
         """The report of the ordinary run of the file (``machdyn run``), made once."""
         with self._lock:
             if self.report_html is None:
-                from ..runner import run_problem
-
                 self.report_html = run_problem(self.path).report_html()
             return self.report_html
