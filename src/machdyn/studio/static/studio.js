@@ -45,7 +45,10 @@
       input.type = "number"; input.step = "any"; input.value = f.number; input.name = f.key;
       input.disabled = !editable;
       input.setAttribute("aria-label", f.key);
-      input.addEventListener("change", () => { record(); values[f.key] = input.value; recompute(); });
+      input.addEventListener("change", () => {
+        if (values[f.key] === input.value) return;  // one edit, however many change events
+        record(); values[f.key] = input.value; recompute();
+      });
       row.insertCell().appendChild(input);
       row.insertCell().textContent = f.unit;
       const msg = document.createElement("div");
@@ -77,6 +80,7 @@
   async function recompute() {
     if (busy) { again = true; return; }  // one request at a time; the latest values follow
     busy = true;
+    document.body.dataset.busy = "1";
     try {
       const answer = await api("/api/evaluate", { values });
       show(answer);
@@ -84,7 +88,7 @@
       $("status").textContent = "the studio's server does not answer";
     }
     busy = false;
-    if (again) { again = false; recompute(); }
+    if (again) { again = false; recompute(); } else document.body.dataset.busy = "0";
   }
 
   function show(answer) {
@@ -137,7 +141,7 @@
     const name = $("saveas").value.trim();
     const answer = await api("/api/save", name ? { values, name } : { values });
     $("saved").textContent = answer.ok ? `saved to ${answer.saved}` : answer.message;
-    $("saved").className = answer.ok ? "" : "error";
+    $("saved").className = answer.ok ? "ok" : "error";
   });
 
   // ------------------------------------------------------------------ the view
@@ -330,6 +334,7 @@
       $("report").href = "/report?token=" + encodeURIComponent(token);
       for (const id of ["undo", "redo", "save", "saveas"]) $(id).disabled = true;
     }
+    document.body.dataset.busy = "0";
     show(state.result);
     document.body.dataset.ready = "1";
   })();
