@@ -130,6 +130,8 @@ def test_unknown_fields_and_bodies_that_are_not_json_are_refused(client):
     assert client.post("/api/evaluate", json={"values": {"meta.name": "1"}}, headers=H).status_code == 400
     assert client.post("/api/evaluate", content=b"{not json", headers=H).status_code == 400
     assert client.post("/api/evaluate", json={"values": [1]}, headers=H).status_code == 400
+    long = client.post("/api/evaluate", json={"values": {"mechanism.crank.length": "1" * 41}}, headers=H)
+    assert long.status_code == 400 and "at most 40 characters" in long.json()["message"]
 
 
 def test_a_computation_over_its_time_bound_is_answered(four_bar):

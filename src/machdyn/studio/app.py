@@ -142,7 +142,7 @@ def create_app(studio: Studio, token: str, *, compute_seconds: float = COMPUTE_S
         try:
             values, _ = await _values(request)
             return JSONResponse(await computed(studio.evaluate, values))
-        except (SaveRefused, KeyError) as exc:
+        except (ValueError, KeyError) as exc:  # a refused save, an unknown field, a value too long
             return JSONResponse({"ok": False, "problems": [], "message": str(exc).strip("'\"")}, status_code=400)
         except TimeoutError:
             return too_long()
@@ -152,7 +152,7 @@ def create_app(studio: Studio, token: str, *, compute_seconds: float = COMPUTE_S
             values, body = await _values(request)
             name = body.get("name") if isinstance(body.get("name"), str) else None
             return JSONResponse(await computed(studio.save, values, name))
-        except (SaveRefused, KeyError) as exc:
+        except (ValueError, KeyError) as exc:  # a refused save, an unknown field, a value too long
             return JSONResponse({"ok": False, "message": str(exc).strip("'\"")}, status_code=400)
         except OSError as exc:
             return JSONResponse({"ok": False, "message": f"cannot write the file: {exc.strerror or exc}"},

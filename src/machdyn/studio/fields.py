@@ -113,14 +113,16 @@ def _container(document: Any, path: Path) -> Any:
 def edited_text(text: str, edits: Mapping[str, str]) -> str:
     """The problem file ``text`` with each field named in ``edits`` (key -> the number as typed) replaced, every
     other byte kept. A typed value that is not a plain number is put in as typed, for the loader to refuse with
-    its own message; an unknown key is a :class:`KeyError`."""
+    its own message; an unknown key is a :class:`KeyError`, a value over MAX_TYPED characters a ValueError."""
     document = tomlkit.parse(text)
     known = {f.key: f for f in fields_of(document)}
     for key, typed in edits.items():
         field = known.get(key)
         if field is None:
             raise KeyError(f"'{key}' is not an editable quantity of this file")
-        typed = str(typed).strip()[:MAX_TYPED]
+        typed = str(typed).strip()
+        if len(typed) > MAX_TYPED:
+            raise ValueError(f"{key}: a value is a number of at most {MAX_TYPED} characters; got {len(typed)}")
         if typed == field.number:
             continue
         node = _container(document, field.path)
