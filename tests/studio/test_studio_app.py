@@ -5,8 +5,15 @@ a bad value answered with the very lines ``machdyn check`` prints and the last v
 from __future__ import annotations
 
 import difflib
+import os
 import re
 import shutil
+import signal
+import subprocess
+import sys
+import time
+import urllib.error
+import urllib.request
 from pathlib import Path
 
 import pytest
@@ -169,3 +176,31 @@ def test_the_command_refuses_a_file_with_mistakes_as_check_does(tmp_path):
     done = CliRunner().invoke(cli_app, ["studio", str(path), "--no-open", "--port", "0"])
     assert done.exit_code == 2
     assert "mechanism.crank.mass" in done.output
+
+
+def test_the_command_prints_its_url_first_serves_it_and_stops_cleanly_on_ctrl_c(four_bar):
+    env = {**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[2] / "src")}
+    proc = subprocess.Popen([sys.executable, "-m", "machdyn.cli", "studio", str(four_bar), "--no-open", "--port",
+                             "0"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    try:
+        url = proc.stdout.readline().strip()  # the first line of output, before the server runs
+        assert re.fullmatch(r"http://127\.0\.0\.1:\d+/\?token=[A-Za-z0-9_-]{32}", url), url
+        deadline = time.monotonic() + 30
+        while True:  # the server listens a moment after the URL is printed
+            try:
+                with urllib.request.urlopen(url, timeout=5) as page:
+                    assert page.status == 200 and "machdyn studio" in page.read().decode()
+                break
+            except urllib.error.URLError:
+                assert time.monotonic() < deadline, "the studio did not start listening"
+                time.sleep(0.05)
+        with pytest.raises(urllib.error.HTTPError) as refused:
+            urllib.request.urlopen(url.split("?")[0], timeout=5)
+        assert refused.value.code == 403
+        refused.value.close()
+        proc.send_signal(signal.SIGINT)
+        assert proc.wait(timeout=15) == 0
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+        proc.communicate()
