@@ -113,6 +113,10 @@ def test_edit_drag_error_and_save_in_the_browser(served, page):
     angle = float(_field(page, "mechanism.ground.angle").locator("input").input_value())
     length = float(_field(page, "mechanism.ground.length").locator("input").input_value())
     assert 0.5 < angle < 20 and length > 130
+    # the round trip pointer -> fields -> server -> drawing puts the pivot where it was dropped
+    moved = page.locator('#view circle[data-point="ground:D"]').bounding_box()
+    assert moved["x"] + moved["width"] / 2 == pytest.approx(x + 10, abs=1.0)
+    assert moved["y"] + moved["height"] / 2 == pytest.approx(y - 12, abs=1.0)
 
     if os.environ.get("MACHDYN_SCREENSHOTS"):  # docs/images/studio.png is made this way
         page.screenshot(path=str(Path(os.environ["MACHDYN_SCREENSHOTS"]) / "studio.png"))
