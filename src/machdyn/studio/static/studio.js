@@ -50,12 +50,37 @@
         record(); values[f.key] = input.value; recompute();
       });
       row.insertCell().appendChild(input);
+      const range = bounds(f);
+      if (range && editable) {  // a slider over a sensible span around the file's value
+        const slide = document.createElement("input");
+        slide.type = "range"; slide.className = "nudge"; slide.min = range[0]; slide.max = range[1];
+        slide.step = range[2]; slide.value = f.number;  // the file's value sits on the slider's grid
+        slide.setAttribute("aria-label", f.key + " slider");
+        let sliding = false;
+        slide.addEventListener("input", () => {
+          if (!sliding) { record(); sliding = true; }
+          input.value = values[f.key] = String(Number(Number(slide.value).toPrecision(5)));
+          recompute();
+        });
+        slide.addEventListener("change", () => { sliding = false; });
+        input.addEventListener("change", () => { slide.value = input.value; });
+        row.cells[1].appendChild(slide);
+      }
       row.insertCell().textContent = f.unit;
       const msg = document.createElement("div");
       msg.className = "error";
       row.cells[1].appendChild(msg);
       values[f.key] = f.number;
     }
+  }
+
+  // from half to twice the file's value (its sign kept) in steps of 0.5 %, a whole turn for an angle at zero;
+  // none for counts
+  function bounds(f) {
+    const v = Number(f.number);
+    if (f.integer || !f.unit || !Number.isFinite(v)) return null;
+    if (v === 0) return /^(deg|degree|degrees|°)$/.test(f.unit) ? [-180, 180, 1] : null;
+    return v > 0 ? [v / 2, 2 * v, v / 200] : [2 * v, v / 2, -v / 200];
   }
 
   function record() {
@@ -68,7 +93,9 @@
 
   function restore(snapshot) {
     values = Object.assign({}, snapshot);
-    for (const row of $("fields").tBodies[0].rows) row.querySelector("input").value = values[row.dataset.key];
+    for (const row of $("fields").tBodies[0].rows) {
+      for (const input of row.querySelectorAll("input")) input.value = values[row.dataset.key];
+    }
     buttons();
     recompute();
   }
@@ -294,7 +321,7 @@
   function setField(key, number) {
     values[key] = String(Number(number.toPrecision(5)));
     const row = [...$("fields").tBodies[0].rows].find((r) => r.dataset.key === key);
-    if (row) row.querySelector("input").value = values[key];
+    if (row) for (const input of row.querySelectorAll("input")) input.value = values[key];
   }
 
   $("view").addEventListener("pointerdown", (e) => {
