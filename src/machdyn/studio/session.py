@@ -55,8 +55,8 @@ class Studio:
         self.path = Path(path)
         self.folder = self.path.resolve().parent
         self.text, _ = read_text(self.path)  # bounded: at most the loader's file size
+        self.kind = kind_of(parse_toml(self.text, str(self.path)), str(self.path))  # malformed TOML refused here
         self.fields = fields_of(tomlkit.parse(self.text))
-        self.kind = kind_of(parse_toml(self.text, str(self.path)), str(self.path))
         self.editable = self.kind in EDITABLE_KINDS
         self.last_valid: dict[str, Any] | None = None
         self.report_html: str | None = None
