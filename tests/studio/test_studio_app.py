@@ -9,6 +9,7 @@ import os
 import re
 import shutil
 import signal
+import socket
 import subprocess
 import sys
 import time
@@ -207,3 +208,13 @@ def test_the_command_prints_its_url_first_serves_it_and_stops_cleanly_on_ctrl_c(
         if proc.poll() is None:
             proc.kill()
         proc.communicate()
+
+
+def test_a_port_in_use_is_said_plainly(four_bar):
+    with socket.socket() as taken:
+        taken.bind(("127.0.0.1", 0))
+        taken.listen()
+        port = taken.getsockname()[1]
+        done = CliRunner().invoke(cli_app, ["studio", str(four_bar), "--no-open", "--port", str(port)])
+    assert done.exit_code == 1
+    assert f"cannot listen on 127.0.0.1:{port}" in done.output and "http://" not in done.output

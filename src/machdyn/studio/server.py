@@ -33,8 +33,14 @@ def serve(path: str | os.PathLike, *, host: str = "127.0.0.1", port: int = 8765,
     if not first["ok"]:
         raise ProblemFileError([(p["path"], p["message"]) for p in first["problems"]], str(path))
     token = secrets.token_urlsafe(24)
-    if port == 0:
-        port = free_port(host)
+    listening = socket.socket(socket.AF_INET, socket.SOCK_STREAM)  # bound here: a port in use is an OSError
+    listening.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+    try:
+        listening.bind((host, port))
+    except OSError as exc:
+        listening.close()
+        raise OSError(exc.errno, f"cannot listen on {host}:{port} ({exc.strerror}); choose another --port") from None
+    port = int(listening.getsockname()[1])
     url = f"http://{'127.0.0.1' if host in ('127.0.0.1', 'localhost') else host}:{port}/?token={token}"
     say(url)
     if not studio.editable:
@@ -44,7 +50,8 @@ def serve(path: str | os.PathLike, *, host: str = "127.0.0.1", port: int = 8765,
     server = uvicorn.Server(config)
     if open_browser:
         threading.Timer(0.5, lambda: webbrowser.open(url)).start()
-    server.run()  # uvicorn stops on SIGINT/SIGTERM: connections closed, the worker shut down
+    with listening:
+        server.run(sockets=[listening])  # uvicorn stops on SIGINT/SIGTERM: connections closed, worker shut down
 
 
 def serve_command(path: str | os.PathLike, *, port: int, open_browser: bool, say: Callable[..., None]) -> int:
