@@ -153,16 +153,11 @@ def _load(file: Path):
 
 
 def _engine_error(exc: Exception, file: Path) -> typer.Exit:
-    from .errors import AssemblyError, InputError, ProblemFileError, SingularPositionError
+    from .errors import InputError, ProblemFileError, input_problems
 
-    if isinstance(exc, ProblemFileError):
-        return _fail(str(exc), EXIT_BAD_INPUT)
-    if isinstance(exc, AssemblyError):
-        return _fail(f"1 problem(s) in {file}:\n  mechanism: cannot be assembled: {exc}", EXIT_BAD_INPUT)
-    if isinstance(exc, SingularPositionError):
-        return _fail(f"1 problem(s) in {file}:\n  mechanism: passes a dead position: {exc}", EXIT_BAD_INPUT)
-    if isinstance(exc, InputError):
-        return _fail(f"1 problem(s) in {file}:\n  {exc}", EXIT_BAD_INPUT)
+    if isinstance(exc, InputError):  # the same lines the studio shows beside a field
+        return _fail(str(ProblemFileError(input_problems(exc), exc.source if isinstance(exc, ProblemFileError)
+                                          else str(file))), EXIT_BAD_INPUT)
     return _fail(f"error: the analysis of {file} failed: {type(exc).__name__}: {exc}", EXIT_FAILED)
 
 
@@ -377,14 +372,7 @@ def _watched_run(file: Path, out: Path, stamp: str) -> int:
 
 
 def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: str | None = None) -> None:
-    from .errors import (
-        AssemblyError,
-        InputError,
-        MachdynError,
-        OperationalError,
-        ProblemFileError,
-        SingularPositionError,
-    )
+    from .errors import InputError, MachdynError, OperationalError
     from .kinds import steps_of
 
     started = time.perf_counter()
@@ -412,7 +400,7 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
                 result = run_problem(loaded, step=progress.step)
         except OperationalError as exc:
             raise _fail(f"error: {exc}", EXIT_FAILED) from None
-        except (ProblemFileError, AssemblyError, InputError, SingularPositionError) as exc:
+        except InputError as exc:  # a file's mistakes, a linkage that cannot close or passes a dead position
             raise _engine_error(exc, file) from None
         except MachdynError as exc:
             raise _fail(f"error: the analysis of {file} failed: {exc}", EXIT_FAILED) from None
@@ -452,6 +440,21 @@ def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: s
 
 
 @app.command(epilog=EXIT_CODES_HELP)
+def studio(file: FileArg, debug: DebugOpt = False,
+           port: Annotated[int, typer.Option(min=0, max=65535, help="The port (0: any free one).")] = 8765,
+           no_open: Annotated[bool, typer.Option("--no-open", help="Do not open the web browser.")] = False) -> None:
+    """Edit a linkage file in the web browser: its motion, forces and summary recomputed on each edit. The first
+    line printed is the page's URL (with its access token); it listens on 127.0.0.1 only. Stop with Ctrl-C."""
+    try:
+        from .studio.server import serve_command  # the web framework loads only here
+
+        code = serve_command(file, port=port, open_browser=not no_open, say=typer.echo)
+    except Exception as exc:  # noqa: BLE001 - anything unexpected becomes exit 4 without a traceback
+        raise _internal_error(exc, debug) from None
+    raise typer.Exit(code)
+
+
+@app.command(epilog=EXIT_CODES_HELP)
 def check(file: FileArg, debug: DebugOpt = False) -> None:
     """Validate a problem file without analysing it: units, ranges, names, and that the linkage assembles."""
     try:
@@ -463,14 +466,14 @@ def check(file: FileArg, debug: DebugOpt = False) -> None:
 
 
 def _check(file: Path) -> None:
-    from .errors import AssemblyError, InputError, ProblemFileError, SingularPositionError
+    from .errors import InputError
 
     loaded = _load(file)
     from .runner import check_problem
 
     try:
         warnings = check_problem(loaded)
-    except (ProblemFileError, AssemblyError, InputError, SingularPositionError) as exc:
+    except InputError as exc:  # a file's mistakes, a linkage that cannot close or passes a dead position
         raise _engine_error(exc, file) from None
     for w in warnings:
         typer.echo(f"warning: {w}", err=True)

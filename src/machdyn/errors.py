@@ -50,6 +50,18 @@ class ProblemFileError(InputError):
         super().__init__("\n".join(lines))
 
 
+def input_problems(exc: InputError) -> list[tuple[str, str]]:
+    """The (path, message) lines ``machdyn check`` prints for a bad input: a problem file's own mistakes, or the
+    one line of a linkage that cannot close, passes a dead position or breaks another input rule."""
+    if isinstance(exc, ProblemFileError):
+        return list(exc.problems)
+    if isinstance(exc, AssemblyError):
+        return [("mechanism", f"cannot be assembled: {exc}")]
+    if isinstance(exc, SingularPositionError):
+        return [("mechanism", f"passes a dead position: {exc}")]
+    return [("", str(exc))]
+
+
 def _cut(text: str, limit: int) -> str:
     return text if len(text) <= limit else f"{text[: limit - 40]}... ({len(text):,} characters)"
 

@@ -162,6 +162,23 @@ def test_the_engine_imports_nothing_above_it():
         assert above == set(), (path.name, above)
 
 
+def test_only_the_command_line_reaches_the_studio_and_only_the_studio_the_web():
+    """The studio is a front end: no analysis imports it, and the web framework and server are imported by its
+    modules alone (the command line imports the studio inside its command, so start-up loads neither)."""
+    web = ("starlette", "uvicorn", "tomlkit", "httpx")
+    for name, path in MODULES.items():
+        if name.startswith("machdyn.studio"):
+            continue
+        for node, top in _import_nodes(path):
+            names = [a.name for a in node.names] if isinstance(node, ast.Import) else [node.module or ""]
+            assert not any(n.split(".")[0] in web for n in names if not getattr(node, "level", 0)), name
+            studio = {t for t in _targets(node, _package(name, path)) if t.startswith("machdyn.studio")}
+            if name == "machdyn.cli":
+                assert studio <= {"machdyn.studio.server"} and not (studio and top), name
+            else:
+                assert not studio, name
+
+
 def test_only_the_report_imports_matplotlib():
     for path in SRC.rglob("*.py"):
         if "report" in path.relative_to(SRC).parts:

@@ -1,0 +1,368 @@
+// machdyn studio: the page edits the problem file's quantities, the server judges and computes, the page draws.
+// Nothing is solved here: positions, forces and the summary come from the server (the run's own numbers).
+(function () {
+  "use strict";
+  const token = new URLSearchParams(location.search).get("token") || "";
+  const headers = { "Content-Type": "application/json", "X-Studio-Token": token };
+  const $ = (id) => document.getElementById(id);
+  const SVG = "http://www.w3.org/2000/svg";
+  const W = 640, H = 420;
+  let fields = [], values = {}, history = [], future = [], last = null, frame = 0, playing = false;
+  let busy = false, again = false, view = null, drag = null;
+
+  async function api(path, body) {
+    const response = await fetch(path, body === undefined ? { headers } :
+      { method: "POST", headers, body: JSON.stringify(body) });
+    return response.json();
+  }
+
+  function el(tag, attrs, parent) {
+    const node = document.createElementNS(SVG, tag);
+    for (const [k, v] of Object.entries(attrs || {})) node.setAttribute(k, v);
+    if (parent) parent.appendChild(node);
+    return node;
+  }
+
+  function fmt(v) {
+    if (v === null || v === undefined) return "–";
+    if (Array.isArray(v)) return v.map(fmt).join(", ");
+    if (typeof v !== "number") return String(v);
+    if (v === 0) return "0";
+    const a = Math.abs(v);
+    return (a >= 1e5 || a < 1e-3) ? v.toExponential(3) : String(Number(v.toPrecision(4)));
+  }
+
+  // ------------------------------------------------------------------ fields, history
+  function buildFields(editable) {
+    const body = $("fields").tBodies[0];
+    body.textContent = "";
+    for (const f of fields) {
+      const row = body.insertRow();
+      row.dataset.key = f.key;
+      row.insertCell().textContent = f.key;
+      row.cells[0].className = "key";
+      const input = document.createElement("input");
+      input.type = "number"; input.step = "any"; input.value = f.number; input.name = f.key;
+      input.disabled = !editable;
+      input.setAttribute("aria-label", f.key);
+      input.addEventListener("change", () => {
+        if (values[f.key] === input.value) return;  // one edit, however many change events
+        record(); values[f.key] = input.value; recompute();
+      });
+      row.insertCell().appendChild(input);
+      const range = bounds(f);
+      if (range && editable) {  // a slider over a sensible span around the file's value
+        const slide = document.createElement("input");
+        slide.type = "range"; slide.className = "nudge"; slide.min = range[0]; slide.max = range[1];
+        slide.step = range[2]; slide.value = f.number;  // the file's value sits on the slider's grid
+        slide.setAttribute("aria-label", f.key + " slider");
+        let sliding = false;
+        slide.addEventListener("input", () => {
+          if (!sliding) { record(); sliding = true; }
+          input.value = values[f.key] = String(Number(Number(slide.value).toPrecision(5)));
+          recompute();
+        });
+        slide.addEventListener("change", () => { sliding = false; });
+        input.addEventListener("change", () => { slide.value = input.value; });
+        row.cells[1].appendChild(slide);
+      }
+      row.insertCell().textContent = f.unit;
+      const msg = document.createElement("div");
+      msg.className = "error";
+      row.cells[1].appendChild(msg);
+      values[f.key] = f.number;
+    }
+  }
+
+  // from half to twice the file's value (its sign kept) in steps of 0.5 %, a whole turn for an angle at zero;
+  // none for counts
+  function bounds(f) {
+    const v = Number(f.number);
+    if (f.integer || !f.unit || !Number.isFinite(v)) return null;
+    if (v === 0) return /^(deg|degree|degrees|°)$/.test(f.unit) ? [-180, 180, 1] : null;
+    return v > 0 ? [v / 2, 2 * v, v / 200] : [2 * v, v / 2, -v / 200];
+  }
+
+  function record() {
+    history.push(Object.assign({}, values));
+    future = [];
+    buttons();
+  }
+
+  function buttons() { $("undo").disabled = !history.length; $("redo").disabled = !future.length; }
+
+  function restore(snapshot) {
+    values = Object.assign({}, snapshot);
+    for (const row of $("fields").tBodies[0].rows) {
+      for (const input of row.querySelectorAll("input")) input.value = values[row.dataset.key];
+    }
+    buttons();
+    recompute();
+  }
+
+  $("undo").addEventListener("click", () => { if (history.length) { future.push(values); restore(history.pop()); } });
+  $("redo").addEventListener("click", () => { if (future.length) { history.push(values); restore(future.pop()); } });
+
+  // ------------------------------------------------------------------ the server
+  async function recompute() {
+    if (busy) { again = true; return; }  // one request at a time; the latest values follow
+    busy = true;
+    document.body.dataset.busy = "1";
+    try {
+      const answer = await api("/api/evaluate", { values });
+      show(answer);
+    } catch (e) {
+      $("status").textContent = "the studio's server does not answer";
+    }
+    busy = false;
+    if (again) { again = false; recompute(); } else document.body.dataset.busy = "0";
+  }
+
+  function show(answer) {
+    for (const row of $("fields").tBodies[0].rows) { row.classList.remove("bad"); row.querySelector(".error").textContent = ""; }
+    if (!answer.ok) {
+      $("stale").hidden = last === null;
+      $("check").textContent = answer.message || "";
+      const loose = [];
+      for (const p of answer.problems || []) {
+        const row = [...$("fields").tBodies[0].rows].find((r) => r.dataset.key === p.path ||
+          r.dataset.key.startsWith(p.path + ".") || r.dataset.key.startsWith(p.path + "["));
+        if (row && p.path) { row.classList.add("bad"); row.querySelector(".error").textContent = p.message; }
+        else loose.push(p);
+      }
+      $("status").textContent = "invalid" + (answer.compute_ms !== undefined ? ` (checked in ${answer.compute_ms} ms)` : "");
+      if (last === null) { $("stale").hidden = false; }
+      document.body.dataset.state = "invalid";
+      return;
+    }
+    last = answer;
+    $("stale").hidden = true;
+    $("check").textContent = "";
+    $("status").textContent = `computed in ${answer.compute_ms} ms`;
+    $("title").textContent = answer.title || "machdyn studio";
+    $("peak").textContent = answer.peak_torque === null ? "–" : `${fmt(answer.peak_torque)} N·m`;
+    $("warnings").textContent = "";
+    for (const w of [...answer.warnings, ...answer.failed_checks.map((c) => "design check failed: " + c)]) {
+      const p = document.createElement("p"); p.className = "warning"; p.textContent = w; $("warnings").appendChild(p);
+    }
+    const body = $("summary").tBodies[0];
+    body.textContent = "";
+    for (const r of answer.summary) {
+      const row = body.insertRow();
+      row.insertCell().textContent = r.label;
+      row.insertCell().textContent = fmt(r.value);
+      row.cells[1].className = "value";
+      row.insertCell().textContent = r.unit;
+    }
+    if (answer.scene) {
+      const s = answer.scene;
+      $("slider").max = s.angles.length - 1;
+      frame = Math.min(frame, s.angles.length - 1);
+      if (!view || !drag && outside(s)) view = fit(s);
+    }
+    draw();
+    document.body.dataset.state = "valid";
+  }
+
+  $("save").addEventListener("click", async () => {
+    const name = $("saveas").value.trim();
+    const answer = await api("/api/save", name ? { values, name } : { values });
+    $("saved").textContent = answer.ok ? `saved to ${answer.saved}` : answer.message;
+    $("saved").className = answer.ok ? "ok" : "error";
+  });
+
+  // ------------------------------------------------------------------ the view
+  function fit(s) {
+    const [x0, x1, y0, y1] = s.extent;
+    const pad = 0.12 * Math.max(x1 - x0, y1 - y0, 1e-9);
+    const k = Math.min(W / (x1 - x0 + 2 * pad), H / (y1 - y0 + 2 * pad));
+    return { k, cx: (x0 + x1) / 2, cy: (y0 + y1) / 2 };
+  }
+
+  function outside(s) {
+    const [x0, x1, y0, y1] = s.extent;
+    const [a, b] = [sx(x0), sy(y0)], [c, d] = [sx(x1), sy(y1)];
+    return a < 0 || c > W || d < 0 || b > H;
+  }
+
+  const sx = (x) => W / 2 + (x - view.cx) * view.k;
+  const sy = (y) => H / 2 - (y - view.cy) * view.k;
+
+  function at(name, i) {
+    const s = last.scene;
+    if (name.startsWith("ground:")) {
+      const g = s.ground.find((p) => "ground:" + p.name === name);
+      return g ? [g.x, g.y] : null;
+    }
+    const p = s.points[name];
+    return p && p[0][i] !== null ? [p[0][i], p[1][i]] : null;
+  }
+
+  function draw() {
+    const svg = $("view");
+    svg.textContent = "";
+    if (!last || !last.scene) { drawPlots(); return; }
+    const s = last.scene;
+    $("angle").textContent = `${fmt(s.angles[frame])}°`;
+    for (const t of s.traces) {
+      const [xs, ys] = s.points[t];
+      const d = xs.map((x, i) => x === null ? "" : `${sx(x).toFixed(1)},${sy(ys[i]).toFixed(1)}`).filter(Boolean).join(" ");
+      el("polyline", { points: d, fill: "none", stroke: "#9ab", "stroke-dasharray": "3 3" }, svg);
+    }
+    for (const g of s.guides) el("line", { x1: sx(g[0]), y1: sy(g[1]), x2: sx(g[2]), y2: sy(g[3]), stroke: "#888", "stroke-width": 3 }, svg);
+    for (const b of s.bodies) {
+      const pts = b.points.map((p) => at(`${b.name}.${p}`, frame)).filter(Boolean);
+      if (!pts.length) continue;
+      if (b.shape === "slider") {
+        const [x, y] = pts[0];
+        const r = el("rect", { x: sx(x) - 16, y: sy(y) - 9, width: 32, height: 18, fill: b.colour, "fill-opacity": 0.5, stroke: b.colour }, svg);
+        if (b.angle) r.setAttribute("transform", `rotate(${-b.angle[frame]} ${sx(x)} ${sy(y)})`);
+      } else {
+        el("polygon", { points: pts.map(([x, y]) => `${sx(x)},${sy(y)}`).join(" "), fill: b.colour, "fill-opacity": b.shape === "polygon" ? 0.25 : 0,
+          stroke: b.colour, "stroke-width": 5, "stroke-linejoin": "round" }, svg);
+      }
+    }
+    for (const g of s.ground) {
+      const x = sx(g.x), y = sy(g.y);
+      el("path", { d: `M${x},${y} l-9,15 h18 z`, fill: "#ccc", stroke: "#555" }, svg);
+    }
+    const handles = new Set(last.drags.flatMap((r) => r.points));
+    const drawn = new Set();
+    for (const [name] of Object.entries(s.points)) {
+      const p = at(name, frame);
+      if (!p) continue;
+      const key = `${sx(p[0]).toFixed(0)},${sy(p[1]).toFixed(0)}`;
+      const handle = handles.has(name);
+      if (drawn.has(key) && !handle) continue;
+      drawn.add(key);
+      const c = el("circle", { cx: sx(p[0]), cy: sy(p[1]), r: handle ? 7 : 4, fill: handle ? "#fff" : "#333", stroke: "#333", "data-point": name }, svg);
+      if (handle) c.classList.add("handle");
+    }
+    for (const g of s.ground) {
+      if (!handles.has("ground:" + g.name)) continue;
+      el("circle", { cx: sx(g.x), cy: sy(g.y), r: 7, fill: "#fff", stroke: "#333", class: "handle", "data-point": "ground:" + g.name }, svg);
+    }
+    for (const g of s.ground) {
+      const t = el("text", { x: sx(g.x) + 10, y: sy(g.y) + 26, "font-size": 12, fill: "#555" }, svg);
+      t.textContent = g.name;
+    }
+    $("slider").value = frame;
+    drawPlots();
+  }
+
+  // ------------------------------------------------------------------ plots
+  function plot(title, unit, series, angles) {
+    const w = 640, h = 170, l = 56, r = 10, t = 20, b = 24;
+    const svg = el("svg", { viewBox: `0 0 ${w} ${h}`, class: "plot", "data-title": title });
+    const all = series.flatMap((s) => s.ys).filter((v) => v !== null);
+    if (!all.length) return svg;
+    let lo = Math.min(0, ...all), hi = Math.max(0, ...all);
+    if (hi === lo) hi = lo + 1;
+    const a0 = angles[0], a1 = angles[angles.length - 1] || a0 + 1;
+    const px = (a) => l + (a - a0) / (a1 - a0 || 1) * (w - l - r), py = (v) => t + (hi - v) / (hi - lo) * (h - t - b);
+    el("line", { x1: l, x2: w - r, y1: py(0), y2: py(0), stroke: "#bbb" }, svg);
+    for (const [v, anchor] of [[hi, py(hi) + 4], [lo, py(lo)]]) {
+      const tx = el("text", { x: l - 4, y: anchor, "text-anchor": "end", "font-size": 11 }, svg); tx.textContent = fmt(v);
+    }
+    const head = el("text", { x: l, y: 14, "font-size": 12, "font-weight": "bold" }, svg);
+    head.textContent = `${title} [${unit}]` + (series.length > 1 ? ":  " + series.map((s) => s.name).join(", ") : "");
+    for (const [a, anchor] of [[a0, "start"], [a1, "end"]]) {
+      const tx = el("text", { x: px(a), y: h - 6, "text-anchor": anchor, "font-size": 11 }, svg); tx.textContent = `${fmt(a)}°`;
+    }
+    series.forEach((s, k) => {
+      const d = s.ys.map((v, i) => v === null ? "" : `${px(angles[i]).toFixed(1)},${py(v).toFixed(1)}`).filter(Boolean).join(" ");
+      el("polyline", { points: d, fill: "none", stroke: s.colour || ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"][k % 6], "stroke-width": 1.5 }, svg);
+    });
+    const x = px(angles[frame]);
+    el("line", { x1: x, x2: x, y1: t, y2: h - b, stroke: "#555", "stroke-dasharray": "2 2" }, svg);
+    svg.addEventListener("click", (e) => {
+      const box = svg.getBoundingClientRect();
+      const a = a0 + ((e.clientX - box.left) * w / box.width - l) / (w - l - r) * (a1 - a0);
+      let best = 0;
+      angles.forEach((v, i) => { if (Math.abs(v - a) < Math.abs(angles[best] - a)) best = i; });
+      frame = best; draw();
+    });
+    return svg;
+  }
+
+  function drawPlots() {
+    const box = $("plots");
+    box.textContent = "";
+    if (!last || !last.scene) return;
+    const s = last.scene;
+    for (const c of s.curves) box.appendChild(plot(c.title, c.unit, [{ name: c.title, ys: c.y }], s.angles));
+    if (s.joints.length) {
+      const series = s.joints.map((j) => ({ name: j.name, ys: j.fx.map((fx, i) => fx === null || j.fy[i] === null ? null : Math.hypot(fx, j.fy[i])) }));
+      box.appendChild(plot("Joint forces |F|", "N", series, s.angles));
+    }
+  }
+
+  // ------------------------------------------------------------------ slider, play, drag
+  $("slider").addEventListener("input", () => { frame = Number($("slider").value); draw(); });
+  $("fit").addEventListener("click", () => { if (last && last.scene) { view = fit(last.scene); draw(); } });
+  $("play").addEventListener("click", () => {
+    playing = !playing;
+    $("play").textContent = playing ? "Pause" : "Play";
+    const step = () => {
+      if (!playing || !last || !last.scene) return;
+      frame = (frame + 1) % last.scene.angles.length;
+      draw();
+      requestAnimationFrame(step);
+    };
+    requestAnimationFrame(step);
+  });
+
+  function world(e) {
+    const box = $("view").getBoundingClientRect();
+    const x = (e.clientX - box.left) * W / box.width, y = (e.clientY - box.top) * H / box.height;
+    return [view.cx + (x - W / 2) / view.k, view.cy - (y - H / 2) / view.k];
+  }
+
+  function setField(key, number) {
+    values[key] = String(Number(number.toPrecision(5)));
+    const row = [...$("fields").tBodies[0].rows].find((r) => r.dataset.key === key);
+    if (row) for (const input of row.querySelectorAll("input")) input.value = values[key];
+  }
+
+  $("view").addEventListener("pointerdown", (e) => {
+    const name = e.target.getAttribute && e.target.getAttribute("data-point");
+    const rule = name && last && last.drags.find((r) => r.points.includes(name));
+    if (!rule || !last.scene) return;
+    // the reference points stay those of the frame where the drag began
+    drag = { rule, refs: Object.fromEntries(rule.set.map((s) => [s.from, at(s.from, frame)])) };
+    record();
+    $("view").setPointerCapture(e.pointerId);
+    e.preventDefault();
+  });
+  $("view").addEventListener("pointermove", (e) => {
+    if (!drag) return;
+    const [x, y] = world(e);
+    for (const s of drag.rule.set) {
+      const q = drag.refs[s.from];
+      if (!q) continue;
+      const value = s.measure === "angle" ? Math.atan2(y - q[1], x - q[0]) : Math.hypot(x - q[0], y - q[1]);
+      setField(s.key, value / s.si);
+    }
+    recompute();
+  });
+  const drop = () => { drag = null; };
+  $("view").addEventListener("pointerup", drop);
+  $("view").addEventListener("pointercancel", drop);
+
+  // ------------------------------------------------------------------ start
+  (async function start() {
+    const state = await api("/api/state");
+    if (!state.fields) { $("status").textContent = state.message || "the studio could not open the file"; return; }
+    fields = state.fields;
+    $("file").textContent = state.file;
+    buildFields(state.editable);
+    if (!state.editable) {
+      $("readonly").hidden = false;
+      $("report").href = "/report?token=" + encodeURIComponent(token);
+      for (const id of ["undo", "redo", "save", "saveas"]) $(id).disabled = true;
+    }
+    document.body.dataset.busy = "0";
+    show(state.result);
+    document.body.dataset.ready = "1";
+  })();
+})();
