@@ -97,7 +97,7 @@ def goodman_safety(stress_max: Any, stress_min: Any, endurance_limit: float, ult
     return n if n.ndim else float(n)
 
 
-def link_section_loads(state_a: Any, state_b: Any, force_a: tuple[Any, Any], mass: float,
+def link_section_loads(state_a: Any, state_b: Any, force_a: tuple[Any, Any], mass: Any,
                        stations: int = STATIONS) -> tuple[Any, Any]:
     """Axial force and the largest bending moment of a uniform two-pin link A–B over a cycle.
 
@@ -109,7 +109,7 @@ def link_section_loads(state_a: Any, state_b: Any, force_a: tuple[Any, Any], mas
     ----------
     state_a, state_b : the global motion of the pins A and B (objects with x, y, ax, ay [m, m/s²]).
     force_a : (fx, fy) [N], the force on the link at A from the body before it.
-    mass : m [kg] of the link (uniform along A–B).
+    mass : m [kg] of the link (uniform along A–B); (N, 1) for N designs whose states are (N, K).
     stations : points along the link where the moment is evaluated.
 
     Returns
@@ -139,7 +139,8 @@ def link_section_loads(state_a: Any, state_b: Any, force_a: tuple[Any, Any], mas
     at_b = np.asarray(state_b.ax, float) * nx + np.asarray(state_b.ay, float) * ny
     # load per unit length q(s) = -(m/L) a_t(s), s in [0, 1]: linear, q = q0 + (q1 - q0) s
     q0, q1 = -mass / length * at_a, -mass / length * at_b
-    s = np.linspace(0.0, 1.0, stations)[:, None] if np.ndim(q0) else np.linspace(0.0, 1.0, stations)
+    # stations on a new leading axis: (stations, K) for one design, (stations, N, K) for a population
+    s = np.linspace(0.0, 1.0, stations).reshape((stations,) + (1,) * np.ndim(q0))
     # simply supported: reaction at A, R_A = L (q0/3 + q1/6); M(s) = R_A L s - L^2 (q0 s^2/2 + (q1-q0) s^3/6)
     reaction = length * (q0 / 3.0 + q1 / 6.0)
     moment = reaction * length * s - length**2 * (q0 * s**2 / 2.0 + (q1 - q0) * s**3 / 6.0)
