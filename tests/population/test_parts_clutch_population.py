@@ -11,8 +11,8 @@ import pytest
 from machdyn.drivetrain import population as pop
 from machdyn.drivetrain.clutch import engage
 from machdyn.drivetrain.fatigue import CRITERIA, fatigue_safety
-from machdyn.drivetrain.parts import BearingSpec, LinkSpec, PinSpec, size_parts
-from machdyn.drivetrain.parts_stage import _slug
+from machdyn.drivetrain.parts import BearingSpec, LinkSpec, PinSpec, check_key, size_parts
+from machdyn.drivetrain.parts_population import parts_population
 from machdyn.errors import AssemblyError, InputError
 from machdyn.linkage import crank_angles, four_bar, kinematics, kinetostatics
 
@@ -45,7 +45,7 @@ def test_the_parts_of_random_four_bars_equal_the_single_design_checks():
     mech = four_bar(np.append(crank, 0.2), np.append(coupler, 0.15), 0.12, 0.14, masses=(1.0, 3.0, 2.0))
     phi = crank_angles(72)
     motion = kinematics(mech, phi, 60.0, on_fail="mask")
-    many = pop.parts_population(kinetostatics(mech, kinematics_result=motion), **_parts())
+    many = parts_population(kinetostatics(mech, kinematics_result=motion), **_parts())
     assert many["valid"].tolist() == [True] * n + [False]
     assert all(np.isnan(v[n]) for k, v in many.items() if k != "valid")
     with pytest.raises(AssemblyError):
@@ -53,7 +53,7 @@ def test_the_parts_of_random_four_bars_equal_the_single_design_checks():
     assert np.all(many["parts.link.coupler.fatigue_damage_over_the_required_cycles"][:n] >= 0)
     for i in range(n):
         one = size_parts(kinetostatics(mech.take_designs(i), phi, 60.0), **_parts())
-        keys = {"parts." + c.part.replace(" ", ".") + "." + _slug(c.quantity): c for c in one.checks}
+        keys = {check_key(c.part, c.quantity): c for c in one.checks}
         assert set(keys) | {"parts.utilisation.max", "valid"} == set(many)
         for key, check in keys.items():
             assert _close(many[key][i], check.value), key

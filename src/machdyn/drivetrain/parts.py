@@ -8,6 +8,7 @@ run at a fluctuating speed (``[flywheel]``) weights the cycle correctly.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -86,6 +87,12 @@ class LinkSpec:
     notch_factor: float = 1.0
     required_cycles: float | None = None
     fraction: float | None = None
+
+
+def check_key(part: str, quantity: str) -> str:
+    """The result key of a check: ``parts.<part>.<quantity>`` in lower-case words joined by ``_``
+    (``parts.pin.B.peak_shear_stress``)."""
+    return "parts." + part.replace(" ", ".") + "." + re.sub(r"[^a-z0-9]+", "_", quantity.lower()).strip("_")
 
 
 #: The names of the fatigue criteria in the checks (the Goodman one keeps its historical key).
