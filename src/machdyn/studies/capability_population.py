@@ -64,5 +64,6 @@ def _forces(problem: Any, mechanism: Any, speed: Any, acceleration: Any) -> Any:
     def column(x: Any) -> Any:  # one value per design: a column against the crank positions
         return np.asarray(x, dtype=float)[:, None] if np.ndim(x) == 1 else x
 
-    motion = kinematics(mechanism, crank_angles(problem), column(speed), column(acceleration), on_fail="mask")
+    motion = kinematics(mechanism, crank_angles(problem), column(speed), column(acceleration), on_fail="mask",
+                        engine="auto")
     return kinetostatics(mechanism, kinematics_result=motion)
