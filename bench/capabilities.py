@@ -88,7 +88,8 @@ def cams(n, n_single, repeats, rng):
 def parts(n, n_single, repeats, rng):
     from machdyn.drivetrain.parts import BearingSpec, LinkSpec, PinSpec, size_parts
     from machdyn.drivetrain.parts_population import parts_population
-    from machdyn.linkage import crank_angles, four_bar, kinematics, kinetostatics
+    from machdyn.linkage import crank_angles, four_bar, kinetostatics
+    from machdyn.studies.capability_population import population_forces
 
     specs = {"bearings": (BearingSpec("O", "ball", capacity=30e3, life=2e7),),
              "pins": (PinSpec("B", 0.012, 0.02, 2, allowable_shear=80e6),),
@@ -97,8 +98,7 @@ def parts(n, n_single, repeats, rng):
     phi = crank_angles(72)
 
     def population():
-        forces = kinetostatics(mech, kinematics_result=kinematics(mech, phi, 60.0, on_fail="mask",
-                                                                                engine="auto"))
+        forces = population_forces(mech, phi, 60.0)  # the forces of every design, as the studies get them
         return parts_population(forces, **specs)["parts.utilisation.max"]
 
     fast = _rate(population, n, repeats)

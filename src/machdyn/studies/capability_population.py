@@ -16,8 +16,11 @@ from typing import Any
 
 import numpy as np
 
+from ..errors import AssemblyError
 from ..kinds import catalogue, population_form
 from ..linkage import kinematics, kinetostatics
+from ..linkage.engines import available
+from ..linkage.fused_generator import Unsupported
 from ..problem.build import crank_angles
 from ..results.catalogue import find
 
@@ -60,10 +63,25 @@ def population_results(problem: Any, keys: Iterable[str], mechanism: Any, speed:
 
 
 def _forces(problem: Any, mechanism: Any, speed: Any, acceleration: Any) -> Any:
-    """The kinetostatics of every design over the file's crank positions, designs that do not close masked."""
     def column(x: Any) -> Any:  # one value per design: a column against the crank positions
         return np.asarray(x, dtype=float)[:, None] if np.ndim(x) == 1 else x
 
-    motion = kinematics(mechanism, crank_angles(problem), column(speed), column(acceleration), on_fail="mask",
-                        engine="auto")
-    return kinetostatics(mechanism, kinematics_result=motion)
+    return population_forces(mechanism, crank_angles(problem), column(speed), column(acceleration))
+
+
+def population_forces(mechanism: Any, phi: Any, speed: Any, acceleration: Any = 0.0) -> Any:
+    """The kinetostatics of every design of ``mechanism`` at the crank angles ``phi`` [rad]: motion and forces in
+    one compiled pass when numba is present and every design closes; else the NumPy engine, the positions where
+    a design does not close masked to NaN."""
+    try:
+        return kinetostatics(mechanism, phi, speed, acceleration, engine="fused" if available() else "numpy")
+    except Unsupported:  # a mechanism the compiled pass does not handle
+        pass
+    except AssemblyError:  # some designs do not close
+        return kinetostatics(mechanism, kinematics_result=kinematics(mechanism, phi, speed, acceleration,
+                                                                     on_fail="mask"))
+    try:
+        return kinetostatics(mechanism, phi, speed, acceleration)
+    except AssemblyError:
+        return kinetostatics(mechanism, kinematics_result=kinematics(mechanism, phi, speed, acceleration,
+                                                                     on_fail="mask"))
