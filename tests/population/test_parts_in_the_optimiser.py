@@ -90,3 +90,16 @@ def test_the_optimiser_s_parts_results_equal_each_design_s_run():
         for key in keys:
             assert abs(every[key][i] - alone.results[key]) <= 1e-12 * abs(alone.results[key]), (key, i)
         assert results["parts.utilisation.max"][i] == every["parts.utilisation.max"][i]
+
+
+def test_a_parts_table_the_designs_change_and_a_flywheel_leave_the_parts_to_each_design_s_run():
+    """Varied parts differ from design to design, and with a [flywheel] the parts take each design's real speed:
+    no population form stands in for the runs then."""
+    problem = load_problem(FILE)
+    ev = setup(problem, problem.optimise)
+    pop = ev.space.population(np.array([[1.0, 0.04], [2.0, 0.045]]))
+    args = (["parts.utilisation.max"], pop.mechanism, pop.speed, pop.acceleration, 2)
+    assert "parts.utilisation.max" in population_results(problem, *args)
+    assert population_results(problem, *args, varied=("parts.pins.0.diameter",)) == {}
+    with_flywheel = load_problem(FILE.replace("[optimise]", "[flywheel]\ndelta = 0.05\n\n[optimise]"))
+    assert population_results(with_flywheel, *args) == {}

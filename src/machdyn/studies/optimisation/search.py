@@ -18,7 +18,6 @@ from typing import Any
 import numpy as np
 
 from ...results.population import DEFAULT_MIN_TRANSMISSION_DEG
-from ..capability_population import population_results
 from ..evaluator import PopulationEvaluator
 from ..exploration.execution import announce_estimate
 from .constraints import CLOSES, violations
@@ -62,7 +61,10 @@ class Evaluator:
         """The studies' evaluator at the drive's ``speed`` and ``acceleration`` (one per design, or floats), on the
         compiled pass of the population evaluator (:mod:`machdyn.linkage.fused_population`)."""
         return PopulationEvaluator(self.phi, speed, acceleration, self.about, self.machine,
-                                   self.min_transmission_angle, engine="fused", run_design=self.run_design)
+                                   self.min_transmission_angle, engine="fused", run_design=self.run_design,
+                                   problem=self.space.problem,
+                                   varied=tuple(v.path for v in self.space.variables if v.path is not None)
+                                   + tuple(f.path for f in self.space.formulas))
 
     def design_results(self, problems, keys) -> dict[str, np.ndarray]:
         """``keys`` of each design's run (:func:`~machdyn.studies.per_design.evaluate_designs`)."""
@@ -74,16 +76,9 @@ class Evaluator:
         running each regular design through the file's stages."""
         x = np.atleast_2d(np.asarray(population, dtype=float))
         pop = self.space.population(x)
-        per_design = self.per_design_wanted
-        # the capability results a capability's population form gives for all designs at once; the rest by runs
-        at_once = population_results(self.space.problem, per_design, pop.mechanism, pop.speed, pop.acceleration,
-                                     x.shape[0], self.space.values(x[:1])) if per_design else {}
         evaluated = self.evaluator(pop.speed, pop.acceleration)(
-            pop.mechanism, self.wanted - per_design, x.shape[0], per_design - set(at_once),
+            pop.mechanism, self.wanted - self.per_design_wanted, x.shape[0], self.per_design_wanted,
             lambda i: self.space.problem_at(x[i]), pop.buildable)
-        if at_once:
-            regular = np.asarray(evaluated.get("regular", True), dtype=bool) & pop.buildable
-            evaluated |= {k: np.where(regular, v, np.nan) for k, v in at_once.items()}
         results = {k: v for k, v in evaluated.items() if v.dtype.kind in "fb"}  # the text status left out
         costs = np.stack([o.cost(results) for o in self.objectives], axis=1)
         viol = violations(self.constraints, results, pop.buildable)
