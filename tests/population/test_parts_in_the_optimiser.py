@@ -103,3 +103,20 @@ def test_a_parts_table_the_designs_change_and_a_flywheel_leave_the_parts_to_each
     assert population_results(problem, *args, varied=("parts.pins.0.diameter",)) == {}
     with_flywheel = load_problem(FILE.replace("[optimise]", "[flywheel]\ndelta = 0.05\n\n[optimise]"))
     assert population_results(with_flywheel, *args) == {}
+
+
+def test_a_sweep_s_parts_column_is_each_variant_s_run():
+    """A [sweep] of the coupler's mass with the parts' largest utilisation as a column: computed at once by the
+    population form, equal to each variant's own run."""
+    from machdyn.studies.sweep.population import run_sweep
+
+    text = FILE.split("[optimise]")[0] + (
+        '[sweep]\nparameter = "mechanism.coupler.mass"\nvalues = ["0.5 kg", "2 kg", "3 kg"]\n'
+        'columns = ["parts.utilisation.max"]\n')
+    runs: list = []
+    done = run_sweep(load_problem(text), run_design=lambda design: runs.append(design) or {})
+    assert runs == []
+    for i, mass in enumerate(("0.5 kg", "2 kg", "3 kg")):
+        alone = run_problem(FILE.split("[optimise]")[0].replace('"2 kg"', f'"{mass}"', 1))
+        want = alone.results["parts.utilisation.max"]
+        assert abs(done.columns["parts.utilisation.max"][i] - want) <= 1e-12 * want
