@@ -36,6 +36,7 @@ bench: $(BENCH_STAMP)
 	$(BIN)/python bench/cli.py
 	$(BIN)/python bench/cams.py
 	$(BIN)/python bench/walk.py
+	$(BIN)/python bench/capabilities.py
 
 lint: $(STAMP)
 	$(BIN)/ruff check src tests bench

@@ -56,6 +56,15 @@ def capability(table: str) -> Capability:
     return import_object(CAPABILITIES[table])
 
 
+def population_form(table: str) -> Any:
+    """The population form a capability declares (:attr:`~machdyn.pipeline.Capability.population`): a function
+    ``(problem, forces) -> {key: (N,) array} | None``; None for a table without one."""
+    if table not in CAPABILITIES:
+        return None
+    path = capability(table).population
+    return None if path is None else import_object(path)
+
+
 @cache
 def capabilities_for(kind_name: str) -> tuple[Capability, ...]:
     """The capabilities a kind accepts, ordered so that each runs after the tables it reads."""

@@ -117,6 +117,11 @@ class Capability:
     after : tables whose outcome this stage reads (they run first), through :meth:`StageContext.result_of`.
     result_type : the type of the stage's ``Outcome.results`` (the typed contract its readers and its report rely
         on); the runner checks it after every run. None only for a stage whose results object is None.
+    population : ``"package.module:function"``, the table's population form: ``(problem, forces) -> {key: (N,)
+        array} | None``, the stage's results for N linkage designs at once from their kinetostatics over the
+        cycle (:func:`machdyn.linkage.kinetostatics` of a mechanism of N designs), None where it cannot stand in
+        for a run of each design (the studies then run each design). Imported only by a study that asks for
+        the table's results (:func:`machdyn.kinds.population_form`).
     """
 
     table: str
@@ -130,6 +135,7 @@ class Capability:
     check_model: Callable[[Any, Any], list[tuple[str, str]]] | None = None
     after: tuple[str, ...] = ()
     result_type: type | tuple[type, ...] | None = None
+    population: str | None = None
 
 
 @dataclass(frozen=True)

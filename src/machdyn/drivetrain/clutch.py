@@ -31,6 +31,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
+from .population import engagement_arrays  # the closed forms, written once for one design and for N
 
 
 @dataclass(frozen=True)
@@ -91,15 +92,8 @@ def engage(j1: float, w1: float, j2: float, w2: float, slip_torque: float, *, dr
     if driving_torque >= slip_torque:
         raise InputError(f"The motor torque {driving_torque:g} N*m exceeds the clutch's slip torque "
                          f"{slip_torque:g} N*m: the driving side would not slow down and the slip never ends.")
-    a1 = (slip_torque - driving_torque) / j1   # deceleration of the driving side
-    a2 = (slip_torque - load_torque) / j2      # acceleration of the driven side
-    ts = (w1 - w2) / (a1 + a2)
-    w = w1 - a1 * ts
-    theta1 = w1 * ts - 0.5 * a1 * ts**2
-    theta2 = w2 * ts + 0.5 * a2 * ts**2
-    dissipated = slip_torque * (theta1 - theta2)
-    return Engagement(float(ts), float(w), float(dissipated), float(theta1), float(theta2),
-                      float(driving_torque * theta1), float(load_torque * theta2), float(a2), float(a1))
+    found = engagement_arrays(j1, w1, j2, w2, slip_torque, driving_torque, load_torque)
+    return Engagement(**{name: float(value) for name, value in found.items()})
 
 
 @dataclass(frozen=True)

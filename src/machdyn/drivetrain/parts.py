@@ -8,6 +8,7 @@ run at a fluctuating speed (``[flywheel]``) weights the cycle correctly.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -15,8 +16,9 @@ import numpy as np
 
 from ..errors import InputError
 from ..linkage import model as _model
-from .bearings import life_exponent, mean_effective_load, plain_bearing_pv, rating_life, reliability_factor
+from .bearings import life_exponent, plain_bearing_pv
 from .fatigue import amplitude_and_mean, fatigue_safety, reversed_equivalent, sn_line
+from .population import rolling_bearing_life
 from .strength import link_section_loads, pin_stresses
 
 HOUR = 3600.0
@@ -87,6 +89,13 @@ class LinkSpec:
     notch_factor: float = 1.0
     required_cycles: float | None = None
     fraction: float | None = None
+
+
+def check_key(part: str, quantity: str, figure: str = "") -> str:
+    """The result key of a check: ``parts.<kind>.<name>.<figure>`` (``parts.pin.B.peak_shear_stress``); a check
+    with no figure of the grammar (see docs/results.md) is named by its quantity in lower-case words joined by
+    ``_``."""
+    return "parts." + part.replace(" ", ".") + "." + (figure or re.sub(r"[^a-z0-9]+", "_", quantity.lower()).strip("_"))
 
 
 #: The names of the fatigue criteria in the checks (the Goodman one keeps its historical key).
@@ -219,10 +228,9 @@ def size_parts(forces: Any, *, bearings: tuple[BearingSpec, ...] = (), pins: tup
             if turned.sum() <= 0:
                 raise InputError(f"The rolling bearing at {b.joint} does not turn over the cycle; give it as a "
                                  "plain bearing or bushing.")
-            equivalent = mean_effective_load(load, turned, b.kind)
-            revs_per_hour = turned.sum() / (2 * np.pi) * HOUR / period
-            life_revs = rating_life(b.capacity, equivalent, b.kind) * reliability_factor(b.reliability) * 1e6
-            life = life_revs / revs_per_hour * HOUR  # [s]
+            # the population's formula, for one design (one formula for both)
+            lives, equivalents, _ok = rolling_bearing_life(load, turned, period, b.capacity, b.kind, b.reliability)
+            life, equivalent = float(lives[0]), float(equivalents[0])  # [s], [N]
             bearing_loads[b.joint] = (load, equivalent)
             if b.life is not None:
                 checks.append(PartCheck(f"bearing {b.joint}", f"rating life L{100 - b.reliability:g} "

@@ -35,7 +35,6 @@ A part that fails its check is a failed design check (exit 3).
 
 from __future__ import annotations
 
-import re
 from typing import Any, Literal
 
 from pydantic import Field, model_validator
@@ -60,7 +59,8 @@ from ..problem.fields import (
 from ..problem.schema import Spec
 from ..results.labels import Label
 from . import fatigue
-from .parts import BearingSpec, LinkSpec, PartsResult, PinSpec, size_parts
+from .parts import BearingSpec, LinkSpec, PartsResult, PinSpec, check_key, size_parts
+from .parts_population import parts_population
 from .strength import strength_problem
 
 
@@ -243,7 +243,7 @@ def run(ctx: StageContext) -> Outcome:
     scalars, labels = {}, {}
     worst = 0.0
     for c in done.checks:
-        key = "parts." + c.part.replace(" ", ".") + "." + (c.figure or _slug(c.quantity))
+        key = check_key(c.part, c.quantity, c.figure)
         scalars[key] = c.value
         labels[key] = Label(f"{c.part[0].upper()}{c.part[1:]}: {c.quantity}", c.unit,
                             {"s": "h", "Pa": "MPa", "Pa*m/s": "MPa*m/s"}.get(c.unit))
@@ -259,8 +259,15 @@ def run(ctx: StageContext) -> Outcome:
                    summary=(*scalars,), failed_checks=failed)
 
 
-def _slug(text: str) -> str:
-    return re.sub(r"[^a-z0-9]+", "_", text.lower()).strip("_")
+def population(problem: Any, forces: Any) -> dict[str, Any] | None:
+    """The ``[parts]`` results of N designs at once from their kinetostatics (the population form,
+    :func:`machdyn.drivetrain.parts_population.parts_population`); None with a ``[flywheel]``, whose real speed each
+    design's run finds on its own."""
+    if getattr(problem, "flywheel", None) is not None:
+        return None
+    found = parts_population(forces, **_specs(problem.parts))
+    found.pop("valid")
+    return found
 
 
 LABELS = {"parts.utilisation.max": Label("Parts: largest utilisation of any check", "")}
@@ -276,4 +283,5 @@ CAPABILITY = Capability(
     check=check,
     after=("flywheel",),
     result_type=PartsResult,
+    population="machdyn.drivetrain.parts_stage:population",
 )

@@ -24,10 +24,6 @@ import numpy as np
 
 from ..errors import InputError
 
-#: Stations along a link at which its bending moment is evaluated (the maximum of a linear-load beam lies
-#: between them; 41 stations resolve it to 0.1 % for any linear load).
-STATIONS = 41
-
 
 def pin_stresses(force: Any, diameter: float, length: float, shear_planes: int = 2) -> tuple[Any, Any]:
     """Shear stress and bearing pressure of a pin carrying ``force``.
@@ -116,20 +112,21 @@ def goodman_safety(stress_max: Any, stress_min: Any, endurance_limit: float, ult
     return n if n.ndim else float(n)
 
 
-def link_section_loads(state_a: Any, state_b: Any, force_a: tuple[Any, Any], mass: float,
-                       stations: int = STATIONS) -> tuple[Any, Any]:
+def link_section_loads(state_a: Any, state_b: Any, force_a: tuple[Any, Any], mass: Any) -> tuple[Any, Any]:
     """Axial force and the largest bending moment of a uniform two-pin link A–B over a cycle.
 
     The axial force is the end reaction at A projected on the link's axis (positive: tension, the force on the
     link at A pointing away from B); the bending moment is that of a simply supported beam of mass ``mass``
-    under its transverse inertia load −(m/L)·a_t(x), where a_t(x) varies linearly from a_t(A) to a_t(B).
+    under its transverse inertia load −(m/L)·a_t(x), where a_t(x) varies linearly from a_t(A) to a_t(B). Along
+the link (s = x/L) the moment is the cubic M(s) = s (c1 + s (c2 + s c3)), zero at both pins; its largest
+magnitude is found exactly at the roots of M'(s) = c1 + 2 c2 s + 3 c3 s² in [0, 1] (the quadratic solved in its
+cancellation-free form, W. H. Press et al., *Numerical Recipes*, 3rd ed., §5.6, eq. 5.6.4–5.6.5).
 
     Parameters
     ----------
     state_a, state_b : the global motion of the pins A and B (objects with x, y, ax, ay [m, m/s²]).
     force_a : (fx, fy) [N], the force on the link at A from the body before it.
-    mass : m [kg] of the link (uniform along A–B).
-    stations : points along the link where the moment is evaluated.
+    mass : m [kg] of the link (uniform along A–B); (N, 1) for N designs whose states are (N, K).
 
     Returns
     -------
@@ -158,10 +155,27 @@ def link_section_loads(state_a: Any, state_b: Any, force_a: tuple[Any, Any], mas
     at_b = np.asarray(state_b.ax, float) * nx + np.asarray(state_b.ay, float) * ny
     # load per unit length q(s) = -(m/L) a_t(s), s in [0, 1]: linear, q = q0 + (q1 - q0) s
     q0, q1 = -mass / length * at_a, -mass / length * at_b
-    s = np.linspace(0.0, 1.0, stations)[:, None] if np.ndim(q0) else np.linspace(0.0, 1.0, stations)
-    # simply supported: reaction at A, R_A = L (q0/3 + q1/6); M(s) = R_A L s - L^2 (q0 s^2/2 + (q1-q0) s^3/6)
-    reaction = length * (q0 / 3.0 + q1 / 6.0)
-    moment = reaction * length * s - length**2 * (q0 * s**2 / 2.0 + (q1 - q0) * s**3 / 6.0)
-    worst = np.take_along_axis(moment, np.argmax(np.abs(moment), axis=0)[None, ...], axis=0)[0] \
-        if np.ndim(moment) > 1 else moment[np.argmax(np.abs(moment))]
-    return axial, worst
+    # simply supported: reaction at A, R_A = L (q0/3 + q1/6); M(s) = R_A L s - L^2 (q0 s^2/2 + (q1-q0) s^3/6),
+    # i.e. M(s) = s (c1 + s (c2 + s c3))
+    c1 = length * length * (q0 / 3.0 + q1 / 6.0)
+    c2 = -length**2 * q0 / 2.0
+    c3 = -length**2 * (q1 - q0) / 6.0
+    # M'(s) = 0: a s^2 + b s + c with a = 3 c3, b = 2 c2, c = c1; q = -(b + sign(b) sqrt(b^2 - 4ac))/2, the roots
+    # q/a and c/q (a root outside [0, 1], or none, is clipped to an end, where M is 0 or smaller)
+    a, b = 3.0 * c3, 2.0 * c2
+    with np.errstate(invalid="ignore", divide="ignore"):
+        root = np.sqrt(np.maximum(b * b - 4.0 * a * c1, 0.0))
+        q = -0.5 * (b + np.where(b >= 0, root, -root))
+        s1, s2 = q / a, c1 / q
+
+    def moment_at(s: Any) -> Any:
+        s = np.clip(np.where(np.isfinite(s), s, 0.0), 0.0, 1.0)
+        return s * (c1 + s * (c2 + s * c3))
+
+    m1, m2 = moment_at(s1), moment_at(s2)
+    hi, lo = np.maximum(m1, m2), np.minimum(m1, m2)
+    hi, lo = np.maximum(hi, 0.0), np.minimum(lo, 0.0)  # the ends, where M = 0
+    nan = ~np.isfinite(c1 + c2 + c3)
+    hi, lo = np.where(nan, np.nan, hi), np.where(nan, np.nan, lo)
+    worst = np.where(np.abs(lo) > np.abs(hi), lo, hi)
+    return axial, (worst if worst.ndim else float(worst))

@@ -5,8 +5,10 @@ each of these N designs. The evaluator answers with one (N,) array per key, in t
 
 - vectorised — the keys a group of the population evaluator computes (the linkage's own results, the status
   checks), every design at once in one engine call (:func:`machdyn.results.population.evaluate_population`);
-- per design — the keys only a run of a design gives (a capability's: a flywheel, a drive train, the parts), each
-  regular design run whole through its file's stages (:func:`machdyn.studies.per_design.evaluate_designs`).
+- at once by a capability's population form — the keys of a table that declares one (``[parts]``), every design
+  at once from the population's kinetostatics (:mod:`machdyn.studies.capability_population`);
+- per design — the keys only a run of a design gives (a capability's: a flywheel, a drive train), each regular
+  design run whole through its file's stages (:func:`machdyn.studies.per_design.evaluate_designs`).
 
 What a study keeps of the answer is its own: a sweep its columns, an optimiser its costs and violations, an
 exploration the rows it writes partition by partition to its store
@@ -23,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG, evaluate_population
+from .capability_population import population_results
 from .per_design import RunDesign, evaluate_designs
 
 
@@ -34,7 +37,10 @@ class PopulationEvaluator:
     about : the point [m] of the shaking moments; machine : the machine the mechanism is (``[mechanism] machine``),
     which decides the machine's own results; min_transmission_angle [rad] : the threshold of a poor transmission;
     engine : the population evaluator's engine ("auto", "fused" or "numpy"); run_design : runs one design's
-    validated problem through its stages and returns its results by key (None: no per-design results).
+    validated problem through its stages and returns its results by key (None: no per-design results);
+    problem : the file's validated problem, and varied : the key paths the designs set — with them, a capability
+    result whose table declares a population form (and is not varied) is computed for all designs at once
+    (:mod:`machdyn.studies.capability_population`) instead of by a run of each design.
     """
 
     phi: Any
@@ -45,6 +51,8 @@ class PopulationEvaluator:
     min_transmission_angle: float = math.radians(DEFAULT_MIN_TRANSMISSION_DEG)
     engine: str = "auto"
     run_design: RunDesign | None = None
+    problem: Any = None
+    varied: tuple[str, ...] = ()
 
     def vectorised(self, mechanism: Any, keys: Iterable[str]) -> dict[str, np.ndarray]:
         """``keys`` and the status columns of every design of ``mechanism`` (one model, N designs), at once."""
@@ -67,6 +75,14 @@ class PopulationEvaluator:
         out = {k: np.broadcast_to(np.asarray(v), (count,)).copy()
                for k, v in self.vectorised(mechanism, keys).items()}
         wanted = list(per_design)
+        if wanted and self.problem is not None:
+            at_once = population_results(self.problem, wanted, mechanism, self.speed, self.acceleration, count,
+                                         self.varied)
+            regular = np.asarray(out.get("regular", np.ones(count, dtype=bool)), dtype=bool)
+            if buildable is not None:
+                regular = regular & buildable
+            out |= {k: np.where(regular, v, np.nan) for k, v in at_once.items()}
+            wanted = [k for k in wanted if k not in at_once]
         if wanted:
             if problem_of is None:
                 raise ValueError("per-design results need each design's problem (problem_of)")

@@ -3,3 +3,5 @@
 A front end beside the command line: nothing else in machdyn imports it, and it imports its web framework
 (Starlette, uvicorn) only when the command starts it. See docs/studio.md.
 """
+
+__all__ = ["app", "dragging", "fields", "server", "session"]

@@ -63,7 +63,10 @@ class Evaluator:
         """The studies' evaluator at the drive's ``speed`` and ``acceleration`` (one per design, or floats), on the
         compiled pass of the population evaluator (:mod:`machdyn.linkage.fused_population`)."""
         return PopulationEvaluator(self.phi, speed, acceleration, self.about, self.machine,
-                                   self.min_transmission_angle, engine="fused", run_design=self.run_design)
+                                   self.min_transmission_angle, engine="fused", run_design=self.run_design,
+                                   problem=self.space.problem,
+                                   varied=tuple(v.path for v in self.space.variables if v.path is not None)
+                                   + tuple(f.path for f in self.space.formulas))
 
     def design_results(self, problems, keys) -> dict[str, np.ndarray]:
         """``keys`` of each design's run (:func:`~machdyn.studies.per_design.evaluate_designs`)."""

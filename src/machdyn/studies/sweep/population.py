@@ -104,7 +104,7 @@ def run_sweep(problem: Any, run_design: Any = None) -> SweepRun:
     by_run = {k: u for k, u in capability_results(problem).items() if k in problem.sweep.extra_columns}
     wanted = sweep_columns(mech, machine, extra=tuple(k for k in problem.sweep.extra_columns if k not in by_run))
     evaluator = PopulationEvaluator(angles, speed, accel, about, machine, problem.sweep.transmission_limit,
-                                    run_design=run_design)
+                                    run_design=run_design, problem=problem, varied=(plan.parameter,))
     per_design = by_run if run_design is not None else {}
     columns = evaluator(mech, wanted, len(plan.problems), per_design, plan.problems.__getitem__)
     units = {k: per_design[k] if k in per_design else result_unit(k, mech) for k in columns}

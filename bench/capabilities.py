@@ -1,0 +1,198 @@
+"""Benchmark: designs per second of each capability's population form against its per-design path, in one run.
+
+For each capability, N random designs are evaluated by the population form (NumPy arrays over the designs, one
+call) and a subset of the same designs by the single-design functions one after the other; ``agreement`` is the
+largest relative difference of the compared figure over that subset (0 = identical), ``designs_per_s`` and
+``per_design_per_s`` the median over the repeats (min and max beside them).
+
+- cams: largest pressure angle of translating roller cams of one program shape with random base radius, roller,
+  offset and lift (``machdyn.cams.population.analyse_population`` against ``profile`` + ``check_cam``);
+- parts: the ``[parts]`` checks of random four-bars (a ball bearing, a pin, a link in fatigue), forces included:
+  one kinetostatics of the population + ``parts_population`` against ``kinetostatics`` + ``size_parts`` per
+  design; the figure is the largest utilisation;
+- clutch: slip time and energy of random engagements (``engage_population`` against ``engage``);
+- shaft_balance: two-plane corrections and the ISO 21940-11 grade of random shaft lines of four masses
+  (``two_plane_population`` + ``grade_population`` against ``two_plane`` + the grade check per line); the
+  figure is the mass of the correction in plane M;
+- linkage (reference): largest |driving torque| of random four-bars (the population evaluator of the studies
+  against ``kinetostatics`` per design).
+
+Usage: ``python bench/capabilities.py [--quick] [--repeats N]``. The last line printed is one JSON object
+``{"capabilities": {name: {"designs_per_s", "per_design_per_s", "agreement", ...}}}``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import statistics
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "src"))
+
+
+def _rate(fn, n, repeats):
+    """(result, designs/s min, median, max) of ``fn`` evaluating n designs, over ``repeats`` runs."""
+    rates = []
+    out = None
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        out = fn()
+        rates.append(n / (time.perf_counter() - t0))
+    return out, min(rates), statistics.median(rates), max(rates)
+
+
+def _agreement(many, one):
+    many, one = np.asarray(many, dtype=float), np.asarray(one, dtype=float)
+    return float(np.max(np.abs(many - one) / np.maximum(np.abs(one), 1e-300)))
+
+
+def _entry(n, n_single, fast, slow, agreement):
+    return {"designs_per_s": fast[2], "designs_per_s_min_max": [fast[1], fast[3]], "population": n,
+            "per_design_per_s": slow[2], "per_design_per_s_min_max": [slow[1], slow[3]],
+            "per_design_designs": n_single, "speed_ratio": fast[2] / slow[2], "agreement": agreement}
+
+
+def cams(n, n_single, repeats, rng):
+    from machdyn.cams.checks import check_cam
+    from machdyn.cams.followers import Follower
+    from machdyn.cams.population import analyse_population
+    from machdyn.cams.profile import profile
+    from machdyn.cams.program import Segment, program
+
+    def prog(lift):
+        return program([Segment("rise", math.radians(120), lift, "cycloidal"), Segment("dwell", math.radians(60)),
+                        Segment("return", math.radians(120), lift, "cycloidal"), Segment("dwell", math.radians(60))])
+
+    theta = np.arange(360) * (2 * math.pi / 360)
+    rb, rr = rng.uniform(0.03, 0.08, n), rng.uniform(0.005, 0.015, n)
+    e, k = rng.uniform(-0.01, 0.01, n), rng.uniform(0.5, 1.5, n)
+    base = prog(0.02)
+    fast = _rate(lambda: analyse_population(base, theta, rb, rr, e, k), n, repeats)
+
+    def single():
+        return [check_cam(profile(prog(0.02 * k[i]), Follower("translating", "roller", rb[i], rr[i], e[i]), theta),
+                          prog(0.02 * k[i])).max_pressure_angle for i in range(n_single)]
+
+    slow = _rate(single, n_single, repeats)
+    return _entry(n, n_single, fast, slow,
+                  _agreement(fast[0].max_pressure_angle[:n_single], np.abs(np.asarray(slow[0]))))
+
+
+def parts(n, n_single, repeats, rng):
+    from machdyn.drivetrain.parts import BearingSpec, LinkSpec, PinSpec, size_parts
+    from machdyn.drivetrain.parts_population import parts_population
+    from machdyn.linkage import crank_angles, four_bar, kinetostatics
+    from machdyn.studies.capability_population import population_forces
+
+    specs = {"bearings": (BearingSpec("O", "ball", capacity=30e3, life=2e7),),
+             "pins": (PinSpec("B", 0.012, 0.02, 2, allowable_shear=80e6),),
+             "links": (LinkSpec("coupler", 4e-4, 2e-6, 150e6, 600e6),)}
+    mech = four_bar(rng.uniform(0.03, 0.06, n), rng.uniform(0.13, 0.17, n), 0.12, 0.14, masses=(1.0, 3.0, 2.0))
+    phi = crank_angles(72)
+
+    def population():
+        forces = population_forces(mech, phi, 60.0)  # the forces of every design, as the studies get them
+        return parts_population(forces, **specs)["parts.utilisation.max"]
+
+    fast = _rate(population, n, repeats)
+
+    def single():
+        return [max(c.utilisation for c in size_parts(kinetostatics(mech.take_designs(i), phi, 60.0),
+                                                      **specs).checks) for i in range(n_single)]
+
+    slow = _rate(single, n_single, repeats)
+    return _entry(n, n_single, fast, slow, _agreement(fast[0][:n_single], slow[0]))
+
+
+def clutch(n, n_single, repeats, rng):
+    from machdyn.drivetrain.clutch import engage
+    from machdyn.drivetrain.population import engage_population
+
+    j1, j2, w1 = rng.uniform(0.5, 5.0, n), rng.uniform(0.1, 3.0, n), rng.uniform(50.0, 150.0, n)
+    tc, t1, t2 = rng.uniform(100.0, 300.0, n), rng.uniform(-50.0, 50.0, n), rng.uniform(0.0, 80.0, n)
+    fast = _rate(lambda: engage_population(j1, w1, j2, 0.0, tc, t1, t2), n, repeats)
+    slow = _rate(lambda: [engage(j1[i], w1[i], j2[i], 0.0, tc[i], driving_torque=t1[i], load_torque=t2[i])
+                          for i in range(n_single)], n_single, repeats)
+    return _entry(n, n_single, fast, slow, max(
+        _agreement(fast[0]["slip_time"][:n_single], [e.slip_time for e in slow[0]]),
+        _agreement(fast[0]["dissipated"][:n_single], [e.dissipated for e in slow[0]])))
+
+
+def shaft_balance(n, n_single, repeats, rng):
+    from machdyn.shafts.balance import Plane, equivalent_in_planes, two_plane
+    from machdyn.shafts.grades import GradeCheck, allocate, permissible_unbalance
+    from machdyn.shafts.population import grade_population, two_plane_population
+    from machdyn.shafts.rotating import Mass
+
+    shape = (n, 4)
+    m, r = rng.uniform(0.1, 5.0, shape), rng.uniform(0.01, 0.2, shape)
+    a, z = rng.uniform(0.0, 2 * np.pi, shape), rng.uniform(0.0, 1.0, shape)
+
+    def population():
+        done = two_plane_population(m, r, a, z, 0.0, 1.0, 0.1, 0.1)
+        grade_population(6.3, 100.0, 300.0, 0.5, 0.0, 1.0, m, r, a, z)
+        return done["M.mass"]
+
+    fast = _rate(population, n, repeats)
+
+    def single():
+        out = []
+        for i in range(n_single):
+            masses = [Mass(f"m{j}", m[i, j], r[i, j], a[i, j], z[i, j]) for j in range(4)]
+            done = two_plane(masses, Plane("L", 0.0, 0.1), Plane("M", 1.0, 0.1))
+            u_per = permissible_unbalance(6.3, 100.0, 300.0)
+            ua, ub = equivalent_in_planes(masses, 0.0, 1.0)
+            GradeCheck(6.3, 100.0, 300.0, u_per, allocate(u_per, 0.5, 0.0, 1.0), (abs(ua), abs(ub)), ("A", "B"))
+            out.append(done.corrections[1].mass)
+        return out
+
+    slow = _rate(single, n_single, repeats)
+    return _entry(n, n_single, fast, slow, _agreement(fast[0][:n_single], slow[0]))
+
+
+def linkage(n, n_single, repeats, rng):
+    from machdyn.linkage import crank_angles, four_bar, kinetostatics
+    from machdyn.studies import PopulationEvaluator
+
+    mech = four_bar(rng.uniform(0.03, 0.06, n), rng.uniform(0.13, 0.17, n), 0.12, 0.14, masses=(1.0, 3.0, 2.0))
+    phi = crank_angles(72)
+    evaluator = PopulationEvaluator(phi, 60.0)
+    key = "driving_torque.max_abs"
+    evaluator.vectorised(mech, [key])  # compile once
+    fast = _rate(lambda: evaluator.vectorised(mech, [key])[key], n, repeats)
+    slow = _rate(lambda: [float(np.max(np.abs(kinetostatics(mech.take_designs(i), phi, 60.0).driving_torque)))
+                          for i in range(n_single)], n_single, repeats)
+    return _entry(n, n_single, fast, slow, _agreement(fast[0][:n_single], slow[0]))
+
+
+#: capability -> (function, population size, per-design designs), full run and --quick.
+CASES = {"cams": (cams, 20_000, 20, 2_000, 5), "parts": (parts, 5_000, 100, 500, 20),
+         "clutch": (clutch, 200_000, 5_000, 20_000, 500), "shaft_balance": (shaft_balance, 100_000, 500, 10_000, 50),
+         "linkage": (linkage, 20_000, 100, 2_000, 20)}
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--repeats", type=int, default=None)
+    args = ap.parse_args()
+    repeats = args.repeats or (3 if args.quick else 5)
+    found = {}
+    for name, (fn, n, n_single, n_quick, n_single_quick) in CASES.items():
+        rng = np.random.default_rng(1)
+        found[name] = fn(n_quick if args.quick else n, n_single_quick if args.quick else n_single, repeats, rng)
+        e = found[name]
+        print(f"{name:14s} {e['designs_per_s']:12.4g} designs/s  per design {e['per_design_per_s']:10.4g}/s  "  # noqa: T201
+              f"x{e['speed_ratio']:.4g}  agreement {e['agreement']:.2g}", flush=True)
+    print(json.dumps({"capabilities": found}))  # noqa: T201
+
+
+if __name__ == "__main__":
+    main()
