@@ -109,6 +109,10 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
     if result is None:  # the task gave no linkage at all: say why
         why = "; ".join(outcome.failed_checks) or "no candidate"
         return [("Synthesis", f"<p>No linkage was found: {escape(why)}</p>")]
+    if result.task in ("slotted_lever", "whitworth"):
+        from .slotted_lever import sections as slotted_sections
+
+        return slotted_sections(result)
     first = plot_function if result.task == "function" else plot_candidates
 
     def draw(fig: Any) -> None:
