@@ -7,6 +7,7 @@ from typing import Any
 
 import numpy as np
 
+from ..linkage import kinematics
 from .html import _render, figures_html, format_value, rows_html
 from .plotkit import PALETTE, _finish
 
@@ -15,8 +16,6 @@ SHOWN = 4
 
 def plot_ram(ax: Any, result: Any) -> Any:
     """The ram's position over a turn of the crank for the best designs, from the engine's kinematics."""
-    from ..linkage import kinematics
-
     phi = np.linspace(0.0, 2.0 * np.pi, 361)
     for k, (d, m) in enumerate(zip(result.designs[:SHOWN], result.measured[:SHOWN], strict=False)):
         y = np.asarray(kinematics(d.mechanism(), phi, 1.0).point("ram.R").y, dtype=float)

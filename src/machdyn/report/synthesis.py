@@ -12,6 +12,7 @@ from ..synthesis.rank import QUANTITIES
 from ..synthesis.task import shifted_error
 from .html import _render, figures_html, format_value, rows_html
 from .plotkit import PALETTE, _finish
+from .slotted_lever import sections as slotted_sections
 
 SHOWN = 4
 
@@ -111,8 +112,6 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
         why = "; ".join(outcome.failed_checks) or "no candidate"
         return [("Synthesis", f"<p>No linkage was found: {escape(why)}</p>")]
     if result.task in ("slotted_lever", "whitworth"):
-        from .slotted_lever import sections as slotted_sections
-
         return slotted_sections(result)
     first = plot_function if result.task == "function" else plot_candidates
 

@@ -20,6 +20,7 @@ from ..results.labels import Label
 from .files import problem_text
 from .rank import QUANTITIES
 from .schema import SynthesisProblem, problems
+from .slotted_task import outcome as slotted_outcome
 from .task import synthesise
 
 LABELS: dict[str, Label] = {
@@ -48,9 +49,7 @@ def analyse(problem: Any, _model: Any, step: Step) -> Outcome:
     step("synthesis")
     spec = problem.synthesis
     if spec.task in ("slotted_lever", "whitworth"):
-        from .slotted_task import outcome
-
-        return outcome(spec)
+        return slotted_outcome(spec)
     try:
         result = synthesise(spec)
     except InputError as exc:  # a valid task without a linkage: a failed design, not bad input

@@ -35,6 +35,7 @@ from pydantic import Field, field_validator
 
 from ..problem.fields import Angle, AngularVelocity, FieldError, Force, Length, LinearDensity, PositiveLength, Torque
 from ..problem.schema import Meta, Spec
+from .slotted_task import problems as slotted_problems
 
 TASKS = ("function", "quick_return", "slider_quick_return", "motion", "path", "slotted_lever", "whitworth")
 #: Functions a function-generation task may name: y = f(x).
@@ -110,8 +111,6 @@ def problems(spec: SynthesisSpec) -> list[tuple[str, str]]:
     """The task's rules its schema cannot say: which fields it needs and how many positions or points."""
     out: list[tuple[str, str]] = []
     if spec.task in ("slotted_lever", "whitworth"):
-        from .slotted_task import problems as slotted_problems
-
         return slotted_problems(spec)
     need = {
         "function": ("function", "x_range", "input_range", "output_range"),

@@ -41,6 +41,8 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
+from ..linkage import RRP, Body, Guide, Mechanism, inverted_slider_crank, kinematics
+from ..linkage.builders import _bar
 
 KINDS = ("slotted_lever", "whitworth")
 
@@ -138,9 +140,6 @@ class SlottedLever:
         pivot C at (d, 0), the lever's end ``rocker.E`` at l) with a rod from E to the ram, which slides on a line
         at right angles to O-C at x = d - ``guide`` (ram point ``ram.R``; uniform bars of ``linear_density``
         [kg/m], the ram ``ram_mass`` [kg], default the rod's mass)."""
-        from ..linkage import RRP, Body, Guide, Mechanism, inverted_slider_crank
-        from ..linkage.builders import _bar
-
         # The lever points from C through the pin: for the slotted lever the pin is between C and O, and the
         # lever's end lies beyond O; the ram's guide points along +y.
         base = inverted_slider_crank(self.crank, self.centre_distance, rocker_length=self.lever,
@@ -240,8 +239,6 @@ def measure(design: SlottedLever, samples: int = 720) -> Measured:
     engine's velocity, the stroke the difference of the engine's ram positions there. Independent of the
     closed forms (it uses neither beta nor r / d)."""
     from scipy.optimize import brentq
-
-    from ..linkage import kinematics
 
     mech = design.mechanism()
     phi = np.linspace(0.0, 2.0 * np.pi, samples, endpoint=False)

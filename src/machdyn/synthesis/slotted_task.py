@@ -17,6 +17,8 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
+from ..pipeline import Outcome
+from ..results.labels import Label
 from .slotted_lever import Measured, SlottedLever, candidates, measure
 
 
@@ -92,9 +94,6 @@ LABELS = {
 def outcome(spec: Any) -> Any:
     """The run's :class:`~machdyn.pipeline.Outcome` of a slotted-lever task: the best design's dimensions and
     measured time ratio and stroke, every candidate as ``synthesis_candidates.csv``."""
-    from ..pipeline import Outcome
-    from ..results.labels import Label
-
     result = synthesise_slotted(spec)
     best, m = result.best, result.measured[0]
     scalars: dict[str, Any] = {"synthesis.candidates": float(len(result.designs)),
