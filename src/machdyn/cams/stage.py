@@ -113,7 +113,8 @@ def _segments(problem: CamProblem, problems: list[tuple[str, str]]):
         if s.motion != "dwell" and lift is None:
             problems.append((f"{path}.{need}", f"a {s.motion} needs its {need}"))
             lift = 0.0
-        out.append(Segment(s.motion, float(s.angle), float(lift or 0.0), s.law, s.start))
+        out.append(Segment(s.motion, float(s.angle), float(lift or 0.0), s.law, s.start,
+                           tuple((float(x), float(y)) for x, y in s.points)))
     return out
 
 
