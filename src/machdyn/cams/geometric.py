@@ -124,3 +124,47 @@ def tangent_roller(base: float, nose: float, lift: float, roller: float, theta, 
     nose_a = -d * (np.cos(tn) + (big * big * d * np.cos(2 * tn) + d**3 * np.sin(tn) ** 4) / root**3)
     a = omega**2 * np.where(on_flank, rb * (2.0 - c * c) / c**3, nose_a)
     return ContourMotion(t, x, v, a, alpha, phi)
+
+
+def contour_law(kind: str, base: float, nose: float, lift: float, size: float, motion: str = "rise"):
+    """The normalised law (y, y', y'', y''') over x in [0, 1] of a contour's rise (``motion`` "rise") or return
+    ("return": the rise run backwards, y(x) = 1 - Y(1 - x)) [-]; ``kind`` "circular_arc" (``size`` the flank
+    radius [m]) or "tangent" (``size`` the roller radius [m]). The segment lasts alpha (:func:`rise_angle`). The
+    jerk is exact on the circular arc's parts and a central difference of the acceleration (step 1e-6 of the
+    rise) on the tangent cam's nose."""
+    make = circular_arc_flat if kind == "circular_arc" else tangent_roller
+    alpha = make(base, nose, lift, size, [0.0]).alpha
+
+    def rise(x: np.ndarray):
+        t = np.clip(np.asarray(x, dtype=float), 0.0, 1.0) * alpha
+        m = make(base, nose, lift, size, t)
+        if kind == "circular_arc":
+            d = base + lift - nose
+            jerk = np.where(t <= m.phi, -(size - base) * np.sin(t), -d * np.sin(alpha - t))
+        else:
+            h = 1e-6 * alpha
+            up = make(base, nose, lift, size, np.clip(t + h, 0.0, alpha)).a
+            down = make(base, nose, lift, size, np.clip(t - h, 0.0, alpha)).a
+            jerk = (up - down) / (np.clip(t + h, 0.0, alpha) - np.clip(t - h, 0.0, alpha))
+        return m.x / lift, m.v * alpha / lift, m.a * alpha**2 / lift, jerk * alpha**3 / lift
+
+    if motion == "rise":
+        return rise
+
+    def back(x: np.ndarray):
+        y, y1, y2, y3 = rise(1.0 - np.clip(np.asarray(x, dtype=float), 0.0, 1.0))
+        return 1.0 - y, y1, -y2, y3
+
+    return back
+
+
+def rise_angle(kind: str, base: float, nose: float, lift: float, size: float) -> float:
+    """alpha [rad]: the cam angle of a contour's rise (module docstring)."""
+    make = circular_arc_flat if kind == "circular_arc" else tangent_roller
+    return make(base, nose, lift, size, [0.0]).alpha
+
+
+def contour_phi(kind: str, base: float, nose: float, lift: float, size: float) -> float:
+    """phi [rad]: the cam angle from the start of a contour's rise where contact passes from flank to nose."""
+    make = circular_arc_flat if kind == "circular_arc" else tangent_roller
+    return make(base, nose, lift, size, [0.0]).phi

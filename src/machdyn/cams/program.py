@@ -19,8 +19,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from .geometric import contour_law, contour_phi, rise_angle
 from .laws import LAWS, normalised
 from .table_law import check_points, table_law
+
+#: Laws that follow from the cam's contour (:mod:`~machdyn.cams.geometric`).
+CONTOURS = ("circular_arc", "tangent")
 
 TWO_PI = 2.0 * np.pi
 MOTIONS = ("rise", "return", "dwell")
@@ -45,11 +49,15 @@ class Segment:
     law: str = "cycloidal"
     start: float | None = None
     points: tuple[tuple[float, float], ...] = ()
+    contour: tuple[float, ...] = ()  # a contour law's (base, nose, flank or roller radius) [m]
 
     def normalised(self, x) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """The normalised law's value and first three derivatives at x in [0, 1] (clipped)."""
         if self.law == "table":
             return table_law(self.points)(np.clip(np.asarray(x, dtype=float), 0.0, 1.0))
+        if self.law in CONTOURS:
+            base, nose, size = self.contour
+            return contour_law(self.law, base, nose, self.lift, size, self.motion)(x)
         return normalised(self.law, x)
 
 
@@ -159,8 +167,19 @@ def program(segments, field: str = "cam.segments", tolerance: float = 1e-9) -> P
         name = f"{field}[{i}]"
         if seg.motion not in MOTIONS:
             raise InputError(f"{name}.motion must be one of {', '.join(MOTIONS)}; got {seg.motion!r}.")
-        if seg.motion != "dwell" and seg.law not in LAWS and seg.law != "table":
-            raise InputError(f"{name}.law must be one of {', '.join(LAWS)}, table; got {seg.law!r}.")
+        if seg.motion != "dwell" and seg.law not in LAWS and seg.law not in ("table", *CONTOURS):
+            raise InputError(f"{name}.law must be one of {', '.join((*LAWS, 'table', *CONTOURS))}; got {seg.law!r}.")
+        if seg.motion != "dwell" and seg.law in CONTOURS:
+            if len(seg.contour) != 3:
+                raise InputError(f"{name}: a {seg.law} law needs the cam's base radius, its nose radius and its "
+                                 "flank (circular arc) or roller (tangent) radius.")
+            try:
+                want = rise_angle(seg.law, seg.contour[0], seg.contour[1], seg.lift, seg.contour[2])
+            except InputError as exc:
+                raise InputError(f"{name}: {exc}") from None
+            if abs(seg.duration - want) > 1e-9:
+                raise InputError(f"{name}.angle of a {seg.law.replace('_', '-')} cam follows from its shape: "
+                                 f"{np.degrees(want):.10g} deg; got {np.degrees(seg.duration):.10g} deg.")
         if seg.motion != "dwell" and seg.law == "table":
             check_points(seg.points, f"{name}.points")
         elif seg.points:
@@ -211,5 +230,14 @@ def program(segments, field: str = "cam.segments", tolerance: float = 1e-9) -> P
             sign = 1.0 if seg.motion == "rise" else -1.0
             a = 4.0 * sign * seg.lift / seg.duration**2
             jumps.append(Jump("acceleration", starts[k] + seg.duration / 2.0, a, -a, (k, k)))
+    # and the contour cams' passing from flank to nose, where the acceleration changes sign
+    for k, seg in enumerate(segs):
+        if seg.motion != "dwell" and seg.law in CONTOURS:
+            phi = contour_phi(seg.law, seg.contour[0], seg.contour[1], seg.lift, seg.contour[2])
+            x = phi / seg.duration if seg.motion == "rise" else 1.0 - phi / seg.duration
+            sign = 1.0 if seg.motion == "rise" else -1.0
+            before = sign * seg.lift * float(seg.normalised(x - 1e-12)[2]) / seg.duration**2
+            after = sign * seg.lift * float(seg.normalised(x + 1e-12)[2]) / seg.duration**2
+            jumps.append(Jump("acceleration", starts[k] + x * seg.duration, before, after, (k, k)))
     jumps.sort(key=lambda j: j.angle)
     return Program(segs, tuple(starts), tuple(levels), tuple(jumps))
