@@ -24,6 +24,7 @@ KINDS: dict[str, str] = {
     "cam": "machdyn.cams.stage:KIND",
     "shaft_line": "machdyn.shafts.kind:KIND",
     "synthesis": "machdyn.synthesis.kind:KIND",
+    "hoist": "machdyn.drivetrain.hoist_kind:KIND",
     "signals": "machdyn.vibration.records:KIND",  # records alone; beside a machine, [signals] is a capability
 }
 

@@ -29,8 +29,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .followers import Follower, follower_path
-from .laws import law
-from .program import Program
+from .geometric import contour_phi
+from .program import CONTOURS, Program
 
 #: Samples per smooth piece of a segment before the bounded search refines the best.
 GRID = 65
@@ -69,6 +69,9 @@ def _pieces(prog: Program) -> list[tuple[int, float, float]]:
     out = []
     for k, seg in enumerate(prog.segments):
         cuts = (0.0, *BREAKS.get(seg.law, ()), 1.0) if seg.motion != "dwell" else (0.0, 1.0)
+        if seg.motion != "dwell" and seg.law in CONTOURS:  # the contact passes from flank to nose
+            x = contour_phi(seg.law, seg.contour[0], seg.contour[1], seg.lift, seg.contour[2]) / seg.duration
+            cuts = (0.0, x if seg.motion == "rise" else 1.0 - x, 1.0)
         out += [(k, a, b) for a, b in zip(cuts[:-1], cuts[1:], strict=True)]
     return out
 
@@ -80,7 +83,7 @@ def _motion(prog: Program, k: int, x: np.ndarray) -> tuple[np.ndarray, np.ndarra
     if seg.motion == "dwell":
         zero = np.zeros_like(x)
         return theta, zero + level, zero, zero
-    y, y1, y2, _ = law(seg.law)(x)
+    y, y1, y2, _ = seg.normalised(x)  # the law's closed form (a spline for a table, the contour's for a shape)
     sign = 1.0 if seg.motion == "rise" else -1.0
     b, h = seg.duration, seg.lift
     return theta, level + sign * h * y, sign * h * y1 / b, sign * h * y2 / b**2

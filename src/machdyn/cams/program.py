@@ -19,7 +19,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from .geometric import contour_law, contour_phi, rise_angle
 from .laws import LAWS, normalised
+from .table_law import check_points, table_law
+
+#: Laws that follow from the cam's contour (:mod:`~machdyn.cams.geometric`).
+CONTOURS = ("circular_arc", "tangent")
 
 TWO_PI = 2.0 * np.pi
 MOTIONS = ("rise", "return", "dwell")
@@ -36,8 +41,10 @@ class Segment:
     motion : "rise", "return" or "dwell".
     duration : cam angle it lasts [rad], > 0.
     lift : rise or fall [m] (translating) or [rad] (oscillating), > 0 for a rise or return, 0 for a dwell.
-    law : the motion law of a rise or return (a name of :data:`~machdyn.cams.laws.LAWS`).
+    law : the motion law of a rise or return (a name of :data:`~machdyn.cams.laws.LAWS`, or "table").
     start : cam angle where it starts [rad]; None: where the previous one ends (0 for the first).
+    points : the "table" law's interior points (fraction of the angle, fraction of the lift)
+        (:mod:`~machdyn.cams.table_law`).
     """
 
     motion: str
@@ -45,6 +52,17 @@ class Segment:
     lift: float = 0.0
     law: str = "cycloidal"
     start: float | None = None
+    points: tuple[tuple[float, float], ...] = ()
+    contour: tuple[float, ...] = ()  # a contour law's (base, nose, flank or roller radius) [m]
+
+    def normalised(self, x) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """The normalised law's value and first three derivatives at x in [0, 1] (clipped)."""
+        if self.law == "table":
+            return table_law(self.points)(np.clip(np.asarray(x, dtype=float), 0.0, 1.0))
+        if self.law in CONTOURS:
+            base, nose, size = self.contour
+            return contour_law(self.law, base, nose, self.lift, size, self.motion)(x)
+        return normalised(self.law, x)
 
 
 @dataclass(frozen=True)
@@ -116,7 +134,7 @@ class Program:
             if seg.motion == "dwell":
                 s = np.where(inside, level, s)
                 continue
-            y, y1, y2, y3 = normalised(seg.law, (t - t0) / seg.duration)
+            y, y1, y2, y3 = seg.normalised((t - t0) / seg.duration)
             sign = 1.0 if seg.motion == "rise" else -1.0
             b, h = seg.duration, seg.lift
             s = np.where(inside, level + sign * h * y, s)
@@ -136,8 +154,8 @@ def _ends(seg: Segment) -> tuple[float, float, float, float]:
         return 0.0, 0.0, 0.0, 0.0
     sign = 1.0 if seg.motion == "rise" else -1.0
     b, h = seg.duration, seg.lift
-    _, v0, a0, _ = normalised(seg.law, 0.0)
-    _, v1, a1, _ = normalised(seg.law, 1.0)
+    _, v0, a0, _ = seg.normalised(0.0)
+    _, v1, a1, _ = seg.normalised(1.0)
     return (sign * h * float(v0) / b, sign * h * float(a0) / b**2, sign * h * float(v1) / b,
             sign * h * float(a1) / b**2)
 
@@ -160,8 +178,24 @@ def program(segments, field: str = "cam.segments", tolerance: float = 1e-9) -> P
         name = f"{field}[{i}]"
         if seg.motion not in MOTIONS:
             raise InputError(f"{name}.motion must be one of {', '.join(MOTIONS)}; got {seg.motion!r}.")
-        if seg.motion != "dwell" and seg.law not in LAWS:
-            raise InputError(f"{name}.law must be one of {', '.join(LAWS)}; got {seg.law!r}.")
+        if seg.motion != "dwell" and seg.law not in LAWS and seg.law not in ("table", *CONTOURS):
+            raise InputError(f"{name}.law must be one of {', '.join((*LAWS, 'table', *CONTOURS))}; got {seg.law!r}.")
+        if seg.motion != "dwell" and seg.law in CONTOURS:
+            if len(seg.contour) != 3:
+                raise InputError(f"{name}: a {seg.law} law needs the cam's base radius, its nose radius and its "
+                                 "flank (circular arc) or roller (tangent) radius.")
+            try:
+                want = rise_angle(seg.law, seg.contour[0], seg.contour[1], seg.lift, seg.contour[2])
+            except InputError as exc:
+                raise InputError(f"{name}: {exc}") from None
+            if abs(seg.duration - want) > 1e-9:
+                raise InputError(f"{name}.angle of a {seg.law.replace('_', '-')} cam follows from its shape: "
+                                 f"{np.degrees(want):.10g} deg; got {np.degrees(seg.duration):.10g} deg.")
+        if seg.motion != "dwell" and seg.law == "table":
+            check_points(seg.points, f"{name}.points")
+        elif seg.points:
+            raise InputError(f"{name}.points belong to the 'table' law only; the segment's law is "
+                             f"{'a dwell' if seg.motion == 'dwell' else repr(seg.law)}.")
         if not np.isfinite(seg.duration) or seg.duration <= 0:
             raise InputError(f"{name}.angle must be > 0 deg; got {np.degrees(seg.duration):g} deg.")
         if seg.duration < MIN_SEGMENT_ANGLE:
@@ -210,5 +244,14 @@ def program(segments, field: str = "cam.segments", tolerance: float = 1e-9) -> P
             sign = 1.0 if seg.motion == "rise" else -1.0
             a = 4.0 * sign * seg.lift / seg.duration**2
             jumps.append(Jump("acceleration", starts[k] + seg.duration / 2.0, a, -a, (k, k)))
+    # and the contour cams' passing from flank to nose, where the acceleration changes sign
+    for k, seg in enumerate(segs):
+        if seg.motion != "dwell" and seg.law in CONTOURS:
+            phi = contour_phi(seg.law, seg.contour[0], seg.contour[1], seg.lift, seg.contour[2])
+            x = phi / seg.duration if seg.motion == "rise" else 1.0 - phi / seg.duration
+            sign = 1.0 if seg.motion == "rise" else -1.0
+            before = sign * seg.lift * float(seg.normalised(x - 1e-12)[2]) / seg.duration**2
+            after = sign * seg.lift * float(seg.normalised(x + 1e-12)[2]) / seg.duration**2
+            jumps.append(Jump("acceleration", starts[k] + x * seg.duration, before, after, (k, k)))
     jumps.sort(key=lambda j: j.angle)
     return Program(segs, tuple(starts), tuple(levels), tuple(jumps))

@@ -77,8 +77,13 @@ class SegmentSpec(Spec):
     lift: NonNegativeLength | None = None
     swing: Angle | None = None
     law: Literal["uniform", "parabolic", "harmonic", "cycloidal", "poly345", "poly4567", "modified_trapezoid",
-                 "modified_sine"] = "cycloidal"
+                 "modified_sine", "table", "circular_arc", "tangent"] = "cycloidal"
     start: Angle | None = None
+    # the "table" law: interior points [fraction of the angle, fraction of the lift] (cams/table_law.py)
+    points: list[tuple[float, float]] = []
+    # contour laws (cams/geometric.py): the nose radius, and the circular arc's flank radius
+    nose_radius: PositiveLength | None = None
+    flank_radius: PositiveLength | None = None
 
 
 class ChecksSpec(Spec):

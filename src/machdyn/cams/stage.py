@@ -116,8 +116,33 @@ def _segments(problem: CamProblem, problems: list[tuple[str, str]]):
         if s.motion != "dwell" and lift is None:
             problems.append((f"{path}.{need}", f"a {s.motion} needs its {need}"))
             lift = 0.0
-        out.append(Segment(s.motion, float(s.angle), float(lift or 0.0), s.law, s.start))
+        out.append(Segment(s.motion, float(s.angle), float(lift or 0.0), s.law, s.start,
+                           tuple((float(x), float(y)) for x, y in s.points), _contour(problem, s, path, problems)))
     return out
+
+
+def _contour(problem: CamProblem, s: Any, path: str, problems: list[tuple[str, str]]) -> tuple[float, ...]:
+    """(base, nose, flank or roller) [m] of a contour law, its follower checked (a circular arc drives a flat
+    face, a tangent cam a roller, both translating on a line through the cam's centre)."""
+    if s.law not in ("circular_arc", "tangent") or s.motion == "dwell":
+        for name in ("nose_radius", "flank_radius"):
+            if getattr(s, name) is not None:
+                problems.append((f"{path}.{name}", "belongs to the contour laws circular_arc and tangent only"))
+        return ()
+    f = problem.cam.follower
+    want = "flat" if s.law == "circular_arc" else "roller"
+    if f.contact != want or f.motion != "translating" or f.offset != 0.0:
+        problems.append((f"{path}.law", f"a {s.law.replace('_', '-')} cam drives a translating {want} follower on "
+                                        f"a line through the cam's centre; the follower is {f.motion}, "
+                                        f"{f.contact}, offset {f.offset * 1e3:g} mm"))
+    if s.nose_radius is None:
+        problems.append((f"{path}.nose_radius", f"a {s.law.replace('_', '-')} cam needs its nose radius"))
+    if s.law == "circular_arc" and s.flank_radius is None:
+        problems.append((f"{path}.flank_radius", "a circular-arc cam needs its flank radius"))
+    if s.law == "tangent" and s.flank_radius is not None:
+        problems.append((f"{path}.flank_radius", "a tangent cam's flanks are straight: remove flank_radius"))
+    size = s.flank_radius if s.law == "circular_arc" else f.roller_radius
+    return (float(problem.cam.base_radius), float(s.nose_radius or 0.0), float(size or 0.0))
 
 
 def _field(message: str, default: str) -> str:

@@ -8,10 +8,11 @@ from typing import Any
 
 import numpy as np
 
-from ..synthesis.function import output_error
 from ..synthesis.rank import QUANTITIES
+from ..synthesis.task import shifted_error
 from .html import _render, figures_html, format_value, rows_html
 from .plotkit import PALETTE, _finish
+from .slotted_lever import sections as slotted_sections
 
 SHOWN = 4
 
@@ -71,12 +72,13 @@ def plot_candidates(ax: Any, result: Any) -> Any:
 def plot_function(ax: Any, result: Any) -> Any:
     """Function generation: the wanted output angle and each shown candidate's over the input range."""
     t2, t4 = result.curve["theta2"], result.curve["theta4"]
-    ax.plot(np.degrees(t2), np.degrees(t4), "k-", linewidth=2.5, alpha=0.35, label="wanted")
+    ax.plot(np.degrees(t2 - t2[0]), np.degrees(t4 - t4[0]), "k-", linewidth=2.5, alpha=0.35, label="wanted")
     for k, c in enumerate(result.candidates[:SHOWN]):
-        e = output_error(c, t2, t4)
-        ax.plot(np.degrees(t2), np.degrees(t4 + e), color=PALETTE[k % len(PALETTE)], label=f"#{k + 1}")
-    ax.set_xlabel("input (crank) angle [deg]")
-    ax.set_ylabel("output (rocker) angle [deg]")
+        e = shifted_error(c, t2, t4)
+        ax.plot(np.degrees(t2 - t2[0]), np.degrees(t4 - t4[0] + e), color=PALETTE[k % len(PALETTE)],
+                label=f"#{k + 1}")
+    ax.set_xlabel("input (crank) turn from the range's start [deg]")
+    ax.set_ylabel("output (rocker) turn from the range's start [deg]")
     return _finish(ax, "Generated function")
 
 
@@ -109,6 +111,8 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
     if result is None:  # the task gave no linkage at all: say why
         why = "; ".join(outcome.failed_checks) or "no candidate"
         return [("Synthesis", f"<p>No linkage was found: {escape(why)}</p>")]
+    if result.task in ("slotted_lever", "whitworth"):
+        return slotted_sections(result)
     first = plot_function if result.task == "function" else plot_candidates
 
     def draw(fig: Any) -> None:
@@ -120,8 +124,11 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
                        "coupler point's path (solid over the working range, dotted a full turn) over the task's "
                        "targets. Right: every candidate's ranking quantity against its kinematic error.",
                        (10.0, 4.4), draw, margins=(0.75, 0.3, 0.6, 0.45), wspace=0.35)]
+    function = result.task == "function"
     head = ["#", "method", "links [mm]", "crank pivot", f"{QUANTITIES[result.ranked_by][0]}", "worst μ [deg]",
-            "error", "defects"]
+            "error [deg]" if function or result.task == "quick_return" else "error [m]", "defects"]
+    if function:
+        head[3:3] = ["K1, K2, K3", "ranges turned by [deg]"]
     rows = []
     for k, (c, r) in enumerate(zip(result.candidates[:10], result.reports[:10], strict=False)):
         v = result.values[result.ranked_by][k]
@@ -131,7 +138,12 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
                      f"({format_value(1e3 * c.origin.real)}, {format_value(1e3 * c.origin.imag)}) mm",
                      f"{format_value(np.degrees(v) if unit == 'rad' else v)} {'deg' if unit == 'rad' else unit}",
                      format_value(np.degrees(result.values['min_transmission'][k])),
-                     format_value(result.values["error"][k]), "; ".join(r.defects) or "none"])
+                     format_value(np.degrees(result.values["error"][k]) if head[-2] == "error [deg]"
+                                  else result.values["error"][k]), "; ".join(r.defects) or "none"])
+        if function:
+            rows[-1][3:3] = [", ".join(format_value(c.free[n]) for n in ("K1", "K2", "K3")),
+                             f"{format_value(np.degrees(c.free.get('input_shift', 0.0)))}, "
+                             f"{format_value(np.degrees(c.free.get('output_shift', 0.0)))}"]
     intro = (f"<p>{len(result.candidates)} candidates of the task '{result.task}', {result.defect_free} free of "
              f"defects, ranked by {QUANTITIES[result.ranked_by][0].lower()} (defect-free first) at "
              f"{format_value(result.drive.speed * 30 / np.pi)} rpm. The best are written as problem files "

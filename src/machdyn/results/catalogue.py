@@ -287,6 +287,8 @@ RUN_TIME: tuple[Quantity, ...] = (
     Quantity("rotary_screen.<figure>.<source>", "Rotary screen: {figure} ({source})", producer="rotary_screen"),
     Quantity("synthesis.best.<figure>", "Synthesis: best candidate, {figure}", producer="synthesis"),
     *SHAFT_LINE,
+    Quantity("hoist.<drum>.cage_acceleration", "Hoist: {drum}, cage acceleration (up)", "m/s^2", producer="hoist"),
+    Quantity("hoist.<drum>.rope_tension", "Hoist: {drum}, rope tension at the cage", "N", producer="hoist"),
     Quantity("shaft.balance.<plane>.<figure*>", "Shaft line: balance in plane {plane}, {figure}",
              producer="shaft_line"),
     Quantity("shaft.records.<what>.<figure*>", "Shaft line: from the records, {what}, {figure}",

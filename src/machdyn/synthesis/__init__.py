@@ -5,7 +5,9 @@ Tasks (each returns :class:`~machdyn.synthesis.candidate.Candidate` linkages in 
 - function generation: :func:`~.function.freudenstein` (three precision points, Chebyshev spacing offered) and
   :func:`~.function.freudenstein_least_squares` (many points);
 - quick return: :func:`~.quick_return.crank_rocker` (a rocker swing and a time ratio) and
-  :func:`~.quick_return.slider_crank` (a stroke and a time ratio), in closed form;
+  :func:`~.quick_return.slider_crank` (a stroke and a time ratio), in closed form; the crank-and-slotted-lever
+  and the Whitworth quick return from a time ratio and a stroke (:mod:`~.slotted_lever`, closed form, measured
+  by the engine);
 - motion generation: :func:`~.dyads.dyad_positions` (two and three positions, the standard dyad form with its
   free choices), :mod:`~.burmester` (four and five positions, circle-point and centre-point curves) and
   :func:`~.motion.motion_candidates` (dyads paired into four-bars);

@@ -20,6 +20,7 @@ from ..results.labels import Label
 from .files import problem_text
 from .rank import QUANTITIES
 from .schema import SynthesisProblem, problems
+from .slotted_task import outcome as slotted_outcome
 from .task import synthesise
 
 LABELS: dict[str, Label] = {
@@ -47,6 +48,8 @@ def check(problem: Any, _model: Any) -> list[str]:
 def analyse(problem: Any, _model: Any, step: Step) -> Outcome:
     step("synthesis")
     spec = problem.synthesis
+    if spec.task in ("slotted_lever", "whitworth"):
+        return slotted_outcome(spec)
     try:
         result = synthesise(spec)
     except InputError as exc:  # a valid task without a linkage: a failed design, not bad input
@@ -65,10 +68,21 @@ def analyse(problem: Any, _model: Any, step: Step) -> Outcome:
     labels = {"synthesis.best.error": Label(
         "Best: largest output-angle error over the range" if spec.task == "function"
         else "Best: kinematic error at the positions",
-        "m" if spec.task in ("motion", "path", "slider_quick_return") else "rad")}
+        "m" if spec.task in ("motion", "path", "slider_quick_return") else "rad",
+        "deg" if spec.task in ("function", "quick_return") else None)}
+    if spec.task == "function":  # the best's Freudenstein constants and where its ranges were placed
+        for name in ("K1", "K2", "K3"):
+            scalars[f"synthesis.best.{name}"] = float(best.free[name])
+            labels[f"synthesis.best.{name}"] = Label(f"Best: Freudenstein constant {name}")
+        for name in ("input_shift", "output_shift"):
+            scalars[f"synthesis.best.{name}"] = float(best.free.get(name, 0.0))
+            labels[f"synthesis.best.{name}"] = Label(
+                f"Best: {name.split('_')[0]} range turned from the file's by", "rad", "deg")
     summary = [k for k in ("synthesis.candidates", "synthesis.defect_free", "synthesis.best.crank",
                            "synthesis.best.coupler", "synthesis.best.rocker", "synthesis.best.ground",
                            "synthesis.best.offset", "synthesis.best.error", f"synthesis.best.{result.ranked_by}",
+                           "synthesis.best.K1", "synthesis.best.K2", "synthesis.best.K3",
+                           "synthesis.best.input_shift", "synthesis.best.output_shift",
                            "synthesis.best.min_transmission") if k in scalars]
     files = {}
     written = 0
@@ -107,6 +121,11 @@ def _series(result: Any) -> dict[str, tuple[Any, str]]:
     cols["position_error"] = (np.array([r.position_error for r in result.reports], dtype=float), "m")
     cols["angle_error"] = (np.array([r.angle_error for r in result.reports], dtype=float), "rad")
     cols["defect_count"] = (np.array([len(r.defects) for r in result.reports]), "")
+    if result.task == "function":
+        for name in ("K1", "K2", "K3"):
+            cols[name] = (np.array([c.free.get(name, np.nan) for c in cands], dtype=float), "")
+        for name in ("input_shift", "output_shift"):
+            cols[name] = (np.array([c.free.get(name, 0.0) for c in cands], dtype=float), "rad")
     return cols
 
 

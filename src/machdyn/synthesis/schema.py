@@ -6,6 +6,7 @@ name = "Compactor plate drive"
 
 [synthesis]
 task = "quick_return"          # function | quick_return | slider_quick_return | motion | path
+                               # | slotted_lever | whitworth
 swing = "45 deg"               # quick_return: the rocker's swing ...
 time_ratio = 1.25              # ... and slow stroke / fast stroke
 rocker = "300 mm"
@@ -35,8 +36,9 @@ from pydantic import Field, field_validator
 from ..problem.fields import Angle, AngularVelocity, FieldError, Force, Length, LinearDensity, PositiveLength, Torque
 from ..problem.schema import Meta, Spec
 from .function import undefined_in
+from .slotted_task import problems as slotted_problems
 
-TASKS = ("function", "quick_return", "slider_quick_return", "motion", "path")
+TASKS = ("function", "quick_return", "slider_quick_return", "motion", "path", "slotted_lever", "whitworth")
 #: Functions a function-generation task may name: y = f(x).
 FUNCTIONS = ("log10", "ln", "exp", "sqrt", "square", "cube", "reciprocal", "sin", "cos", "tan")
 
@@ -66,7 +68,7 @@ class RankingSpec(Spec):
 class SynthesisSpec(Spec):
     """The ``[synthesis]`` table: the task and its data; only the fields of the chosen task are read."""
 
-    task: Literal["function", "quick_return", "slider_quick_return", "motion", "path"]
+    task: Literal["function", "quick_return", "slider_quick_return", "motion", "path", "slotted_lever", "whitworth"]
     # function generation
     function: Literal["log10", "ln", "exp", "sqrt", "square", "cube", "reciprocal", "sin", "cos", "tan"] | None = None
     x_range: tuple[float, float] | None = None
@@ -82,6 +84,8 @@ class SynthesisSpec(Spec):
     rocker: PositiveLength | None = None
     start: Angle | None = None
     slow_stroke: Literal["out", "back"] = "out"
+    # slotted-lever quick returns (stroke and time_ratio above): the ram's connecting rod
+    rod: PositiveLength | None = None
     # motion and path generation
     positions: list[tuple[Length, Length, Angle]] = []
     points: list[tuple[Length, Length]] = []
@@ -107,6 +111,8 @@ class SynthesisProblem(Spec):
 def problems(spec: SynthesisSpec) -> list[tuple[str, str]]:
     """The task's rules its schema cannot say: which fields it needs and how many positions or points."""
     out: list[tuple[str, str]] = []
+    if spec.task in ("slotted_lever", "whitworth"):
+        return slotted_problems(spec)
     need = {
         "function": ("function", "x_range", "input_range", "output_range"),
         "quick_return": ("swing", "rocker"),

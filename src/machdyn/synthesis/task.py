@@ -47,33 +47,67 @@ class SynthesisResult:
         return sum(r.ok for r in self.reports)
 
 
+def _function_sets(spec: Any, x0: float, x1: float) -> list[tuple[str, np.ndarray]]:
+    n = spec.precision_points
+    sets = [("chebyshev", chebyshev_spacing(x0, x1, n))]
+    if spec.spacing == "even" or n > 3:
+        sets = [("even", np.linspace(x0, x1, n)), *sets]
+    return sets
+
+
+def placements(count: int, seed: int = 0) -> np.ndarray:
+    """``count`` (input, output) shifts [rad] of the task's angle ranges: (0, 0) first (the ranges as given),
+    then a scrambled grid over the whole turn of each (the designer fixes the spans, not where they start)."""
+    if count <= 1:
+        return np.zeros((1, 2))
+    rng = np.random.default_rng(seed)
+    side = int(np.ceil(np.sqrt(count - 1)))
+    grid = (np.stack(np.meshgrid(np.arange(side), np.arange(side), indexing="ij"), -1).reshape(-1, 2) + 0.5) / side
+    grid = 2.0 * np.pi * grid[rng.permutation(len(grid))[: count - 1]]
+    return np.vstack([np.zeros((1, 2)), grid])
+
+
 def _function_task(spec: Any) -> tuple[list[Candidate], list[Targets], dict]:
+    """Freudenstein candidates of a function task. With ``candidates`` given in the file, the placement of the
+    input and output ranges is searched as well (:func:`placements`); each candidate keeps its shifts in
+    ``free`` ("input_shift", "output_shift" [rad]) and its Freudenstein constants ("K1", "K2", "K3")."""
     f = FUNCTIONS[spec.function]
     x0, x1 = spec.x_range
     ground = 0.1 if spec.ground is None else spec.ground
     dense = np.linspace(x0, x1, 201)
     t2d, t4d = function_angles(f, spec.x_range, spec.input_range, spec.output_range, dense)
-    cands, targets = [], []
+    search = "candidates" in spec.model_fields_set
     n = spec.precision_points
-    sets = [("chebyshev", chebyshev_spacing(x0, x1, n))]
-    if spec.spacing == "even" or n > 3:
-        sets = [("even", np.linspace(x0, x1, n)), *sets]
-    for name, xs in sets:
-        t2, t4 = function_angles(f, spec.x_range, spec.input_range, spec.output_range, xs)
-        try:
-            c = freudenstein(t2, t4, ground) if n == 3 else freudenstein_least_squares(t2, t4, ground)
-        except InputError:
-            continue
-        cands.append(replace(c, free={**c.free, "spacing": name}))
-        targets.append(Targets(outputs=t4, scale=ground))
-    if n == 3:  # the many-point least-squares fit over the whole range, beside the precision-point ones
-        try:
-            c = freudenstein_least_squares(t2d[::10], t4d[::10], ground)
-            cands.append(c)
-            targets.append(Targets(outputs=np.asarray(t4d[::10]), scale=ground))
-        except InputError:
-            pass
+    per_place = len(_function_sets(spec, x0, x1)) + (1 if n == 3 else 0)
+    shifts = placements(max(1, -(-spec.candidates // per_place)), spec.seed) if search else np.zeros((1, 2))
+    cands, targets = [], []
+    for s_in, s_out in shifts:
+        moved = {"input_shift": float(s_in), "output_shift": float(s_out)}
+        for name, xs in _function_sets(spec, x0, x1):
+            t2, t4 = function_angles(f, spec.x_range, spec.input_range, spec.output_range, xs)
+            t2, t4 = t2 + s_in, t4 + s_out
+            try:
+                c = freudenstein(t2, t4, ground) if n == 3 else freudenstein_least_squares(t2, t4, ground)
+            except InputError:
+                continue
+            cands.append(replace(c, free={**c.free, "spacing": name, **moved}))
+            targets.append(Targets(outputs=t4, scale=ground))
+        if n == 3:  # the many-point least-squares fit over the whole range, beside the precision-point ones
+            try:
+                c = freudenstein_least_squares(t2d[::10] + s_in, t4d[::10] + s_out, ground)
+                cands.append(replace(c, free={**c.free, **moved}))
+                targets.append(Targets(outputs=np.asarray(t4d[::10] + s_out), scale=ground))
+            except InputError:
+                pass
+    if search:
+        cands, targets = cands[: spec.candidates], targets[: spec.candidates]
     return cands, targets, {"theta2": t2d, "theta4": t4d}
+
+
+def shifted_error(c: Candidate, theta2: Any, theta4: Any) -> np.ndarray:
+    """:func:`output_error` [rad] of a function candidate over the task's angles moved by its own placement."""
+    return output_error(c, np.asarray(theta2) + c.free.get("input_shift", 0.0),
+                        np.asarray(theta4) + c.free.get("output_shift", 0.0))
 
 
 def candidates_of(spec: Any) -> tuple[list[Candidate], list[Targets], dict]:
@@ -141,7 +175,7 @@ def synthesise(spec: Any) -> SynthesisResult:
     values = evaluate(cands, reports, drive)
     if spec.task == "function":  # the structural error over the whole range, not only at the points
         for i, c in enumerate(cands):
-            e = np.abs(output_error(c, curve["theta2"], curve["theta4"]))
+            e = np.abs(shifted_error(c, curve["theta2"], curve["theta4"]))
             values["error"][i] = float(np.max(e)) if np.isfinite(e).all() else np.inf
     idx = order(values, reports, r.by)
     return SynthesisResult(
@@ -151,4 +185,4 @@ def synthesise(spec: Any) -> SynthesisResult:
     )
 
 
-__all__ = ["QUANTITIES", "SynthesisResult", "candidates_of", "synthesise"]
+__all__ = ["QUANTITIES", "SynthesisResult", "candidates_of", "placements", "shifted_error", "synthesise"]
