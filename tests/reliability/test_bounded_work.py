@@ -129,7 +129,6 @@ def test_an_integration_that_creeps_towards_a_stall_is_stopped_by_its_budget(mon
 
     from machdyn.dynamics.motion import start_up
     from machdyn.dynamics.simulate import NotSettledError
-    from machdyn.errors import InputError
     from machdyn.runner import run_problem
 
     done = run_problem(ROOT / "examples" / "crank_press.toml").outcomes["flywheel"].results
@@ -139,8 +138,9 @@ def test_an_integration_that_creeps_towards_a_stall_is_stopped_by_its_budget(mon
         start_up(done.machine, done.drive, done.flywheel, steady=done.steady)
     simulate = importlib.import_module("machdyn.dynamics.simulate")
     monkeypatch.setattr(simulate, "MAX_EVALUATIONS_PER_CYCLE", 50)  # far fewer than one cycle needs
-    with pytest.raises(InputError, match="nearly stalls: one cycle of its motion needed more than 50 steps"):
-        run_problem(ROOT / "examples" / "crank_press.toml")
+    # a machine that nearly stalls is a design that fails its check (exit 3), the same verdict as a stall
+    failed = run_problem(ROOT / "examples" / "crank_press.toml").failed_checks
+    assert any("nearly stalls: one cycle of its motion needed more than 50 steps" in f for f in failed), failed
 
 
 def test_max_time_stops_a_run_with_exit_1_and_keeps_the_finished_partitions(write):
