@@ -40,7 +40,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, check_positive
 from ..linkage import RRP, Body, Guide, Mechanism, inverted_slider_crank, kinematics
 from ..linkage.builders import _bar
 
@@ -168,10 +168,8 @@ def slotted_lever(time_ratio: float, stroke: float, centre_distance: float, *, r
     (0.12, 0.45)
     """
     beta = return_angle(time_ratio)
-    if not (np.isfinite(stroke) and stroke > 0.0):
-        raise InputError(f"The stroke must be > 0 m; got {stroke!r} m.")
-    if not (np.isfinite(centre_distance) and centre_distance > 0.0):
-        raise InputError(f"The centre distance must be > 0 m; got {centre_distance!r} m.")
+    check_positive("stroke", stroke, "m")
+    check_positive("centre distance", centre_distance, "m")
     ratio = float(np.cos(beta / 2.0))  # r / d
     r = centre_distance * ratio
     lever = stroke / (2.0 * ratio)
@@ -203,10 +201,8 @@ def whitworth(time_ratio: float, stroke: float, crank: float, *, rod: float | No
     (0.05, 0.15)
     """
     beta = return_angle(time_ratio)
-    if not (np.isfinite(stroke) and stroke > 0.0):
-        raise InputError(f"The stroke must be > 0 m; got {stroke!r} m.")
-    if not (np.isfinite(crank) and crank > 0.0):
-        raise InputError(f"The crank radius must be > 0 m; got {crank!r} m.")
+    check_positive("stroke", stroke, "m")
+    check_positive("crank radius", crank, "m")
     lever = 0.5 * stroke
     rho = 2.0 * lever if rod is None else float(rod)
     if not rho > lever:
