@@ -256,10 +256,13 @@ SHAFT_LINE: tuple[Quantity, ...] = tuple(
     )
 )
 
-#: Each rise's and return's own extremes (:mod:`machdyn.cams.strokes`), by the segment's number; the units of a
-#: translating follower (an oscillating follower's run labels its own in rad/s ...).
+#: Each rise's and return's own extremes (:mod:`machdyn.cams.strokes`), by the segment's number, of a cam file's
+#: cam and of a cam on a linkage's crank shaft; the units of a translating follower (an oscillating follower's run
+#: labels its own in rad/s ...).
 CAM_STROKES: tuple[Quantity, ...] = tuple(
-    Quantity(f"cam.segment<segment>.{figure}", f"Segment {{segment}}: {text}", unit, display, producer="cam")
+    Quantity(f"{prefix}.segment<segment>.{figure}", f"{title}Segment {{segment}}: {text}", unit, display,
+             producer=prefix)
+    for prefix, title in (("cam", ""), ("shaft_cam", "Shaft cam: "))
     for figure, text, unit, display in (
         ("max_velocity", "peak |v|", "m/s", None),
         ("max_acceleration", "peak |a|", "m/s^2", None),
