@@ -153,6 +153,18 @@ def test_bhandari_example_12_8_internal_expanding_shoes():
     assert b.torque == pytest.approx(434.831051530, rel=TIGHT)
 
 
+def test_bhandari_example_12_9_four_internal_shoes_in_two_pairs():
+    """Bhandari, 3rd ed., Example 12.9 (FOSSEE 764/CH12/EX12.9): two pairs of internal shoes, the lining from 15°
+    to 75° (so the pressure is largest at 75°), drum radius 250 mm, width 50 mm, μ = 0.3, p_max = 1 MPa; each
+    shoe's pivot 200 mm from the drum's axis, its force 200 mm from the pivot. Printed: P = 5025.457606 N and the
+    torque of the brake with 4 shoes M_t = 2181614.276244 N·mm. machdyn's pair under the printed force: the
+    energising shoe at 1 MPa, twice the pair's torque the printed one."""
+    pair = brakes.internal_shoe_brake(0.3, 5025.457606, 0.250, 0.050, math.radians(15), math.radians(75), 0.200,
+                                      0.200, shoes=2)
+    assert pair.max_pressure == pytest.approx(1e6, rel=TIGHT)
+    assert 2 * pair.torque == pytest.approx(2181.614276244, rel=TIGHT)
+
+
 def test_bhandari_example_12_10_differential_band_brake():
     """Bhandari, 3rd ed., Example 12.10 (FOSSEE 764/CH12/EX12.10): a steel band 100 × 3 mm at 50 MPa (tight side
     P1 = 15000 N), μ = 0.25, wrap 240°, drum radius 300 mm; loose end 200 mm and tight end 50 mm from the pivot on
@@ -240,3 +252,14 @@ def test_bhandari_examples_11_8_and_12_10_through_a_problem_file_and_the_command
     scalars = {k: v["value"] for k, v in json.loads((out / "results.json").read_text())["scalars"].items()}
     assert scalars["clutch.torque"] == pytest.approx(119.282346066, rel=TIGHT)
     assert scalars["brake.torque"] == pytest.approx(2920.860868, rel=TIGHT)
+
+
+def test_gate_me_2012_simple_band_brake_torque():
+    """GATE 2012, Mechanical Engineering, official paper (question and answer key as reproduced with a worked
+    solution at testbook.com, "A force of 400 N is applied to the brake drum of 0.5 m diameter in a band brake
+    system"): wrap 180°, μ = 0.25, the 400 N on the band's tight end. Printed answer (option B): braking torque
+    54.4 N m (exact 54.41). machdyn's simple band brake with the lever on the tight end, its pull 400 N (lever and
+    arm equal): tolerance half the last printed digit."""
+    b = brakes.band_brake(0.25, 400.0, 0.25, 1.0, 1.0, math.pi, lever_on="tight")
+    assert b.torque == pytest.approx(54.4, abs=0.05)
+    assert 400.0 / brakes.band_ratio(0.25, math.pi) == pytest.approx(182.375, abs=5e-4)  # the solution's T2
