@@ -211,8 +211,9 @@ def stroke_table(r: Any) -> str:
         for f in shown:
             column = _STROKE_COLUMNS[f]
             factor, unit = column[2] if osc else column[1]
-            row.append(f"{format_value(s.figures[f] * factor)} {unit} at {format_value(np.degrees(s.where[f]))}°"
-                       if f in s.figures else "—")
+            at = format_value(round(float(np.degrees(s.where[f])), 4) + 0.0)  # 1e-10° just inside an end: 0°
+            shown_unit = unit if unit == "°" else f" {unit}"
+            row.append(f"{format_value(s.figures[f] * factor)}{shown_unit} at {at}°" if f in s.figures else "—")
         rows.append(row)
     head = ("segment", "stroke", "cam angles", *(_STROKE_COLUMNS[f][0] for f in shown))
     return ("<p>Each stroke's own extremes, exact on its law (results <code>cam.segment&lt;n&gt;.&lt;figure&gt;"
