@@ -97,6 +97,18 @@ def test_bhandari_example_11_2_single_plate_clutch_uniform_pressure():
     assert torque == pytest.approx(366.519142919, rel=TIGHT)
 
 
+def test_bhandari_example_11_3_automotive_plate_clutch_sized_for_its_torque():
+    """Bhandari, 3rd ed., Example 11.3 (FOSSEE 764/CH11/EX11.3): an automotive clutch of two pairs of faces
+    carries 550 N·m, μ = 0.25, p_a = 0.5 MPa, D = 250 mm, uniform wear. Printed: the inner diameter d =
+    174.166181 mm (the larger root of the book's cubic) and the spring force P = 10373.292814 N. machdyn: the
+    force for 0.5 MPa on those radii is the printed P, and the torque of that force is the 550 N·m asked for
+    (tolerance: d printed to 1e-6 mm, relative 6e-9; 1e-8 on the torque)."""
+    inner = 0.174166181 / 2
+    assert clutches.axial_force(0.5e6, inner, 0.125) == pytest.approx(10373.292814, rel=1e-8)
+    assert clutches.plate_clutch_torque(0.25, 10373.292814, inner, 0.125, surfaces=2) == pytest.approx(550.0,
+                                                                                                       rel=1e-8)
+
+
 def test_bhandari_example_11_8_multi_plate_clutch():
     """Bhandari, 3rd ed., Example 11.8 (FOSSEE 764/CH11/EX11.8): five steel and four bronze plates (eight pairs of
     faces), 75/150 mm, μ = 0.1, p_a = 0.3 MPa, uniform wear. Printed: P = 2650.718801 N, z = 8,
