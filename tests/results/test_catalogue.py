@@ -54,6 +54,8 @@ NOT_IN_EXAMPLES = {
     "optimise.front_hypervolume": "a Pareto front of several objectives (tests/correctness)",
     "cam.face_width": "a flat-faced follower (tests/cams)",
     "shaft_cam.face_width": "a flat-faced follower on a crank shaft (the same result as cam.face_width)",
+    "shaft_cam.segment<segment>.min_surface_curvature_radius": "a flat-faced follower on a crank shaft (the same "
+                                                                "result as cam.segment<segment>.min_surface_...)",
     "synthesis.best.offset": "the synthesis of a slider-crank (tests/synthesis)",
     "clutch.engagement_speed": "a centrifugal clutch (tests/drivetrain/test_geometry_cli.py)",
     "brake.max_pressure": "an internal shoe brake (tests/drivetrain/test_geometry_cli.py)",

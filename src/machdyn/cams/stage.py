@@ -20,6 +20,7 @@ from .followers import Follower
 from .profile import cam_angles, profile
 from .program import Segment, program
 from .schema import CamProblem
+from .strokes import FIGURES, Stroke, strokes
 
 #: result key -> (text, SI unit for a translating follower, display) ; oscillating followers' lengths are angles
 _FIXED = {
@@ -92,6 +93,7 @@ class CamResult(ReducedMachineSource):
     simulation: Any
     clockwise: bool
     face_width_given: float | None = None
+    strokes: tuple[Stroke, ...] = ()
 
     def machine(self, positions: int = 720):
         """The cam machine reduced to the camshaft (:func:`~machdyn.cams.dynamics.cam_machine`); a camshaft of
@@ -270,10 +272,11 @@ def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
             warnings.append(f"no base circle that assembles with this follower meets the limit ({key})")
     if model.follower.contact == "flat":
         values["cam.face_width"] = chk.face_width
-    spring = forces = sim = None
+    spring = forces = sim = sized = None
     if model.train is not None:
         step("spring, forces and simulation")
         train, spring = _spring(problem, model)
+        sized = train
         forces = cam_forces(model.program, train, spring, speed, m.theta, prof.pressure_angle,
                             model.arm if osc else None)
         arm = model.arm
@@ -302,11 +305,48 @@ def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
     labels = {}
     if osc:
         labels = {k: Label(t, u[0], u[1]) for k, (t, _, u) in _MOTION_LABELS.items()}
+    each = strokes(model.program, model.follower, speed, sized, spring, model.arm)
+    for stroke in each:
+        values |= {stroke.key(name): value for name, value in stroke.figures.items()}
+    labels |= stroke_labels(each, osc)
     result = CamResult(model, speed, chk, spring, forces, sim, cam.rotation == "cw",
-                       None if cam.checks.face_width is None else float(cam.checks.face_width))
+                       None if cam.checks.face_width is None else float(cam.checks.face_width), each)
     return Outcome(results=result, scalars=values, labels=labels, series=_series(result, osc),
                    files=_files(problem, prof), summary=tuple(k for k in SUMMARY if k in values),
                    warnings=tuple(warnings), failed_checks=tuple(failed))
+
+
+def stroke_labels(each: tuple[Stroke, ...], osc: bool) -> dict[str, Label]:
+    """The labels of the strokes' results (``cam.segment<n>.<figure>``), in the follower's units."""
+    out = {}
+    for stroke in each:
+        for name in stroke.figures:
+            text, translating, oscillating = FIGURES[name]
+            unit = oscillating if osc else translating
+            out[stroke.key(name)] = Label(f"Segment {stroke.number} ({stroke.motion}): {text}", unit,
+                                          DISPLAY.get(unit))
+    return out
+
+
+def result_keys(problem: CamProblem) -> dict[str, str]:
+    """{key: SI unit} of the results a run of ``problem`` may report: the cam's declared results and its strokes'
+    (``cam.segment<n>.<figure>``, found on the built program without forces, which a follower train adds); {}
+    for a file whose cam cannot be built (its problems are reported by the build)."""
+    model, problems = build(problem)
+    if problems or model is None:
+        return {}
+    osc = model.follower.motion == "oscillating"
+    each = strokes(model.program, model.follower, float(problem.cam.speed))
+    out = {key: lab.unit for key, lab in LABELS.items()}
+    force_figures = ("max_contact_force", "max_normal_force", "peak_torque") if model.train is not None else ()
+    for stroke in each:
+        for name in (*stroke.figures, *force_figures):
+            out[stroke.key(name)] = FIGURES[name][2 if osc else 1]
+    return out
+
+
+#: How the strokes' results are shown: SI unit -> display unit.
+DISPLAY = {"rad": "deg", "m": "mm"}
 
 
 def _series(r: CamResult, osc: bool) -> dict[str, Any]:
@@ -354,4 +394,5 @@ KIND = ProblemKind(
     steps=("profile and checks", "spring, forces and simulation"),
     labels=LABELS,
     report="machdyn.report.cams:sections",
+    result_keys=result_keys,
 )

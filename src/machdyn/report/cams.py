@@ -175,11 +175,50 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
              "rpm. Pressure-angle limits after Norton, <i>Design of Machinery</i>, §8.6 (30° translating) and "
              "Rothbart, <i>Cam Design Handbook</i> (35–45° oscillating).</p>")
     html = intro + rows_html(seg_rows, ("segment", "motion", "start", "angle", "lift", "law"))
+    html += stroke_table(r)
     if rows:
         html += "<p>Jumps in the program (the fundamental law of cam design asks for none):</p>" + rows_html(
             [[row[0]] for row in rows], ("jump",))
     moving = cam_view(r)
     return [("Cam", html + (str(moving) if moving is not None else "") + figures_html(figs))]
+
+
+#: The strokes' figures shown in the report's table: figure -> (column, translating (factor, unit), oscillating).
+_STROKE_COLUMNS: dict[str, tuple[str, tuple[float, str], tuple[float, str]]] = {
+    "max_velocity": ("peak |v|", (1.0, "m/s"), (1.0, "rad/s")),
+    "max_acceleration": ("peak |a|", (1.0, "m/s²"), (1.0, "rad/s²")),
+    "max_jerk": ("peak |j|", (1.0, "m/s³"), (1.0, "rad/s³")),
+    "max_pressure_angle": ("largest |φ|", (180 / np.pi, "°"), (180 / np.pi, "°")),
+    "min_pitch_curvature_radius": ("smallest convex ρ (pitch)", (1e3, "mm"), (1e3, "mm")),
+    "min_surface_curvature_radius": ("smallest ρ (face)", (1e3, "mm"), (1e3, "mm")),
+    "max_contact_force": ("largest contact force", (1.0, "N"), (1.0, "N")),
+    "max_normal_force": ("largest normal force", (1.0, "N"), (1.0, "N")),
+    "peak_torque": ("peak |T| camshaft", (1.0, "N·m"), (1.0, "N·m")),
+}
+
+
+def stroke_table(r: Any) -> str:
+    """Each rise's and return's own exact extremes (``cam.segment<n>.<figure>``), one row a stroke, with the cam
+    angle of each figure under its value."""
+    each = getattr(r, "strokes", ())
+    if not each:
+        return ""
+    osc = r.model.follower.motion == "oscillating"
+    shown = [f for f in _STROKE_COLUMNS if any(f in s.figures for s in each)]
+    rows = []
+    for s in each:
+        row = [str(s.number), s.motion, f"{format_value(np.degrees(s.start))}–{format_value(np.degrees(s.end))}°"]
+        for f in shown:
+            column = _STROKE_COLUMNS[f]
+            factor, unit = column[2] if osc else column[1]
+            at = format_value(round(float(np.degrees(s.where[f])), 4) + 0.0)  # 1e-10° just inside an end: 0°
+            shown_unit = unit if unit == "°" else f" {unit}"
+            row.append(f"{format_value(s.figures[f] * factor)}{shown_unit} at {at}°" if f in s.figures else "—")
+        rows.append(row)
+    head = ("segment", "stroke", "cam angles", *(_STROKE_COLUMNS[f][0] for f in shown))
+    return ("<p>Each stroke's own extremes, exact on its law (results <code>cam.segment&lt;n&gt;.&lt;figure&gt;"
+            "</code>; the largest of them is the turn's exact peak, which the turn's results sampled at the profile's "
+            "angles approach from below):</p>" + rows_html(rows, head))
 
 
 def shaft_sections(outcome: Any) -> list[tuple[str, str]]:

@@ -256,6 +256,26 @@ SHAFT_LINE: tuple[Quantity, ...] = tuple(
     )
 )
 
+#: Each rise's and return's own extremes (:mod:`machdyn.cams.strokes`), by the segment's number, of a cam file's
+#: cam and of a cam on a linkage's crank shaft; the units of a translating follower (an oscillating follower's run
+#: labels its own in rad/s ...).
+CAM_STROKES: tuple[Quantity, ...] = tuple(
+    Quantity(f"{prefix}.segment<segment>.{figure}", f"{title}Segment {{segment}}: {text}", unit, display,
+             producer=prefix)
+    for prefix, title in (("cam", ""), ("shaft_cam", "Shaft cam: "))
+    for figure, text, unit, display in (
+        ("max_velocity", "peak |v|", "m/s", None),
+        ("max_acceleration", "peak |a|", "m/s^2", None),
+        ("max_jerk", "peak |j|", "m/s^3", None),
+        ("max_pressure_angle", "largest |pressure angle|", "rad", "deg"),
+        ("min_pitch_curvature_radius", "smallest convex radius of curvature of the pitch curve", "m", "mm"),
+        ("min_surface_curvature_radius", "flat face: smallest radius of curvature R_b + s + a", "m", "mm"),
+        ("max_contact_force", "largest contact force along the follower's path", "N", None),
+        ("max_normal_force", "largest contact force along the common normal", "N", None),
+        ("peak_torque", "peak camshaft torque |T|", "N*m", None),
+    )
+)
+
 #: Results of the capabilities and kinds whose keys are made at run time (their fixed keys are declared in each
 #: capability's ``labels``, gathered by :func:`machdyn.kinds.catalogue`).
 RUN_TIME: tuple[Quantity, ...] = (
@@ -293,6 +313,7 @@ RUN_TIME: tuple[Quantity, ...] = (
              producer="shaft_line"),
     Quantity("shaft.records.<what>.<figure*>", "Shaft line: from the records, {what}, {figure}",
              producer="shaft_line"),
+    *CAM_STROKES,
     Quantity("transient.passage_<index>.<figure>", "Transient: resonance passage {index}, {figure}",
              producer="transient"),
     Quantity("check_<name*>_utilisation", "Check {name}, utilisation", producer="screw_conveyor"),
