@@ -22,7 +22,9 @@ from ..problem.schema import Name, Spec
 from ..results.labels import Label
 from ..vibration.modes import Modes, modes
 from ..vibration.study import build_frame
+from .electric import MotorRun, motor_run
 from .model import Exciter, carried_frame, coupled_model
+from .motor_table import MOTOR_LABELS, MOTOR_SUMMARY, MotorSpec, dq_motor, motor_checks, motor_scalars, motor_series
 from .passage import AmplitudeCurve, Passage, amplitude_curve, capture, passages
 from .run import Scenario, Transient, TransientLimitError, run_scenario
 
@@ -46,7 +48,8 @@ class TwinSpec(Spec):
 class TransientTable(Spec):
     """``[transient]``: a scenario of the machine in time. The drive and flywheel are those of ``[flywheel]``;
     the frame and its mounts those of ``[frame]`` (``rigid = true``, or a file without ``[frame]``: a rigid
-    ground)."""
+    ground); ``[transient.motor]`` replaces the drive's torque-speed curve by an induction motor's electrical
+    model (through the same gear)."""
 
     duration: Time
     start_speed: AngularVelocity = 0.0
@@ -71,6 +74,7 @@ class TransientTable(Spec):
     max_evaluations: int = Field(400_000, ge=1000, le=100_000_000, strict=True)
     max_seconds: Time = 120.0
     twin: TwinSpec | None = None
+    motor: MotorSpec | None = None
 
     @model_validator(mode="after")
     def _consistent(self):
@@ -86,6 +90,9 @@ class TransientTable(Spec):
             raise ValueError("speed_change_time needs speed_factor (the new supply frequency / the old), not 1")
         if self.prescribed_speed is None and self.prescribed_acceleration != 0.0:
             raise ValueError("prescribed_acceleration needs prescribed_speed (the speed at the start)")
+        if self.prescribed_speed is not None and self.motor is not None:
+            raise ValueError("[transient.motor] drives the crank; a prescribed_speed leaves it nothing to do: give "
+                             "one of them")
         if self.prescribed_speed is not None and self.prescribed_speed < 0:
             raise ValueError(f"prescribed_speed must be >= 0 rad/s; got {self.prescribed_speed:g} rad/s")
         return self
@@ -114,6 +121,7 @@ LABELS = {
     "transient.evaluations": Label("Transient: evaluations of the equations of motion", ""),
     "transient.phase_difference": Label("Transient: phase of the crank less the twin's over the last turn "
                                         "(synchronised exciters)", "rad", "deg"),
+    **MOTOR_LABELS,
 }
 
 SUMMARY = ("transient.final_speed", "transient.captured", "transient.phase_difference", "transient.peak_amplitude",
@@ -137,6 +145,8 @@ class TransientRun:
     captured: bool
     final_speed: float
     free_speed: float
+    motor: MotorRun | None = None  # the electrical side of an induction motor's dq model ([transient.motor])
+    mean_load: float = float("nan")  # the machine's mean load at the crank [N*m] (for the motor's check)
 
 
 def _frame_and_point(ctx: StageContext, table: TransientTable):
@@ -179,6 +189,8 @@ def run_transient(ctx: StageContext) -> Outcome:
                                       "so the machine cannot be run in time",))
     frame, point, point_name, direction, origin, angle = _frame_and_point(ctx, table)
     drive = None if fly is None else fly.drive
+    if table.motor is not None and drive is not None:  # the motor's electrical model, through the line's gear
+        drive = dq_motor(table.motor, drive)
     # the flywheel with every shaft of the one drive line, at the crank (as the steady state counts them)
     flywheel = 0.0 if fly is None else float(fly.flywheel) + fly.line_inertia
     machine = None if fly is None else fly.machine
@@ -207,7 +219,9 @@ def run_transient(ctx: StageContext) -> Outcome:
     free = _free_speed(fly, drive)
     motors_on = table.switch_off is None and table.prescribed_speed is None
     captured, final = capture(run, frequencies, free, table.band) if motors_on else (False, _last_speed(run))
-    result = TransientRun(table, run, md, curve, found, point, point_name, direction, captured, final, free)
+    mean_load = float("nan") if fly is None else -float(np.ravel(fly.machine.moment.mean())[0])
+    result = TransientRun(table, run, md, curve, found, point, point_name, direction, captured, final, free,
+                          motor_run(run), mean_load)
     return _outcome(result)
 
 
@@ -296,12 +310,21 @@ def _outcome(r: TransientRun) -> Outcome:
     if any(not p.completed for p in r.passages) and not r.captured:
         warnings.append("The run ends inside the band of a frame mode; lengthen it to see the whole passage.")
     series = {"transient": _columns(r, amp)}
+    if r.motor is not None:
+        values |= motor_scalars(r.motor, run)
+        failed += motor_checks(r.motor, run, r.free_speed, r.mean_load)
+        series["transient_motor"] = motor_series(r.motor)
+        if run.scenario.switch_off is None and r.table.start_speed == 0.0 and "transient.time_to_speed" not in values \
+                and math.isfinite(r.free_speed):
+            warnings.append(f"The induction motor did not bring the crank to 95 % of its speed "
+                            f"({r.free_speed * 30 / math.pi:.4g} rpm) within the run; lengthen it to see the start "
+                            "end.")
     if r.curve.speed.size:
         series["transient_amplitude"] = {"speed": (r.curve.speed, "rad/s"), "time": (r.curve.time, "s"),
                                          "amplitude": (r.curve.amplitude, "m"),
                                          "mount_force": (r.curve.mount_force, "N")}
     return Outcome(results=r, scalars=values, labels=labels, series=series,
-                   summary=tuple(k for k in SUMMARY if k in values), warnings=tuple(warnings),
+                   summary=tuple(k for k in (*SUMMARY, *MOTOR_SUMMARY) if k in values), warnings=tuple(warnings),
                    failed_checks=tuple(failed))
 
 
@@ -376,7 +399,7 @@ CAPABILITY = Capability(
     step="machine in time",
     kinds=("mechanism", "rotary_screen"),
     labels=LABELS,
-    report="machdyn.report.transient:sections",
+    report="machdyn.report.transient_motor:sections",
     check=check_transient,
     after=("flywheel", "frame"),
     result_type=TransientRun,
