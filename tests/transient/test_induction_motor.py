@@ -101,7 +101,7 @@ def test_the_screen_with_its_motors_electrical_states_reports_them(screen):
 
 
 def test_the_report_adds_the_motors_section(screen):
-    from machdyn.report.transient_motor import sections
+    from machdyn.report.transient_drive import sections
 
     found = dict(sections(screen.outcomes["transient"]))
     assert "The machine in time" in found

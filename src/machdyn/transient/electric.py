@@ -36,11 +36,14 @@ class ElectricDrives:
     """The drives of a run that carry electrical states (``drive.states`` > 0), their rows in the state vector
     from ``offset`` on, and the right-hand side that integrates them with the machine."""
 
-    def __init__(self, drives: list, offset: int, cranks: int) -> None:
+    def __init__(self, drives: list, offset: int, cranks: int, torsion=None) -> None:
         self.drives = drives  # the run's list: a speed change replaces its entries
         self.index = [k for k, d in enumerate(drives) if getattr(d, "states", 0)]
         self.offset = offset
         self.cranks = cranks
+        # the row of each motor's speed referred to the crank: the crank's, or its group's behind a stiff stage
+        self.speed_rows = {k: (torsion.speed_row(k) if torsion is not None and k in torsion.lines else cranks + k)
+                           for k in self.index}
         self.torque = [0.0] * len(drives)
         self.readers = [(lambda _w, k=k: self.torque[k]) for k in range(len(drives))]
         self.switched_off = False
@@ -70,7 +73,7 @@ class ElectricDrives:
     def wrap(self, rhs, state: dict):
         """f(t, y) of the whole state from the machine's ``rhs`` (which reads the drives' torques through
         ``state["torques"]``, here the electromagnetic torques at the crank set from the fluxes)."""
-        n, offset, width = self.cranks, self.offset, self.width
+        offset, width = self.offset, self.width
 
         def f(t, y):
             on = state["on"]
@@ -78,7 +81,7 @@ class ElectricDrives:
             for j, k in enumerate(self.index):
                 motor = self.drives[k]
                 base = offset + width * j
-                wm = motor.ratio * float(y[n + k])
+                wm = motor.ratio * float(y[self.speed_rows[k]])
                 rates, te, power, copper = motor.rates(t, y[base:base + 4], wm, on)
                 self.torque[k] = _gear(te, motor.ratio, motor.efficiency)
                 extra[width * j:width * j + 4] = rates
@@ -107,9 +110,10 @@ class ElectricDrives:
         return y
 
 
-def electrical_drives(drives: list, offset: int, cranks: int) -> ElectricDrives | None:
-    """The :class:`ElectricDrives` of ``drives``, or None when none has electrical states."""
-    found = ElectricDrives(drives, offset, cranks)
+def electrical_drives(drives: list, offset: int, cranks: int, torsion=None) -> ElectricDrives | None:
+    """The :class:`ElectricDrives` of ``drives`` (behind the stiff stages of ``torsion``, a
+    :class:`~machdyn.transient.torsion.TorsionalStates`), or None when none has electrical states."""
+    found = ElectricDrives(drives, offset, cranks, torsion)
     return found if found.index else None
 
 

@@ -25,6 +25,7 @@ from ..vibration.modes import modes
 from . import fast
 from .electric import electrical_drives
 from .model import CoupledModel
+from .torsion import torsional_states
 
 __all__ = ["Scenario", "Transient", "TransientLimitError", "run_scenario"]
 
@@ -111,7 +112,9 @@ class Transient:
     load step: negative when they take energy), of the mounts' dampers (dissipated), of the brake (dissipated);
     energy (T) [J] kinetic plus potential; ended: why the run ended ("duration", "stopped", "rolled back");
     evaluations of the equations; seconds of wall-clock time; electric: the rows of the drives with electrical
-    states (:mod:`machdyn.transient.electric`, read by :func:`~machdyn.transient.electric.motor_run`), or None."""
+    states (:mod:`machdyn.transient.electric`, read by :func:`~machdyn.transient.electric.motor_run`), or None;
+    torsion: the rows of the drive line's shafts behind stiff stages (read by
+    :func:`~machdyn.transient.torsion.torsion_run`), or None."""
 
     model: CoupledModel
     scenario: Scenario
@@ -128,6 +131,7 @@ class Transient:
     evaluations: int
     seconds: float
     electric: dict | None = None
+    torsion: dict | None = None
 
     @property
     def motor_work(self) -> float:
@@ -318,8 +322,13 @@ def run_scenario(model: CoupledModel, scenario: Scenario) -> Transient:
         if fast.usable(model):
             rhs = rhs_prescribed = fast.prescribed_right_hand_side(model, profile, state, check_budget, brake_width)
     drive_list = list(drives)
-    electric = electrical_drives(drive_list, y0.size, n) if prescribed is None else None
+    torsion = torsional_states(model, y0.size) if prescribed is None else None
     atol = _tolerances(y0, n, nq, prescribed is not None, reference, model)
+    if torsion is not None:  # the drive line's shafts behind stiff stages, each group on its own
+        rhs = torsion.wrap(rhs, state)
+        y0 = np.concatenate([y0, torsion.initial(phi0, w0)])
+        atol = np.concatenate([atol, torsion.tolerances(reference)])
+    electric = electrical_drives(drive_list, y0.size, n, torsion) if prescribed is None else None
     if electric is not None:  # the motors' flux linkages integrated with the machine
         rhs = electric.wrap(rhs, state)
         y0 = np.concatenate([y0, electric.initial()])
@@ -327,11 +336,15 @@ def run_scenario(model: CoupledModel, scenario: Scenario) -> Transient:
     fastest = reference
     if frame is not None:
         fastest = max(fastest, float(np.max(modes(frame).angular_frequencies)))
+    if torsion is not None:
+        fastest = max(fastest, torsion.fastest(model))
     step = 2.0 * math.pi / fastest / max(int(scenario.samples_per_period), 4)
     samples = int(min(max(scenario.duration / step, 200), 400_000))
     t_out = np.linspace(0.0, scenario.duration, samples + 1)
     method = scenario.method
     if method == "auto":
+        # the motor's electrical states are stiff; a stiff stage's spring is a fast oscillation, which DOP853
+        # follows with the works' balance closed to 1e-8 (LSODA's Adams steps leave 1e-6 on a slow machine)
         method = "LSODA" if electric is not None else _method(model, scenario, reference, fastest)
     cuts = [0.0, *scenario.events(), scenario.duration]
     pieces_t: list[np.ndarray] = []
@@ -381,7 +394,7 @@ def run_scenario(model: CoupledModel, scenario: Scenario) -> Transient:
     if prescribed is not None:
         held = np.stack([rhs_prescribed(ti, y_all[:, i], True) for i, ti in enumerate(t_all)], axis=-1)
     return _result(model, scenario, t_all, y_all, n, nq, profile if prescribed else None, held, segments, ended,
-                   counter, electric)
+                   counter, electric, torsion)
 
 
 def _method(model: CoupledModel, scenario: Scenario, reference: float, fastest: float) -> str:
@@ -422,8 +435,8 @@ def _tolerances(y0, n, nq, prescribed, reference, model):
                            np.full(nq, 1e-13 * reference), np.full(4, 1e-9)])
 
 
-def _result(model, scenario, t, y, n, nq, profile, held, segments, ended, counter, electric=None):
-    rows = None
+def _result(model, scenario, t, y, n, nq, profile, held, segments, ended, counter, electric=None, torsion=None):
+    rows = twists = None
     if profile is None:
         phi, omega = y[:n], y[n:2 * n]
         q, dq = y[2 * n:2 * n + nq], y[2 * n + nq:2 * n + 2 * nq]
@@ -444,6 +457,14 @@ def _result(model, scenario, t, y, n, nq, profile, held, segments, ended, counte
                 motor = electric.drives[k]
                 te = motor.electromagnetic_torque(y[electric.offset + electric.width * j:][:4])
                 torque[k] = motor.ratio * np.where(te >= 0.0, te * motor.efficiency, te / motor.efficiency)
+        if torsion is not None:  # the crank is driven by the last stiff stage's spring
+            twists = {"lines": dict(torsion.lines),
+                      "rows": {k: y[torsion.starts[k]:torsion.starts[k] + 2 * line.groups + 2]
+                               for k, line in torsion.lines.items()}}
+            for k, line in torsion.lines.items():
+                g, base = line.groups, torsion.starts[k]
+                torque[k] = (line.stiffness[-1] * (y[base + g - 1] - phi[k])
+                             + line.damping[-1] * (y[base + 2 * g - 1] - omega[k]))
     else:
         phi, omega, _ = (np.stack(v, axis=-1) for v in zip(*(profile(ti) for ti in t), strict=True))
         q, dq = y[:3], y[3:6]
@@ -458,4 +479,4 @@ def _result(model, scenario, t, y, n, nq, profile, held, segments, ended, counte
     else:
         force = np.zeros((0, t.size))
     return Transient(model, scenario, t, phi, omega, torque, q, dq, force, works, energy, ended, counter["calls"],
-                     time.perf_counter() - counter["start"], rows)
+                     time.perf_counter() - counter["start"], rows, twists)

@@ -12,6 +12,7 @@ from typing import Any, Literal
 import numpy as np
 from pydantic import Field, model_validator
 
+from ..dynamics.driveline_file import line_of
 from ..dynamics.drives import ConstantSpeed
 from ..dynamics.simulate import balance_speed
 from ..dynamics.stage import FlywheelRun
@@ -27,6 +28,15 @@ from .model import Exciter, carried_frame, coupled_model
 from .motor_table import MOTOR_LABELS, MOTOR_SUMMARY, MotorSpec, dq_motor, motor_checks, motor_scalars, motor_series
 from .passage import AmplitudeCurve, Passage, amplitude_curve, capture, passages
 from .run import Scenario, Transient, TransientLimitError, run_scenario
+from .torsion import TorsionRun, torsion_run, torsional_line
+from .torsion_results import (
+    TORSION_LABELS,
+    TORSION_SUMMARY,
+    torsion_checks,
+    torsion_labels,
+    torsion_scalars,
+    torsion_series,
+)
 
 __all__ = ["CAPABILITY", "TransientRun", "TransientTable", "TwinSpec", "check_transient", "run_transient",
            "scenario_of"]
@@ -122,6 +132,7 @@ LABELS = {
     "transient.phase_difference": Label("Transient: phase of the crank less the twin's over the last turn "
                                         "(synchronised exciters)", "rad", "deg"),
     **MOTOR_LABELS,
+    **TORSION_LABELS,
 }
 
 SUMMARY = ("transient.final_speed", "transient.captured", "transient.phase_difference", "transient.peak_amplitude",
@@ -147,6 +158,8 @@ class TransientRun:
     free_speed: float
     motor: MotorRun | None = None  # the electrical side of an induction motor's dq model ([transient.motor])
     mean_load: float = float("nan")  # the machine's mean load at the crank [N*m] (for the motor's check)
+    torsion: TorsionRun | None = None  # the drive line's shafts behind torsionally stiff stages
+    crank_inertia: float = float("nan")  # the crank's rigid group with the mechanism's mean inertia [kg*m^2]
 
 
 def _frame_and_point(ctx: StageContext, table: TransientTable):
@@ -194,11 +207,19 @@ def run_transient(ctx: StageContext) -> Outcome:
     # the flywheel with every shaft of the one drive line, at the crank (as the steady state counts them)
     flywheel = 0.0 if fly is None else float(fly.flywheel) + fly.line_inertia
     machine = None if fly is None else fly.machine
-    exciters = [Exciter(ctx.mechanism, drive, flywheel, origin, angle, name="crank", machine=machine)]
+    line = None
+    if fly is not None:  # stiff stages: the shafts behind them turn on their own, the crank keeps its group
+        found_problems = _torsion_problems(ctx.problem)
+        if found_problems:
+            raise ProblemFileError(found_problems)
+        line, crank_group = torsional_line(fly.line, float(fly.flywheel))
+        flywheel = crank_group if line is not None else flywheel
+    exciters = [Exciter(ctx.mechanism, drive, flywheel, origin, angle, name="crank", machine=machine,
+                        torsion=line)]
     scenario = scenario_of(table)
     if table.twin is not None:
         exciters.append(Exciter(ctx.mechanism, drive, flywheel, tuple(table.twin.origin), angle, table.twin.mirror,
-                                name="twin", machine=machine))
+                                name="twin", machine=machine, torsion=line))
         scenario = replace(scenario, angle=(table.start_angle, table.twin.start_angle))
     model = coupled_model(exciters, frame, positions=table.positions)
     try:
@@ -220,8 +241,9 @@ def run_transient(ctx: StageContext) -> Outcome:
     motors_on = table.switch_off is None and table.prescribed_speed is None
     captured, final = capture(run, frequencies, free, table.band) if motors_on else (False, _last_speed(run))
     mean_load = float("nan") if fly is None else -float(np.ravel(fly.machine.moment.mean())[0])
+    crank_inertia = float(model.parts[0].c0[0] + model.parts[0].added)
     result = TransientRun(table, run, md, curve, found, point, point_name, direction, captured, final, free,
-                          motor_run(run), mean_load)
+                          motor_run(run), mean_load, torsion_run(run), crank_inertia)
     return _outcome(result)
 
 
@@ -314,6 +336,11 @@ def _outcome(r: TransientRun) -> Outcome:
         values |= motor_scalars(r.motor, run)
         failed += motor_checks(r.motor, run, r.free_speed, r.mean_load)
         series["transient_motor"] = motor_series(r.motor)
+    if r.torsion is not None:
+        values |= torsion_scalars(r.torsion, r.crank_inertia)
+        labels |= torsion_labels(r.torsion)
+        failed += torsion_checks(r.torsion)
+        series["transient_shafts"] = torsion_series(r.torsion)
         if run.scenario.switch_off is None and r.table.start_speed == 0.0 and "transient.time_to_speed" not in values \
                 and math.isfinite(r.free_speed):
             warnings.append(f"The induction motor did not bring the crank to 95 % of its speed "
@@ -324,7 +351,8 @@ def _outcome(r: TransientRun) -> Outcome:
                                          "amplitude": (r.curve.amplitude, "m"),
                                          "mount_force": (r.curve.mount_force, "N")}
     return Outcome(results=r, scalars=values, labels=labels, series=series,
-                   summary=tuple(k for k in (*SUMMARY, *MOTOR_SUMMARY) if k in values), warnings=tuple(warnings),
+                   summary=tuple(k for k in (*SUMMARY, *MOTOR_SUMMARY, *TORSION_SUMMARY) if k in values),
+                   warnings=tuple(warnings),
                    failed_checks=tuple(failed))
 
 
@@ -358,6 +386,7 @@ def check_transient(problem, table: TransientTable, source: str | None = None) -
     if table.prescribed_speed is not None and (frame_table is None or table.rigid):
         found.append(("transient.prescribed_speed", "a prescribed crank speed on a rigid frame leaves nothing to "
                                                     "run; give [frame] (and rigid = false)"))
+    found += _torsion_problems(problem)
     estimate = _estimated_evaluations(problem, table)
     if estimate > table.max_evaluations:
         found.append(("transient.duration", f"a run of {table.duration:g} s would take about {estimate:,.0f} "
@@ -367,6 +396,28 @@ def check_transient(problem, table: TransientTable, source: str | None = None) -
     return found
 
 
+def _torsion_problems(problem) -> list[tuple[str, str]]:
+    """A stiff stage of ``[drivetrain]`` with no inertia before it (a spring needs a mass on both sides), as
+    ``run`` would find it."""
+    drivetrain, fly = getattr(problem, "drivetrain", None), getattr(problem, "flywheel", None)
+    if drivetrain is None or fly is None:
+        return []
+    stiff = [k for k, s in enumerate(drivetrain.stages) if getattr(s, "torsional_stiffness", None) is not None]
+    if not stiff:
+        return []
+    try:
+        line = line_of(problem, fly)
+        # a flywheel still to be sized counts as present (its inertia is found by the run)
+        flywheel = line.at_crank(float(fly.inertia), line.flywheel_shaft) if fly.inertia is not None else 1.0
+        torsional_line(line, flywheel)
+    except InputError as exc:
+        text = str(exc).rstrip(".")
+        return [(f"drivetrain.stages[{stiff[0]}].torsional_stiffness", text[:1].lower() + text[1:])]
+    except ValueError:
+        return []  # a drive line given twice: [flywheel]'s own check names it
+    return []
+
+
 #: Evaluations of the equations per period of the fastest motion (crank turn or frame mode): DOP853 at the default
 #: tolerance takes about 165 on the rotary screen's run-up.
 EVALUATIONS_PER_PERIOD = 200
@@ -374,8 +425,8 @@ EVALUATIONS_PER_PERIOD = 200
 
 def _estimated_evaluations(problem, table: TransientTable) -> float:
     """The evaluations a run will take, from the duration and the fastest of the crank's speed (10 % above its
-    nominal ``[drive] speed``, or the prescribed or start speed) and the frame's modes (without the mechanism's
-    masses: the upper estimate)."""
+    nominal ``[drive] speed``, or the prescribed or start speed), the frame's modes (without the mechanism's
+    masses: the upper estimate) and the drive line's stiff stages."""
     drive = getattr(problem, "drive", None)
     speed = 1.1 * abs(float(getattr(drive, "speed", 0.0)))
     speed = max(speed, abs(table.start_speed))
@@ -389,7 +440,26 @@ def _estimated_evaluations(problem, table: TransientTable) -> float:
                                             .angular_frequencies)))
         except InputError:
             pass  # [frame]'s own check reports an unsupported frame
+    if table.prescribed_speed is None:
+        speed = max(speed, _spring_speed(problem))
     return EVALUATIONS_PER_PERIOD * table.duration * speed / (2.0 * math.pi)
+
+
+def _spring_speed(problem) -> float:
+    """sqrt(K / J) [rad/s] of the stiffest spring of the drive line against the inertia before it (a lower
+    estimate of its frequency; 0 for a rigid line or one ``check`` refuses elsewhere)."""
+    fly = getattr(problem, "flywheel", None)
+    if getattr(problem, "drivetrain", None) is None or fly is None:
+        return 0.0
+    try:
+        line = line_of(problem, fly)
+        flywheel = line.at_crank(float(fly.inertia), line.flywheel_shaft) if fly.inertia is not None else 0.0
+        torsion, _ = torsional_line(line, flywheel)
+    except (InputError, ValueError):
+        return 0.0
+    if torsion is None:
+        return 0.0
+    return max(math.sqrt(k / j) for k, j in zip(torsion.stiffness, torsion.inertias, strict=True))
 
 
 CAPABILITY = Capability(
@@ -399,7 +469,7 @@ CAPABILITY = Capability(
     step="machine in time",
     kinds=("mechanism", "rotary_screen"),
     labels=LABELS,
-    report="machdyn.report.transient_motor:sections",
+    report="machdyn.report.transient_drive:sections",
     check=check_transient,
     after=("flywheel", "frame"),
     result_type=TransientRun,

@@ -1,7 +1,8 @@
-"""Report sections of ``[transient]`` with its motor's electrical states: the machine in time
+"""Report sections of ``[transient]`` with its drive's own states: the machine in time
 (:mod:`machdyn.report.transient`), then, for an induction motor's dq model (``[transient.motor]``), its
-electromagnetic torque and stator current against time with the steady state's breakdown torque marked, and
-the run's electrical energy balance. Every plot takes an ``ax`` and returns it."""
+electromagnetic torque and stator current against time with the steady state's breakdown torque marked and the
+run's electrical energy balance, and, for a drive line with torsionally stiff stages, the torque through each
+against time. Every plot takes an ``ax`` and returns it."""
 
 from __future__ import annotations
 
@@ -52,10 +53,37 @@ def motor_rows(motor: Any, run: Any) -> list[tuple[str, str]]:
             ("work of the drive at the crank", format_value(float(run.works[0, -1])))]
 
 
+def plot_shaft_torques(torsion: Any, ax: Axes) -> Axes:
+    """Torque through each stiff stage at its output shaft over time."""
+    s = _thin(torsion.t.size)
+    for i, (name, torque) in enumerate(zip(torsion.line.names, torsion.shaft_torque, strict=True)):
+        ax.plot(torsion.t[s], torque[s], color=PALETTE[i % len(PALETTE)], lw=0.7, label=name)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("shaft torque [N·m]")
+    ax.set_title("Torque through the stiff stages")
+    ax.legend(fontsize=7)
+    return ax
+
+
+def _shafts_section(result: Any) -> tuple[str, str]:
+    torsion = result.torsion
+    fig = render_figure("transient-shafts", "Torque through the stiff stages", "", (6.5, 3.4),
+                        lambda f: plot_shaft_torques(torsion, f.subplots()), margins=(0.9, 0.3, 0.6, 0.45))
+    rows = [(name, format_value(peak)) for name, peak in zip(torsion.line.names, torsion.peak_torques, strict=True)]
+    intro = ("<p>The drive line's shafts joined by the stiff stages' torsional springs, each rigid group of shafts "
+             "integrated on its own; the torque each stage passes to its output shaft. The line's energy balance "
+             f"closes to {torsion.energy_error:.2g}.</p>")
+    body = intro + f"<figure class=\"plot\">{fig.svg}</figure>" + rows_html(rows, head=("stage", "peak torque [N·m]"))
+    return "Torque through the drive line's stiff stages", body
+
+
 def sections(outcome: Any) -> list[tuple[str, str]]:
-    """The report sections of a ``[transient]`` outcome, with its motor's when it has electrical states."""
+    """The report sections of a ``[transient]`` outcome, with its motor's when it has electrical states and its
+    drive line's when stages are stiff."""
     out = machine_sections(outcome)
     result = outcome.results
+    if getattr(result, "torsion", None) is not None:
+        out.append(_shafts_section(result))
     motor = getattr(result, "motor", None)
     if motor is None:
         return out
