@@ -174,6 +174,29 @@ def test_a_file_with_a_stiff_gear_pair_reports_its_shaft_torque():
     assert "stage_2_torque" in outcome.series["transient_shafts"]
 
 
+def test_a_file_with_the_motors_electrical_states_behind_the_stiff_stage_warns_of_another_motor():
+    # Krause's 3-hp machine on a 60 Hz supply (1800 rpm) where [flywheel.motor] is a 1500 rpm motor: the run
+    # goes on, both balances closed, and says that the two motors differ
+    text = LINE.replace('start_speed = "300 rpm"', 'start_speed = "300 rpm"\nduration = "0.3 s"').replace(
+        'duration = "0.6 s"\n', "") + """
+[transient.motor]
+model = "induction-dq"
+stator_resistance = "0.435 ohm"
+rotor_resistance = "0.816 ohm"
+stator_leakage_reactance = "0.754 ohm"
+rotor_leakage_reactance = "0.754 ohm"
+magnetizing_reactance = "26.13 ohm"
+pole_pairs = 2
+line_voltage = "220 V"
+frequency = "60 Hz"
+"""
+    result = run_problem(text)
+    assert not result.failed_checks
+    assert any("1800 rpm synchronous" in w and "1500 rpm" in w for w in result.warnings), result.warnings
+    values = {k: v["value"] for k, v in result.results_json()["scalars"].items()}
+    assert values["transient.motor_energy_error"] < 1e-6 and values["transient.shaft_energy_error"] < 1e-6
+
+
 def test_a_stiff_stage_is_checked_in_the_file():
     text = LINE.replace('torsional_stiffness = "20 kN*m/rad"', 'torsional_stiffness = "-1 N*m/rad"')
     with pytest.raises(ProblemFileError, match=r"drivetrain\.stages\[1\]\.torsional_stiffness: must be > 0"):

@@ -244,7 +244,17 @@ def run_transient(ctx: StageContext) -> Outcome:
     crank_inertia = float(model.parts[0].c0[0] + model.parts[0].added)
     result = TransientRun(table, run, md, curve, found, point, point_name, direction, captured, final, free,
                           motor_run(run), mean_load, torsion_run(run), crank_inertia)
-    return _outcome(result)
+    outcome = _outcome(result)
+    curve_speed = float(getattr(getattr(fly, "drive", None), "synchronous_speed", float("nan")))
+    if table.motor is not None and drive is not None and abs(drive.synchronous_speed / curve_speed - 1.0) > 0.02:
+        # the gear was chosen for [flywheel.motor]'s synchronous speed: the crank runs at another speed here
+        rpm = 30.0 / math.pi
+        outcome = replace(outcome, warnings=(*outcome.warnings, (
+            f"[transient.motor] turns at {drive.synchronous_speed * rpm:.5g} rpm synchronous "
+            f"({table.motor.frequency:g} Hz, {table.motor.pole_pairs} pole pairs), [flywheel.motor] at "
+            f"{curve_speed * rpm:.5g} rpm: the gear chosen for the one turns the crank at another speed with the "
+            "other; give both the same motor")))
+    return outcome
 
 
 def _free_speed(fly, drive) -> float:
