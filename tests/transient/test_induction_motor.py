@@ -127,3 +127,10 @@ def test_the_motor_table_is_checked_with_every_mistake_and_its_path():
         paths = {p for p, _ in caught.value.problems}
         assert {"transient.motor.model", "transient.motor.stator_resistance",
                 "transient.motor.frequency"} <= paths, paths
+
+
+def test_the_motor_table_needs_an_induction_motor_in_flywheel():
+    text = _text().replace('kind = "induction"', 'kind = "constant_torque"')
+    for step in (check_problem, run_problem):
+        with pytest.raises(ProblemFileError, match=r"transient\.motor: an induction motor's electrical model"):
+            step(text)

@@ -396,6 +396,11 @@ def check_transient(problem, table: TransientTable, source: str | None = None) -
     if table.prescribed_speed is not None and (frame_table is None or table.rigid):
         found.append(("transient.prescribed_speed", "a prescribed crank speed on a rigid frame leaves nothing to "
                                                     "run; give [frame] (and rigid = false)"))
+    fly = getattr(problem, "flywheel", None)
+    if table.motor is not None and fly is not None and fly.motor.kind not in ("select", "induction"):
+        found.append(("transient.motor", f"an induction motor's electrical model stands in for the induction motor of "
+                                         f"[flywheel.motor] (its gear and rotor); got kind = \"{fly.motor.kind}\" "
+                                         "there: give kind = \"induction\" (or \"select\") with the same motor"))
     found += _torsion_problems(problem)
     estimate = _estimated_evaluations(problem, table)
     if estimate > table.max_evaluations:
