@@ -41,7 +41,7 @@ from pydantic import Field, model_validator
 
 from ..dynamics.driveline import CRANK, MOTOR
 from ..dynamics.driveline_file import resolve_shaft
-from ..problem.fields import Angle, Inertia, Time, Torque
+from ..problem.fields import Angle, Inertia, RotaryDamping, Time, Torque, TorsionalStiffness
 from ..problem.schema import Spec
 from .gear_stage import GearTeethTable
 from .geometry_tables import BrakeGeometry, BrakeHeating, ClutchGeometry
@@ -56,11 +56,18 @@ class StageTable(Spec):
     name: str = ""
     shaft: str = ""   # a name for the stage's output shaft (the flywheel, clutch and brake may name it)
     teeth: GearTeethTable | None = None        # a gear stage's teeth: Lewis bending and Hertz contact checks
+    # the stage's shafts and coupling as a torsional spring and damper, referred to its output shaft ([transient]
+    # integrates each shaft on its own; rigid when not given)
+    torsional_stiffness: TorsionalStiffness | None = None
+    torsional_damping: RotaryDamping = 0.0
 
     @model_validator(mode="after")
     def _teeth_on_gears(self):
         if self.teeth is not None and self.kind != "gear":
             raise ValueError(f"teeth belong to a gear stage; this stage is a {self.kind}")
+        if self.torsional_damping > 0 and self.torsional_stiffness is None:
+            raise ValueError(f"torsional_damping ({self.torsional_damping:g} N*m*s/rad) needs torsional_stiffness: a "
+                             "rigid stage has nothing to damp")
         return self
 
 

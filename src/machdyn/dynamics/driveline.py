@@ -39,12 +39,17 @@ from ..errors import InputError
 @dataclass(frozen=True)
 class Stage:
     """A gear or belt stage: ``ratio`` i = input speed / output speed (> 0), ``efficiency`` η in (0, 1],
-    ``kind`` ("gear", "belt", "chain") for the drawing and the report."""
+    ``kind`` ("gear", "belt", "chain") for the drawing and the report; optionally its shafts and coupling as a
+    torsional spring of ``torsional_stiffness`` k [N·m/rad] with a damper ``torsional_damping`` c [N·m·s/rad],
+    referred to the output shaft: the stage passes k (θ_in / i − θ_out) + c (ω_in / i − ω_out) to it (None:
+    rigid). Only the machine in time (``[transient]``) reads them; the other analyses take the line as rigid."""
 
     ratio: float
     efficiency: float = 1.0
     kind: str = "gear"
     name: str = ""
+    torsional_stiffness: float | None = None
+    torsional_damping: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -65,6 +70,13 @@ class DriveTrain:
             if not (0.0 < s.efficiency <= 1.0):
                 raise InputError(f"Stage {k + 1} ({s.name or s.kind}): the efficiency must be in (0, 1]; got "
                                  f"{s.efficiency!r}.")
+            if s.torsional_stiffness is not None and not (np.isfinite(s.torsional_stiffness)
+                                                          and s.torsional_stiffness > 0):
+                raise InputError(f"Stage {k + 1} ({s.name or s.kind}): the torsional stiffness must be > 0 N*m/rad; "
+                                 f"got {s.torsional_stiffness!r}.")
+            if not (np.isfinite(s.torsional_damping) and s.torsional_damping >= 0):
+                raise InputError(f"Stage {k + 1} ({s.name or s.kind}): the torsional damping must be >= 0 "
+                                 f"N*m*s/rad; got {s.torsional_damping!r}.")
         for k, j in enumerate(self.shaft_inertia):
             if not (np.isfinite(j) and j >= 0):
                 raise InputError(f"Shaft {k}: the inertia must be >= 0 kg*m^2; got {j!r}.")

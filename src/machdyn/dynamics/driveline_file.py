@@ -54,7 +54,8 @@ def resolve_shaft(value: int | str, drivetrain: Any) -> int:
 
 
 def _train(drivetrain: Any, motor: Any) -> DriveTrain:
-    stages = tuple(Stage(s.ratio, s.efficiency, s.kind, s.name) for s in drivetrain.stages)
+    stages = tuple(Stage(s.ratio, s.efficiency, s.kind, s.name, getattr(s, "torsional_stiffness", None),
+                         float(getattr(s, "torsional_damping", 0.0))) for s in drivetrain.stages)
     rotor = float(drivetrain.motor_inertia)
     if "motor_inertia" not in drivetrain.model_fields_set and motor is not None:
         rotor = float(motor.rotor_inertia)  # given once, in [flywheel.motor]: the motor shaft's inertia

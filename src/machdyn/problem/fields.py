@@ -123,6 +123,10 @@ PositiveTorque = quantity("N*m", "torque", ">0")
 SpecificHeat = quantity("J/(kg*K)", "specific_heat", ">0")
 HeatTransfer = quantity("W/K", "heat_transfer", ">=0")
 TemperatureDifference = quantity("K", "temperature_difference", ">0")
+Resistance = quantity("ohm", "resistance", ">0")
+Voltage = quantity("V", "voltage", ">0")
+PositiveFrequency = quantity("Hz", "frequency", ">0")
+TorsionalStiffness = quantity("N*m/rad", "torsional_stiffness", ">0")
 
 Point = tuple[Length, Length]  # type: ignore[valid-type]  # Length is an Annotated alias built at import
 

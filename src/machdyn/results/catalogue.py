@@ -316,6 +316,8 @@ RUN_TIME: tuple[Quantity, ...] = (
     *CAM_STROKES,
     Quantity("transient.passage_<index>.<figure>", "Transient: resonance passage {index}, {figure}",
              producer="transient"),
+    Quantity("transient.stage_<index>.peak_torque", "Transient: peak torque through stiff stage {index}", "N*m",
+             producer="transient"),
     Quantity("check_<name*>_utilisation", "Check {name}, utilisation", producer="screw_conveyor"),
 )
 

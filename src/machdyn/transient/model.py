@@ -80,6 +80,9 @@ class Exciter:
     speed_loads : speed-dependent loads of :mod:`machdyn.dynamics.equivalent` (dampers, bearing friction).
     name : label.
     machine : its equivalent machine, if already made (with the same ``speed_loads``).
+    torsion : the drive line's shafts upstream of a torsionally stiff stage
+        (:class:`~machdyn.transient.torsion.TorsionalLine`), or None for a rigid line; ``flywheel`` is then the
+        inertia of the crank's rigid group only, and the drive's torque acts on the motor's group.
     """
 
     mechanism: Mechanism
@@ -91,6 +94,7 @@ class Exciter:
     speed_loads: tuple = ()
     name: str = "crank"
     machine: EquivalentMachine | None = field(default=None, repr=False)
+    torsion: Any = None
 
     def __post_init__(self) -> None:
         check_finite(f"flywheel inertia of exciter '{self.name}'", self.flywheel, "kg*m^2")

@@ -23,7 +23,9 @@ import numpy as np
 from ..errors import InputError, MachdynError
 from ..vibration.modes import modes
 from . import fast
+from .electric import electrical_drives
 from .model import CoupledModel
+from .torsion import torsional_states
 
 __all__ = ["Scenario", "Transient", "TransientLimitError", "run_scenario"]
 
@@ -109,7 +111,10 @@ class Transient:
     line's direction); works (4 x T) [J]: of the drives, of the loads on the machine (process loads, dampers,
     load step: negative when they take energy), of the mounts' dampers (dissipated), of the brake (dissipated);
     energy (T) [J] kinetic plus potential; ended: why the run ended ("duration", "stopped", "rolled back");
-    evaluations of the equations; seconds of wall-clock time."""
+    evaluations of the equations; seconds of wall-clock time; electric: the rows of the drives with electrical
+    states (:mod:`machdyn.transient.electric`, read by :func:`~machdyn.transient.electric.motor_run`), or None;
+    torsion: the rows of the drive line's shafts behind stiff stages (read by
+    :func:`~machdyn.transient.torsion.torsion_run`), or None."""
 
     model: CoupledModel
     scenario: Scenario
@@ -125,6 +130,8 @@ class Transient:
     ended: str
     evaluations: int
     seconds: float
+    electric: dict | None = None
+    torsion: dict | None = None
 
     @property
     def motor_work(self) -> float:
@@ -159,7 +166,7 @@ def _torque_function(drive) -> Callable[[float], float] | None:
     return lambda w: float(np.asarray(drive.torque_at(w)))
 
 
-def _shifted(drive, factor: float):
+def _shifted(drive, factor: float, time: float = 0.0):
     """The drive with its supply frequency (induction motor) or its flow (hydraulic motor) times ``factor``.
 
     Under constant volts per hertz an induction motor's torque-speed curve moves along the speed axis with the
@@ -169,6 +176,8 @@ def _shifted(drive, factor: float):
     flow over its displacement."""
     if drive is None or factor == 1.0:
         return drive
+    if hasattr(drive, "with_supply"):  # a motor with its electrical states: its supply's frequency and voltage
+        return drive.with_supply(factor, time)
     name = getattr(drive, "name", "")
     if name == "induction motor":
         ns = float(drive.synchronous_speed)
@@ -312,19 +321,36 @@ def run_scenario(model: CoupledModel, scenario: Scenario) -> Transient:
         rhs = rhs_prescribed
         if fast.usable(model):
             rhs = rhs_prescribed = fast.prescribed_right_hand_side(model, profile, state, check_budget, brake_width)
+    drive_list = list(drives)
+    torsion = torsional_states(model, y0.size) if prescribed is None else None
+    atol = _tolerances(y0, n, nq, prescribed is not None, reference, model)
+    if torsion is not None:  # the drive line's shafts behind stiff stages, each group on its own
+        rhs = torsion.wrap(rhs, state)
+        y0 = np.concatenate([y0, torsion.initial(phi0, w0)])
+        atol = np.concatenate([atol, torsion.tolerances(reference)])
+    electric = electrical_drives(drive_list, y0.size, n, torsion) if prescribed is None else None
+    if electric is not None:  # the motors' flux linkages integrated with the machine
+        rhs = electric.wrap(rhs, state)
+        y0 = np.concatenate([y0, electric.initial()])
+        atol = np.concatenate([atol, electric.tolerances()])
     fastest = reference
     if frame is not None:
         fastest = max(fastest, float(np.max(modes(frame).angular_frequencies)))
+    if torsion is not None:
+        fastest = max(fastest, torsion.fastest(model))
     step = 2.0 * math.pi / fastest / max(int(scenario.samples_per_period), 4)
     samples = int(min(max(scenario.duration / step, 200), 400_000))
     t_out = np.linspace(0.0, scenario.duration, samples + 1)
-    method = _method(model, scenario, reference, fastest) if scenario.method == "auto" else scenario.method
+    method = scenario.method
+    if method == "auto":
+        # the motor's electrical states are stiff; a stiff stage's spring is a fast oscillation, which DOP853
+        # follows with the works' balance closed to 1e-8 (LSODA's Adams steps leave 1e-6 on a slow machine)
+        method = "LSODA" if electric is not None else _method(model, scenario, reference, fastest)
     cuts = [0.0, *scenario.events(), scenario.duration]
     pieces_t: list[np.ndarray] = []
     pieces_y: list[np.ndarray] = []
     ended = "duration"
     y = y0
-    drive_list = list(drives)
 
     def stopped(t, y):  # a crank come to rest (below 0.1 % of the reference speed, the motors off) or rolling back
         # (under its drive)
@@ -335,6 +361,8 @@ def run_scenario(model: CoupledModel, scenario: Scenario) -> Transient:
     segments = []
     for start, end in zip(cuts[:-1], cuts[1:], strict=True):
         _apply_events(scenario, start, state, drive_list)
+        if electric is not None:
+            y = electric.enter(y, state)
         segments.append((start, dict(state)))
         mask = (t_out >= start) & (t_out <= end)
         t_eval = t_out[mask]
@@ -345,8 +373,7 @@ def run_scenario(model: CoupledModel, scenario: Scenario) -> Transient:
         events = [stopped] if prescribed is None and (state["on"] or np.any(y[n:2 * n] > 1e-3 * reference)) else None
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", UserWarning)
-            sol = solve_ivp(rhs, (start, end), y, method=method, rtol=scenario.rtol,
-                            atol=_tolerances(y0, n, nq, prescribed is not None, reference, model), t_eval=t_eval,
+            sol = solve_ivp(rhs, (start, end), y, method=method, rtol=scenario.rtol, atol=atol, t_eval=t_eval,
                             events=events)
         if not sol.success or not np.all(np.isfinite(sol.y)):
             raise TransientLimitError(f"The time integration failed at t = {sol.t[-1] if sol.t.size else start:.4g}"
@@ -367,7 +394,7 @@ def run_scenario(model: CoupledModel, scenario: Scenario) -> Transient:
     if prescribed is not None:
         held = np.stack([rhs_prescribed(ti, y_all[:, i], True) for i, ti in enumerate(t_all)], axis=-1)
     return _result(model, scenario, t_all, y_all, n, nq, profile if prescribed else None, held, segments, ended,
-                   counter)
+                   counter, electric, torsion)
 
 
 def _method(model: CoupledModel, scenario: Scenario, reference: float, fastest: float) -> str:
@@ -395,7 +422,7 @@ def _apply_events(scenario: Scenario, start: float, state: dict, drives: list) -
     if scenario.speed_change_time is not None and start >= scenario.speed_change_time and not state.get("changed"):
         state["changed"] = True
         for k, d in enumerate(drives):
-            drives[k] = _shifted(d, scenario.speed_factor)
+            drives[k] = _shifted(d, scenario.speed_factor, start)
         state["torques"] = [_torque_function(d) for d in drives]
 
 
@@ -408,11 +435,12 @@ def _tolerances(y0, n, nq, prescribed, reference, model):
                            np.full(nq, 1e-13 * reference), np.full(4, 1e-9)])
 
 
-def _result(model, scenario, t, y, n, nq, profile, held, segments, ended, counter):
+def _result(model, scenario, t, y, n, nq, profile, held, segments, ended, counter, electric=None, torsion=None):
+    rows = twists = None
     if profile is None:
         phi, omega = y[:n], y[n:2 * n]
         q, dq = y[2 * n:2 * n + nq], y[2 * n + nq:2 * n + 2 * nq]
-        works = y[2 * n + 2 * nq:]
+        works = y[2 * n + 2 * nq:2 * n + 2 * nq + 4]
         torque = np.zeros_like(omega)
         starts = np.array([s for s, _ in segments])
         for i, ti in enumerate(t):
@@ -422,10 +450,25 @@ def _result(model, scenario, t, y, n, nq, profile, held, segments, ended, counte
                 for k in range(n):
                     fn = state["torques"][k]
                     torque[k, i] = fn(float(omega[k, i])) if fn is not None else 0.0
+        if electric is not None:  # the motors' electromagnetic torque at the crank, from their flux linkages
+            rows = {"index": list(electric.index), "drives": [electric.drives[k] for k in electric.index],
+                    "rows": y[electric.offset:]}
+            for j, k in enumerate(electric.index):
+                motor = electric.drives[k]
+                te = motor.electromagnetic_torque(y[electric.offset + electric.width * j:][:4])
+                torque[k] = motor.ratio * np.where(te >= 0.0, te * motor.efficiency, te / motor.efficiency)
+        if torsion is not None:  # the crank is driven by the last stiff stage's spring
+            twists = {"lines": dict(torsion.lines),
+                      "rows": {k: y[torsion.starts[k]:torsion.starts[k] + 2 * line.groups + 2]
+                               for k, line in torsion.lines.items()}}
+            for k, line in torsion.lines.items():
+                g, base = line.groups, torsion.starts[k]
+                torque[k] = (line.stiffness[-1] * (y[base + g - 1] - phi[k])
+                             + line.damping[-1] * (y[base + 2 * g - 1] - omega[k]))
     else:
         phi, omega, _ = (np.stack(v, axis=-1) for v in zip(*(profile(ti) for ti in t), strict=True))
         q, dq = y[:3], y[3:6]
-        works = y[6:]
+        works = y[6:10]
         torque = held
     energy = np.array([model.energy(phi[:, i], omega[:, i], q[:, i], dq[:, i]) for i in range(t.size)])
     if model.frame is not None:
@@ -436,4 +479,4 @@ def _result(model, scenario, t, y, n, nq, profile, held, segments, ended, counte
     else:
         force = np.zeros((0, t.size))
     return Transient(model, scenario, t, phi, omega, torque, q, dq, force, works, energy, ended, counter["calls"],
-                     time.perf_counter() - counter["start"])
+                     time.perf_counter() - counter["start"], rows, twists)

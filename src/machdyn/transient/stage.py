@@ -12,6 +12,7 @@ from typing import Any, Literal
 import numpy as np
 from pydantic import Field, model_validator
 
+from ..dynamics.driveline_file import line_of
 from ..dynamics.drives import ConstantSpeed
 from ..dynamics.simulate import balance_speed
 from ..dynamics.stage import FlywheelRun
@@ -22,9 +23,20 @@ from ..problem.schema import Name, Spec
 from ..results.labels import Label
 from ..vibration.modes import Modes, modes
 from ..vibration.study import build_frame
+from .electric import MotorRun, motor_run
 from .model import Exciter, carried_frame, coupled_model
+from .motor_table import MOTOR_LABELS, MOTOR_SUMMARY, MotorSpec, dq_motor, motor_checks, motor_scalars, motor_series
 from .passage import AmplitudeCurve, Passage, amplitude_curve, capture, passages
 from .run import Scenario, Transient, TransientLimitError, run_scenario
+from .torsion import TorsionRun, torsion_run, torsional_line
+from .torsion_results import (
+    TORSION_LABELS,
+    TORSION_SUMMARY,
+    torsion_checks,
+    torsion_labels,
+    torsion_scalars,
+    torsion_series,
+)
 
 __all__ = ["CAPABILITY", "TransientRun", "TransientTable", "TwinSpec", "check_transient", "run_transient",
            "scenario_of"]
@@ -46,7 +58,8 @@ class TwinSpec(Spec):
 class TransientTable(Spec):
     """``[transient]``: a scenario of the machine in time. The drive and flywheel are those of ``[flywheel]``;
     the frame and its mounts those of ``[frame]`` (``rigid = true``, or a file without ``[frame]``: a rigid
-    ground)."""
+    ground); ``[transient.motor]`` replaces the drive's torque-speed curve by an induction motor's electrical
+    model (through the same gear)."""
 
     duration: Time
     start_speed: AngularVelocity = 0.0
@@ -71,6 +84,7 @@ class TransientTable(Spec):
     max_evaluations: int = Field(400_000, ge=1000, le=100_000_000, strict=True)
     max_seconds: Time = 120.0
     twin: TwinSpec | None = None
+    motor: MotorSpec | None = None
 
     @model_validator(mode="after")
     def _consistent(self):
@@ -86,6 +100,9 @@ class TransientTable(Spec):
             raise ValueError("speed_change_time needs speed_factor (the new supply frequency / the old), not 1")
         if self.prescribed_speed is None and self.prescribed_acceleration != 0.0:
             raise ValueError("prescribed_acceleration needs prescribed_speed (the speed at the start)")
+        if self.prescribed_speed is not None and self.motor is not None:
+            raise ValueError("[transient.motor] drives the crank; a prescribed_speed leaves it nothing to do: give "
+                             "one of them")
         if self.prescribed_speed is not None and self.prescribed_speed < 0:
             raise ValueError(f"prescribed_speed must be >= 0 rad/s; got {self.prescribed_speed:g} rad/s")
         return self
@@ -114,6 +131,8 @@ LABELS = {
     "transient.evaluations": Label("Transient: evaluations of the equations of motion", ""),
     "transient.phase_difference": Label("Transient: phase of the crank less the twin's over the last turn "
                                         "(synchronised exciters)", "rad", "deg"),
+    **MOTOR_LABELS,
+    **TORSION_LABELS,
 }
 
 SUMMARY = ("transient.final_speed", "transient.captured", "transient.phase_difference", "transient.peak_amplitude",
@@ -137,6 +156,10 @@ class TransientRun:
     captured: bool
     final_speed: float
     free_speed: float
+    motor: MotorRun | None = None  # the electrical side of an induction motor's dq model ([transient.motor])
+    mean_load: float = float("nan")  # the machine's mean load at the crank [N*m] (for the motor's check)
+    torsion: TorsionRun | None = None  # the drive line's shafts behind torsionally stiff stages
+    crank_inertia: float = float("nan")  # the crank's rigid group with the mechanism's mean inertia [kg*m^2]
 
 
 def _frame_and_point(ctx: StageContext, table: TransientTable):
@@ -179,14 +202,24 @@ def run_transient(ctx: StageContext) -> Outcome:
                                       "so the machine cannot be run in time",))
     frame, point, point_name, direction, origin, angle = _frame_and_point(ctx, table)
     drive = None if fly is None else fly.drive
+    if table.motor is not None and drive is not None:  # the motor's electrical model, through the line's gear
+        drive = dq_motor(table.motor, drive)
     # the flywheel with every shaft of the one drive line, at the crank (as the steady state counts them)
     flywheel = 0.0 if fly is None else float(fly.flywheel) + fly.line_inertia
     machine = None if fly is None else fly.machine
-    exciters = [Exciter(ctx.mechanism, drive, flywheel, origin, angle, name="crank", machine=machine)]
+    line = None
+    if fly is not None:  # stiff stages: the shafts behind them turn on their own, the crank keeps its group
+        found_problems = _torsion_problems(ctx.problem)
+        if found_problems:
+            raise ProblemFileError(found_problems)
+        line, crank_group = torsional_line(fly.line, float(fly.flywheel))
+        flywheel = crank_group if line is not None else flywheel
+    exciters = [Exciter(ctx.mechanism, drive, flywheel, origin, angle, name="crank", machine=machine,
+                        torsion=line)]
     scenario = scenario_of(table)
     if table.twin is not None:
         exciters.append(Exciter(ctx.mechanism, drive, flywheel, tuple(table.twin.origin), angle, table.twin.mirror,
-                                name="twin", machine=machine))
+                                name="twin", machine=machine, torsion=line))
         scenario = replace(scenario, angle=(table.start_angle, table.twin.start_angle))
     model = coupled_model(exciters, frame, positions=table.positions)
     try:
@@ -207,8 +240,21 @@ def run_transient(ctx: StageContext) -> Outcome:
     free = _free_speed(fly, drive)
     motors_on = table.switch_off is None and table.prescribed_speed is None
     captured, final = capture(run, frequencies, free, table.band) if motors_on else (False, _last_speed(run))
-    result = TransientRun(table, run, md, curve, found, point, point_name, direction, captured, final, free)
-    return _outcome(result)
+    mean_load = float("nan") if fly is None else -float(np.ravel(fly.machine.moment.mean())[0])
+    crank_inertia = float(model.parts[0].c0[0] + model.parts[0].added)
+    result = TransientRun(table, run, md, curve, found, point, point_name, direction, captured, final, free,
+                          motor_run(run), mean_load, torsion_run(run), crank_inertia)
+    outcome = _outcome(result)
+    curve_speed = float(getattr(getattr(fly, "drive", None), "synchronous_speed", float("nan")))
+    if table.motor is not None and drive is not None and abs(drive.synchronous_speed / curve_speed - 1.0) > 0.02:
+        # the gear was chosen for [flywheel.motor]'s synchronous speed: the crank runs at another speed here
+        rpm = 30.0 / math.pi
+        outcome = replace(outcome, warnings=(*outcome.warnings, (
+            f"[transient.motor] turns at {drive.synchronous_speed * rpm:.5g} rpm synchronous "
+            f"({table.motor.frequency:g} Hz, {table.motor.pole_pairs} pole pairs), [flywheel.motor] at "
+            f"{curve_speed * rpm:.5g} rpm: the gear chosen for the one turns the crank at another speed with the "
+            "other; give both the same motor")))
+    return outcome
 
 
 def _free_speed(fly, drive) -> float:
@@ -296,12 +342,27 @@ def _outcome(r: TransientRun) -> Outcome:
     if any(not p.completed for p in r.passages) and not r.captured:
         warnings.append("The run ends inside the band of a frame mode; lengthen it to see the whole passage.")
     series = {"transient": _columns(r, amp)}
+    if r.motor is not None:
+        values |= motor_scalars(r.motor, run)
+        failed += motor_checks(r.motor, run, r.free_speed, r.mean_load)
+        series["transient_motor"] = motor_series(r.motor)
+    if r.torsion is not None:
+        values |= torsion_scalars(r.torsion, r.crank_inertia)
+        labels |= torsion_labels(r.torsion)
+        failed += torsion_checks(r.torsion)
+        series["transient_shafts"] = torsion_series(r.torsion)
+        if run.scenario.switch_off is None and r.table.start_speed == 0.0 and "transient.time_to_speed" not in values \
+                and math.isfinite(r.free_speed):
+            warnings.append(f"The induction motor did not bring the crank to 95 % of its speed "
+                            f"({r.free_speed * 30 / math.pi:.4g} rpm) within the run; lengthen it to see the start "
+                            "end.")
     if r.curve.speed.size:
         series["transient_amplitude"] = {"speed": (r.curve.speed, "rad/s"), "time": (r.curve.time, "s"),
                                          "amplitude": (r.curve.amplitude, "m"),
                                          "mount_force": (r.curve.mount_force, "N")}
     return Outcome(results=r, scalars=values, labels=labels, series=series,
-                   summary=tuple(k for k in SUMMARY if k in values), warnings=tuple(warnings),
+                   summary=tuple(k for k in (*SUMMARY, *MOTOR_SUMMARY, *TORSION_SUMMARY) if k in values),
+                   warnings=tuple(warnings),
                    failed_checks=tuple(failed))
 
 
@@ -335,6 +396,12 @@ def check_transient(problem, table: TransientTable, source: str | None = None) -
     if table.prescribed_speed is not None and (frame_table is None or table.rigid):
         found.append(("transient.prescribed_speed", "a prescribed crank speed on a rigid frame leaves nothing to "
                                                     "run; give [frame] (and rigid = false)"))
+    fly = getattr(problem, "flywheel", None)
+    if table.motor is not None and fly is not None and fly.motor.kind not in ("select", "induction"):
+        found.append(("transient.motor", f"an induction motor's electrical model stands in for the induction motor of "
+                                         f"[flywheel.motor] (its gear and rotor); got kind = \"{fly.motor.kind}\" "
+                                         "there: give kind = \"induction\" (or \"select\") with the same motor"))
+    found += _torsion_problems(problem)
     estimate = _estimated_evaluations(problem, table)
     if estimate > table.max_evaluations:
         found.append(("transient.duration", f"a run of {table.duration:g} s would take about {estimate:,.0f} "
@@ -344,6 +411,28 @@ def check_transient(problem, table: TransientTable, source: str | None = None) -
     return found
 
 
+def _torsion_problems(problem) -> list[tuple[str, str]]:
+    """A stiff stage of ``[drivetrain]`` with no inertia before it (a spring needs a mass on both sides), as
+    ``run`` would find it."""
+    drivetrain, fly = getattr(problem, "drivetrain", None), getattr(problem, "flywheel", None)
+    if drivetrain is None or fly is None:
+        return []
+    stiff = [k for k, s in enumerate(drivetrain.stages) if getattr(s, "torsional_stiffness", None) is not None]
+    if not stiff:
+        return []
+    try:
+        line = line_of(problem, fly)
+        # a flywheel still to be sized counts as present (its inertia is found by the run)
+        flywheel = line.at_crank(float(fly.inertia), line.flywheel_shaft) if fly.inertia is not None else 1.0
+        torsional_line(line, flywheel)
+    except InputError as exc:
+        text = str(exc).rstrip(".")
+        return [(f"drivetrain.stages[{stiff[0]}].torsional_stiffness", text[:1].lower() + text[1:])]
+    except ValueError:
+        return []  # a drive line given twice: [flywheel]'s own check names it
+    return []
+
+
 #: Evaluations of the equations per period of the fastest motion (crank turn or frame mode): DOP853 at the default
 #: tolerance takes about 165 on the rotary screen's run-up.
 EVALUATIONS_PER_PERIOD = 200
@@ -351,8 +440,8 @@ EVALUATIONS_PER_PERIOD = 200
 
 def _estimated_evaluations(problem, table: TransientTable) -> float:
     """The evaluations a run will take, from the duration and the fastest of the crank's speed (10 % above its
-    nominal ``[drive] speed``, or the prescribed or start speed) and the frame's modes (without the mechanism's
-    masses: the upper estimate)."""
+    nominal ``[drive] speed``, or the prescribed or start speed), the frame's modes (without the mechanism's
+    masses: the upper estimate) and the drive line's stiff stages."""
     drive = getattr(problem, "drive", None)
     speed = 1.1 * abs(float(getattr(drive, "speed", 0.0)))
     speed = max(speed, abs(table.start_speed))
@@ -366,7 +455,26 @@ def _estimated_evaluations(problem, table: TransientTable) -> float:
                                             .angular_frequencies)))
         except InputError:
             pass  # [frame]'s own check reports an unsupported frame
+    if table.prescribed_speed is None:
+        speed = max(speed, _spring_speed(problem))
     return EVALUATIONS_PER_PERIOD * table.duration * speed / (2.0 * math.pi)
+
+
+def _spring_speed(problem) -> float:
+    """sqrt(K / J) [rad/s] of the stiffest spring of the drive line against the inertia before it (a lower
+    estimate of its frequency; 0 for a rigid line or one ``check`` refuses elsewhere)."""
+    fly = getattr(problem, "flywheel", None)
+    if getattr(problem, "drivetrain", None) is None or fly is None:
+        return 0.0
+    try:
+        line = line_of(problem, fly)
+        flywheel = line.at_crank(float(fly.inertia), line.flywheel_shaft) if fly.inertia is not None else 0.0
+        torsion, _ = torsional_line(line, flywheel)
+    except (InputError, ValueError):
+        return 0.0
+    if torsion is None:
+        return 0.0
+    return max(math.sqrt(k / j) for k, j in zip(torsion.stiffness, torsion.inertias, strict=True))
 
 
 CAPABILITY = Capability(
@@ -376,7 +484,7 @@ CAPABILITY = Capability(
     step="machine in time",
     kinds=("mechanism", "rotary_screen"),
     labels=LABELS,
-    report="machdyn.report.transient:sections",
+    report="machdyn.report.transient_drive:sections",
     check=check_transient,
     after=("flywheel", "frame"),
     result_type=TransientRun,
