@@ -157,6 +157,133 @@ def shaft_balance(n, n_single, repeats, rng):
     return _entry(n, n_single, fast, slow, _agreement(fast[0][:n_single], slow[0]))
 
 
+_FOUR_BAR = """
+[mechanism]
+type = "four_bar"
+crank = {length = "40 mm", mass = "0.5 kg"}
+coupler = {length = "120 mm", mass = "2 kg"}
+rocker = {length = "80 mm", mass = "1 kg"}
+ground = {length = "100 mm"}
+
+[drive]
+speed = "60 rad/s"
+positions = 72
+"""
+
+_OPTIMISE = """
+[optimise]
+population = 5
+generations = 1
+
+[[optimise.variables]]
+parameter = "mechanism.coupler.mass"
+lower = "0.5 kg"
+upper = "3 kg"
+
+[[optimise.variables]]
+parameter = "mechanism.crank.length"
+lower = "30 mm"
+upper = "50 mm"
+
+[[optimise.objectives]]
+result = "{objective}"
+"""
+
+
+def _in_the_optimiser(text, objective, n, repeats, rng):
+    """(problem, designs x, the optimiser's evaluator, rate): the optimiser's own evaluator of ``text`` with an
+    ``[optimise]`` table on ``objective``, timed on n random designs (coupler mass, crank length)."""
+    from machdyn.reading import load_problem
+    from machdyn.studies.optimisation.study import setup
+
+    problem = load_problem(text + _OPTIMISE.format(objective=objective))
+    ev = setup(problem, problem.optimise)
+    x = np.column_stack([rng.uniform(0.5, 3.0, n), rng.uniform(0.03, 0.05, n)])
+    ev(x[:8])  # compile the engine's kernels once
+    return problem, x, ev, _rate(lambda: ev(x)[0], n, repeats)
+
+
+def balance(n, n_single, repeats, rng):
+    from machdyn.balancing.general import CounterweightSlot, least_squares_counterweights
+    from machdyn.balancing.methods import slots
+
+    text = _FOUR_BAR + """
+[balance]
+method = "counterweights"
+positions = 72
+
+[[balance.counterweights]]
+body = "crank"
+radius = "50 mm"
+"""
+    problem, x, ev, fast = _in_the_optimiser(text, "balance.rms_force_after", n, repeats, rng)
+    mech = ev.space.population(x[:n_single]).mechanism
+    phi = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
+    assert all(isinstance(s, CounterweightSlot) for s in slots(problem.balance))
+    slow = _rate(lambda: [least_squares_counterweights(mech.take_designs(i), slots(problem.balance), phi, 60.0)
+                          for i in range(n_single)], n_single, repeats)
+    return _entry(n, n_single, fast, slow, _agreement(fast[0]["balance.rms_force_after"][:n_single],
+                                                      [b.after.rms_force for b in slow[0]]))
+
+
+def frame(n, n_single, repeats, rng):
+    from machdyn.linkage import analyse
+    from machdyn.vibration.study import study_frame
+
+    text = _FOUR_BAR + """
+[frame]
+mass = "300 kg"
+inertia = "40 kg*m^2"
+com = ["0 mm", "50 mm"]
+mechanism_origin = ["200 mm", "100 mm"]
+orders = 6
+direction = "90 deg"
+
+[[frame.mounts]]
+type = "tyre"
+name = "front"
+position = ["500 mm", "-300 mm"]
+vertical_stiffness = "400 kN/m"
+horizontal_stiffness = "250 kN/m"
+vertical_damping = "1.5 kN*s/m"
+horizontal_damping = "0.8 kN*s/m"
+
+[[frame.mounts]]
+type = "spring"
+name = "rear"
+position = ["-500 mm", "-300 mm"]
+direction = "90 deg"
+stiffness = "400 kN/m"
+damping = "1.5 kN*s/m"
+
+[frame.points]
+centre = ["0 mm", "0 mm"]
+front = ["400 mm", "100 mm"]
+
+[frame.after]
+[[frame.after.counterweights]]
+body = "crank"
+mass = "0.3 kg"
+radius = "40 mm"
+angle = "180 deg"
+"""
+    problem, x, ev, fast = _in_the_optimiser(text, "frame.mean_acceleration_reduction", n, repeats, rng)
+    mech = ev.space.population(x[:n_single]).mechanism
+    phi = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
+
+    def single():
+        out = []
+        for i in range(n_single):
+            one = mech.take_designs(i)
+            out.append(study_frame(problem.frame, one, analyse(one, phi, 60.0, diagnostics=False)).acceleration
+                       .mean_reduction)
+        return out
+
+    slow = _rate(single, n_single, repeats)
+    return _entry(n, n_single, fast, slow, _agreement(fast[0]["frame.mean_acceleration_reduction"][:n_single],
+                                                      slow[0]))
+
+
 def linkage(n, n_single, repeats, rng):
     from machdyn.linkage import crank_angles, four_bar, kinetostatics
     from machdyn.studies import PopulationEvaluator
@@ -175,6 +302,7 @@ def linkage(n, n_single, repeats, rng):
 #: capability -> (function, population size, per-design designs), full run and --quick.
 CASES = {"cams": (cams, 20_000, 20, 2_000, 5), "parts": (parts, 5_000, 100, 500, 20),
          "clutch": (clutch, 200_000, 5_000, 20_000, 500), "shaft_balance": (shaft_balance, 100_000, 500, 10_000, 50),
+         "balance": (balance, 20_000, 50, 2_000, 10), "frame": (frame, 20_000, 50, 2_000, 10),
          "linkage": (linkage, 20_000, 100, 2_000, 20)}
 
 

@@ -28,7 +28,8 @@ from .frame import cycle
 from .general import CounterweightSlot, MassSlot, least_squares_counterweights, pivot_point, unknown_bounds
 from .methods import METHODS, slots
 
-__all__ = ["frame_loads_population", "least_squares_population", "balance_population", "BALANCE_KEYS"]
+__all__ = ["kinetostatics_masked", "frame_loads_population", "least_squares_population", "balance_population",
+           "BALANCE_KEYS"]
 
 #: design x crank positions evaluated at once: a population is balanced in chunks of this size, so that its memory
 #: stays bounded (about 60 doubles per position: 120 MB a chunk)
@@ -55,7 +56,7 @@ def frame_loads_population(mech: Mechanism, phi: np.ndarray, speed: Any, travel:
     are kept for the least squares."""
     quiet = replace(mech, gravity=(0.0, 0.0))
     n = mech.design_count or 1
-    forces = _kinetostatics(quiet, phi, speed)
+    forces = kinetostatics_masked(quiet, phi, speed)
     kin = forces.kinematics
     shape = (n, phi.size)
     fx = np.broadcast_to(np.asarray(forces.frame_fx, dtype=float), shape)
@@ -114,7 +115,7 @@ def _com_travel(kin: Any, shape: tuple[int, int]) -> np.ndarray:
                       np.ptp(np.broadcast_to(my / total, shape), axis=1))
 
 
-def _kinetostatics(mech: Mechanism, phi: np.ndarray, speed: Any) -> Any:
+def kinetostatics_masked(mech: Mechanism, phi: np.ndarray, speed: Any) -> Any:
     """Motion and forces of every design: one compiled pass when numba is present and every design closes, else
     the NumPy engine with the positions where a design does not close masked to NaN."""
     try:
