@@ -284,6 +284,29 @@ angle = "180 deg"
                                                       slow[0]))
 
 
+def engine_orders(n, n_single, repeats, rng):
+    from machdyn.shafts.engine_population import engine_orders_population
+    from machdyn.shafts.reciprocating import Cylinder
+    from machdyn.shafts.reciprocating import engine_orders as one_engine
+
+    shape = (n, 4)  # in-line fours with random crank phases, masses and rods, 72 angles, 6 orders
+    cyl = {"position": np.arange(4) * 0.1, "phase": rng.uniform(0.0, 2 * np.pi, shape), "axis": np.pi / 2,
+           "crank": 0.05, "rod": rng.uniform(0.15, 0.25, shape), "reciprocating_mass": rng.uniform(0.5, 2.0, shape),
+           "rotating_mass": 0.8}
+    fast = _rate(lambda: engine_orders_population(cyl, 300.0, 72, 6, 0.15)["primary_couple"], n, repeats)
+
+    def single():
+        out = []
+        for i in range(n_single):
+            cylinders = [Cylinder(f"c{j}", 0.1 * j, cyl["phase"][i, j], np.pi / 2, 0.05, cyl["rod"][i, j],
+                                  cyl["reciprocating_mass"][i, j], 0.8) for j in range(4)]
+            out.append(one_engine(cylinders, 300.0, 72, 6, 0.15, include_rotating=True).primary_couple)
+        return out
+
+    slow = _rate(single, n_single, repeats)
+    return _entry(n, n_single, fast, slow, _agreement(fast[0][:n_single], slow[0]))
+
+
 def linkage(n, n_single, repeats, rng):
     from machdyn.linkage import crank_angles, four_bar, kinetostatics
     from machdyn.studies import PopulationEvaluator
@@ -303,6 +326,7 @@ def linkage(n, n_single, repeats, rng):
 CASES = {"cams": (cams, 20_000, 20, 2_000, 5), "parts": (parts, 5_000, 100, 500, 20),
          "clutch": (clutch, 200_000, 5_000, 20_000, 500), "shaft_balance": (shaft_balance, 100_000, 500, 10_000, 50),
          "balance": (balance, 20_000, 50, 2_000, 10), "frame": (frame, 20_000, 50, 2_000, 10),
+         "engine_orders": (engine_orders, 50_000, 200, 5_000, 20),
          "linkage": (linkage, 20_000, 100, 2_000, 20)}
 
 

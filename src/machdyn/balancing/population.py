@@ -32,8 +32,8 @@ __all__ = ["kinetostatics_masked", "frame_loads_population", "least_squares_popu
            "BALANCE_KEYS"]
 
 #: design x crank positions evaluated at once: a population is balanced in chunks of this size, so that its memory
-#: stays bounded (about 60 doubles per position: 120 MB a chunk)
-CHUNK_POSITIONS = 1 << 18
+#: stays bounded (about 60 doubles per position: 30 MB a chunk)
+CHUNK_POSITIONS = 1 << 16
 
 #: the keys of a ``[balance]`` run a population form gives, with the frame-load figure each reads
 BALANCE_KEYS = ("rms_force", "peak_force", "rms_moment", "torque_fluctuation", "peak_joint_force")
