@@ -307,6 +307,25 @@ def engine_orders(n, n_single, repeats, rng):
     return _entry(n, n_single, fast, slow, _agreement(fast[0][:n_single], slow[0]))
 
 
+def motor_duty(n, n_single, repeats, rng):
+    from machdyn.dynamics.drives import InductionMotor
+    from machdyn.dynamics.duty import motor_duty as one_duty
+    from machdyn.dynamics.population_duty import duty_population
+
+    power, slip = rng.uniform(1e3, 30e3, n), rng.uniform(0.02, 0.06, n)
+    ratio, eff = rng.uniform(5.0, 30.0, n), rng.uniform(0.8, 1.0, n)
+    rated = power / (50 * np.pi * (1 - slip)) * ratio * eff  # the rated torque at the crank
+    load = rated * rng.uniform(0.3, 1.6, n)
+    fast = _rate(lambda: duty_population(load, rated, "S6", 0.4, 10.0)["load_ratio"], n, repeats)
+
+    def single():
+        return [one_duty(InductionMotor(power[i], 50 * np.pi * (1 - slip[i]), 50 * np.pi, 2.5, ratio[i], eff[i]),
+                         load[i], "S6", 0.4, 10.0).load_ratio for i in range(n_single)]
+
+    slow = _rate(single, n_single, repeats)
+    return _entry(n, n_single, fast, slow, _agreement(fast[0][:n_single], slow[0]))
+
+
 def linkage(n, n_single, repeats, rng):
     from machdyn.linkage import crank_angles, four_bar, kinetostatics
     from machdyn.studies import PopulationEvaluator
@@ -327,6 +346,7 @@ CASES = {"cams": (cams, 20_000, 20, 2_000, 5), "parts": (parts, 5_000, 100, 500,
          "clutch": (clutch, 200_000, 5_000, 20_000, 500), "shaft_balance": (shaft_balance, 100_000, 500, 10_000, 50),
          "balance": (balance, 20_000, 50, 2_000, 10), "frame": (frame, 20_000, 50, 2_000, 10),
          "engine_orders": (engine_orders, 50_000, 200, 5_000, 20),
+         "motor_duty": (motor_duty, 1_000_000, 2_000, 100_000, 200),
          "linkage": (linkage, 20_000, 100, 2_000, 20)}
 
 
