@@ -14,6 +14,20 @@ largest relative difference of the compared figure over that subset (0 = identic
 - shaft_balance: two-plane corrections and the ISO 21940-11 grade of random shaft lines of four masses
   (``two_plane_population`` + ``grade_population`` against ``two_plane`` + the grade check per line); the
   figure is the mass of the correction in plane M;
+- balance: ``[balance]`` counterweights of random four-bars (72 positions, one counterweight on the crank) through
+  the optimiser's own evaluator (an ``[optimise]`` table on ``balance.rms_force_after``: the linkage's status, its
+  kinetostatics and the table's population form ``machdyn.balancing.population.balance_population``) against
+  ``least_squares_counterweights`` per design; the figure is the RMS shaking force after balancing;
+- frame: ``[frame]`` (two mounts, two points, ``[frame.after]``, 6 orders) of random four-bars through the
+  optimiser's evaluator (``frame.mean_acceleration_reduction``; the population form
+  ``machdyn.vibration.population.frame_population``) against ``study_frame`` per design; the figure is the mean
+  acceleration reduction;
+- engine_orders: in-line fours with random crank phases, rods and masses (72 angles, 6 orders;
+  ``engine_orders_population`` against ``engine_orders``); the figure is the largest primary couple;
+- motor_duty: the S6 duty of random induction motors (``duty_population`` against ``motor_duty``); the figure is the
+  load ratio;
+- field_balance: two-plane influence-coefficient balances of random readings (``field_balance_population`` against
+  ``field.two_plane``); the figure is the correction mass in the first plane;
 - linkage (reference): largest |driving torque| of random four-bars (the population evaluator of the studies
   against ``kinetostatics`` per design).
 
@@ -326,6 +340,33 @@ def motor_duty(n, n_single, repeats, rng):
     return _entry(n, n_single, fast, slow, _agreement(fast[0][:n_single], slow[0]))
 
 
+def field_balance(n, n_single, repeats, rng):
+    from machdyn.shafts.field import TrialRun, reading, two_plane
+    from machdyn.shafts.field_population import field_balance_population
+
+    coefficients = rng.normal(size=(n, 2, 2)) + 1j * rng.normal(size=(n, 2, 2))
+    v0 = np.einsum("nij,nj->ni", coefficients, rng.normal(size=(n, 2)) + 1j * rng.normal(size=(n, 2)))
+    mass, angle = rng.uniform(0.05, 0.5, (n, 2)), rng.uniform(0, 2 * np.pi, (n, 2))
+    runs = v0[:, None, :] + np.swapaxes(coefficients, 1, 2) * (mass * np.exp(1j * angle))[..., None]
+    fast = _rate(lambda: field_balance_population(v0, runs, mass, angle), n, repeats)
+
+    def single():
+        out = []
+        for i in range(n_single):
+            trials = [TrialRun(k, mass[i, k], angle[i, k], tuple(reading(complex(v)) for v in runs[i, k]))
+                      for k in range(2)]
+            try:
+                out.append(two_plane([reading(complex(v)) for v in v0[i]], trials).correction_mass[0])
+            except ValueError:  # refused (a set whose trial runs act alike): NaN, as the population flags it
+                out.append(np.nan)
+        return out
+
+    slow = _rate(single, n_single, repeats)
+    both = np.isfinite(np.asarray(slow[0]))
+    return _entry(n, n_single, fast, slow, _agreement(fast[0]["mass"][:n_single, 0][both],
+                                                      np.asarray(slow[0])[both]))
+
+
 def linkage(n, n_single, repeats, rng):
     from machdyn.linkage import crank_angles, four_bar, kinetostatics
     from machdyn.studies import PopulationEvaluator
@@ -347,6 +388,7 @@ CASES = {"cams": (cams, 20_000, 20, 2_000, 5), "parts": (parts, 5_000, 100, 500,
          "balance": (balance, 20_000, 50, 2_000, 10), "frame": (frame, 20_000, 50, 2_000, 10),
          "engine_orders": (engine_orders, 50_000, 200, 5_000, 20),
          "motor_duty": (motor_duty, 1_000_000, 2_000, 100_000, 200),
+         "field_balance": (field_balance, 200_000, 1_000, 20_000, 100),
          "linkage": (linkage, 20_000, 100, 2_000, 20)}
 
 
