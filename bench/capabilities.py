@@ -252,6 +252,7 @@ com = ["0 mm", "50 mm"]
 mechanism_origin = ["200 mm", "100 mm"]
 orders = 6
 direction = "90 deg"
+band = ["1 Hz", "1000 Hz"]
 
 [[frame.mounts]]
 type = "tyre"
