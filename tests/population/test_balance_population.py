@@ -155,3 +155,19 @@ def test_each_design_is_balanced_at_its_own_speed(speed):
         alone = least_squares_counterweights(mech.take_designs(i), slots, phi, s)
         assert _close(done["after"]["rms_force"][i], alone.after.rms_force, alone.before.rms_force)
         assert _close(done["before"]["peak_joint_force"][i], alone.before.peak_joint_force)
+
+
+def test_a_population_in_chunks_gives_the_same_results(monkeypatch):
+    """The form balances a population chunk by chunk (its memory bounded for any population): the results are
+    those of one pass."""
+    import machdyn.balancing.population as bp
+
+    problem = load_problem(FILE)
+    ev = setup(problem, problem.optimise)
+    x = np.column_stack([np.linspace(0.5, 3.0, 5), np.linspace(0.03, 0.05, 5)])
+    pop = ev.space.population(x)
+    keys = ["balance.rms_force_after", "balance.cw_rocker.mass", "balance.peak_joint_force_before"]
+    whole = population_results(problem, keys, pop.mechanism, pop.speed, pop.acceleration, 5)
+    monkeypatch.setattr(bp, "CHUNK_POSITIONS", 2 * 48)  # two designs a chunk
+    for key, value in population_results(problem, keys, pop.mechanism, pop.speed, pop.acceleration, 5).items():
+        np.testing.assert_array_equal(value, whole[key])

@@ -185,3 +185,19 @@ def test_the_optimiser_s_frame_results_equal_each_design_s_run():
         assert results["frame.mean_acceleration_reduction"][i] == every["frame.mean_acceleration_reduction"][i]
     every = population_results(problem, keys, pop.mechanism, pop.speed, pop.acceleration, x.shape[0])
     assert all(np.isnan(every[k][2]) for k in keys if not k.startswith("frame.mode_"))
+
+
+def test_a_population_in_chunks_gives_the_same_results(monkeypatch):
+    """The form works through a population chunk by chunk (its memory bounded for any population): the results
+    are those of one pass."""
+    import machdyn.vibration.population as vp
+
+    problem = load_problem(FILE)
+    ev = setup(problem, problem.optimise)
+    x = np.column_stack([np.linspace(0.5, 3.0, 5), np.linspace(0.03, 0.05, 5)])
+    pop = ev.space.population(x)
+    keys = ["frame.mean_acceleration_reduction", "frame.rms_velocity.after.front", "frame.zone.before.centre"]
+    whole = population_results(problem, keys, pop.mechanism, pop.speed, pop.acceleration, 5)
+    monkeypatch.setattr(vp, "CHUNK_POSITIONS", 2 * 36)  # two designs a chunk
+    for key, value in population_results(problem, keys, pop.mechanism, pop.speed, pop.acceleration, 5).items():
+        np.testing.assert_array_equal(value, whole[key])

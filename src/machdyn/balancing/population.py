@@ -64,13 +64,15 @@ def frame_loads_population(mech: Mechanism, phi: np.ndarray, speed: Any, travel:
     pivot = quiet.ground[quiet.crank.pivot.split(".")[1]]
     moment = np.broadcast_to(np.asarray(forces.shaking_moment(about=pivot), dtype=float), shape)
     torque = np.broadcast_to(np.asarray(forces.driving_torque, dtype=float), shape)
-    joints = [np.max(np.broadcast_to(forces.joint(j.name).magnitude, shape), axis=1) for j in forces.joints]
+    # the largest |force| of each joint: the root of the largest square (one root per design, no hypot per angle)
+    joints = [np.sqrt(np.max(np.broadcast_to(r.fx * r.fx + r.fy * r.fy, shape), axis=1))
+              for r in (forces.joint(j.name) for j in forces.joints)]
     peak_joint = np.max(np.stack(joints), axis=0) if joints else np.zeros(n)
     com = _com_travel(kin, shape) if travel else np.full(n, np.nan)
     valid = np.all(np.isfinite(fx) & np.isfinite(fy) & np.isfinite(torque), axis=1)
     out = {
         "rms_force": np.sqrt(np.mean(fx**2 + fy**2, axis=1)),
-        "peak_force": np.max(np.hypot(fx, fy), axis=1),
+        "peak_force": np.sqrt(np.max(fx * fx + fy * fy, axis=1)),
         "rms_moment": np.sqrt(np.mean(moment**2, axis=1)),
         "peak_moment": np.max(np.abs(moment), axis=1),
         "rms_torque": np.sqrt(np.mean(torque**2, axis=1)),

@@ -146,21 +146,25 @@ def _figures(frame: Frame, table: Any, q: np.ndarray, w: np.ndarray, tag: str, o
     return accelerations
 
 
-def _loads(forces: Any, table: Any) -> tuple[np.ndarray, np.ndarray]:
-    """The complex harmonic loads (N, K, 3) on the frame's reference point of every design of ``forces``
-    (:func:`machdyn.vibration.response.shaking_loads`), and whether each design's loads are finite."""
-    n = forces.mechanism.design_count or 1
-    phi = np.asarray(forces.kinematics.crank_angle, dtype=float)
-    shape = (n, phi.size)
+def _curves(forces: Any, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The frame force fx, fy [N] and the shaking moment about the origin [N*m] of the designs of ``forces``, (n, M)
+    each."""
+    shape = (n, np.size(forces.kinematics.crank_angle))
     fx, fy = (np.broadcast_to(np.asarray(v, dtype=float), shape) for v in forces.frame_force)
-    mz = np.broadcast_to(np.asarray(forces.shaking_moment((0.0, 0.0)), dtype=float), shape)
+    return fx, fy, np.broadcast_to(np.asarray(forces.shaking_moment((0.0, 0.0)), dtype=float), shape)
+
+
+def _loads(curves: tuple[np.ndarray, ...], phi: np.ndarray, table: Any) -> tuple[np.ndarray, np.ndarray]:
+    """The complex harmonic loads (n, K, 3) on the frame's reference point from each design's frame force and
+    shaking moment ``curves`` (:func:`machdyn.vibration.response.shaking_loads`), and whether they are finite."""
+    fx, fy, mz = curves
     finite = np.all(np.isfinite(fx) & np.isfinite(fy) & np.isfinite(mz), axis=1)
     fx, fy, mz = (np.where(finite[:, None], v, 0.0) for v in (fx, fy, mz))
     ox, oy = (float(v) for v in table.mechanism_origin)
     c, s = np.cos(table.mechanism_angle), np.sin(table.mechanism_angle)
     gx, gy = c * fx - s * fy, s * fx + c * fy
     moment = mz + ox * gy - oy * gx
-    h = harmonics(np.stack([gx, gy, moment], axis=-1).swapaxes(-1, -2), phi, table.orders)  # (N, 3, K)
+    h = harmonics(np.stack([gx, gy, moment], axis=-1).swapaxes(-1, -2), phi, table.orders)  # (n, 3, K)
     return (h.amplitude * np.exp(1j * h.phase)).swapaxes(-1, -2), finite
 
 
@@ -194,22 +198,24 @@ def frame_population(problem: Any, forces: Any) -> dict[str, np.ndarray] | None:
         return None  # an order on an undamped mode: every design's run refuses it, with the reason
     mech = forces.mechanism
     n = mech.design_count or 1
-    variants = [("before", forces)]
-    if table.after is not None:
-        variants.append(("after", kinetostatics_masked(with_variant(mech, table.after), phi, omega)))
     # the frame is every design's: its dynamic flexibility (K - w^2 M + i w C)^-1 at each order, once
     flexibility = np.linalg.inv(_dynamic(m, k, c, w))
     per = max(1, CHUNK_POSITIONS // phi.size)
     valid = np.ones(n, dtype=bool)
-    acc: dict[str, dict[str, list[np.ndarray]]] = {}
+    acc: dict[str, dict[str, list[np.ndarray]]] = {"before": {}, "after": {}}
     chunks: dict[str, list[np.ndarray]] = {}
-    for tag, variant in variants:
-        loads, finite = _loads(variant, table)
-        valid &= finite
-        acc[tag] = {}
-        for start in range(0, n, per):  # chunks of designs: the memory stays bounded for any population
-            part = slice(start, min(n, start + per))
-            q = np.einsum("kij,nkj->nki", flexibility, loads[part])
+    curves = _curves(forces, n)
+    for start in range(0, n, per):  # chunks of designs: the memory stays bounded for any population
+        part = slice(start, min(n, start + per))
+        variants = [("before", tuple(v[part] for v in curves))]
+        if table.after is not None:  # the variant's kinetostatics, chunk by chunk
+            sub = mech.take_designs(part) if mech.design_count else mech
+            variants.append(("after", _curves(kinetostatics_masked(with_variant(sub, table.after), phi, omega),
+                                              part.stop - part.start)))
+        for tag, curve in variants:
+            loads, finite = _loads(curve, phi, table)
+            valid[part] &= finite
+            q = np.einsum("kij,nkj->nki", flexibility, loads)
             found_part: dict[str, np.ndarray] = {}
             a = _figures(frame, table, q, w, tag, found_part)
             for key, value in found_part.items():
@@ -217,7 +223,7 @@ def frame_population(problem: Any, forces: Any) -> dict[str, np.ndarray] | None:
             for name, value in a.items():
                 acc[tag].setdefault(name, []).append(value)
     out |= {key: np.concatenate(values) for key, values in chunks.items()}
-    if "after" in acc:
+    if acc["after"]:
         before = {p: np.concatenate(v) for p, v in acc["before"].items()}
         after = {p: np.concatenate(v) for p, v in acc["after"].items()}
         with np.errstate(divide="ignore", invalid="ignore"):
