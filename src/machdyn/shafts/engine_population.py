@@ -71,18 +71,23 @@ def engine_orders_population(cylinders: dict[str, Any], speed: Any, samples: int
     n, c = z.shape
     w = np.broadcast_to(np.ravel(np.asarray(speed, dtype=float)), (n,))
     ref = np.broadcast_to(np.ravel(np.asarray(reference, dtype=float)), (n,))
-    finite = np.all(np.isfinite(np.stack(arrays)), axis=(0, 2)) & np.isfinite(w) & np.isfinite(ref)
+    finite = np.isfinite(w) & np.isfinite(ref)
+    for a in arrays:  # one input at a time: no stacked copy of the population's cylinders
+        finite &= np.all(np.isfinite(a), axis=1)
     valid = finite & np.all((crank > 0) & (rod > crank) & (m_rec >= 0) & (m_rot >= 0), axis=1)
     safe = [np.where(valid[:, None], a, 1.0) for a in (crank, rod)]
     crank, rod = safe[0], np.where(valid[:, None], rod, 2.0)
     theta = cycle(samples)
     orders = np.arange(1, harmonics + 1)
     per = max(1, CHUNK_VALUES // max(1, c * theta.size))
-    parts = [_chunk(z[s], phase[s], axis[s], crank[s], rod[s], m_rec[s], m_rot[s], w[s], ref[s], theta, orders,
-                    include_rotating)
-             for s in (slice(i, min(n, i + per)) for i in range(0, n, per))]
-    out = {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
-    return {k: np.where(valid, v, np.nan) for k, v in out.items()} | {"valid": valid}
+    out: dict[str, np.ndarray] = {}
+    for i in range(0, n, per):  # chunk by chunk into the results: only they grow with the population
+        s = slice(i, min(n, i + per))
+        found = _chunk(z[s], phase[s], axis[s], crank[s], rod[s], m_rec[s], m_rot[s], w[s], ref[s], theta, orders,
+                       include_rotating)
+        for key, value in found.items():
+            out.setdefault(key, np.empty(n))[s] = np.where(valid[s], value, np.nan)
+    return out | {"valid": valid}
 
 
 def _chunk(z, phase, axis, crank, rod, m_rec, m_rot, w, ref, theta, orders, include_rotating) -> dict:
