@@ -28,6 +28,8 @@ largest relative difference of the compared figure over that subset (0 = identic
   load ratio;
 - field_balance: two-plane influence-coefficient balances of random readings (``field_balance_population`` against
   ``field.two_plane``); the figure is the correction mass in the first plane;
+- passage: the closed-form envelope of random damped passages through a resonance at 64 times
+  (``passage_envelope_population`` against ``passage_envelope``); the figure is the largest envelope;
 - linkage (reference): largest |driving torque| of random four-bars (the population evaluator of the studies
   against ``kinetostatics`` per design).
 
@@ -368,6 +370,18 @@ def field_balance(n, n_single, repeats, rng):
                                                       np.asarray(slow[0])[both]))
 
 
+def passage(n, n_single, repeats, rng):
+    from machdyn.transient.closed_forms import passage_envelope
+    from machdyn.transient.population import passage_envelope_population
+
+    w, alpha, zeta = rng.uniform(20.0, 200.0, n), rng.uniform(0.5, 50.0, n), rng.uniform(0.0, 0.05, n)
+    s = np.linspace(-2.0, 6.0, 64)  # the envelope at 64 times around each resonance
+    fast = _rate(lambda: passage_envelope_population(s, w, alpha, zeta)[0].max(axis=1), n, repeats)
+    slow = _rate(lambda: [float(np.max(passage_envelope(s, w[i], alpha[i], zeta[i]))) for i in range(n_single)],
+                 n_single, repeats)
+    return _entry(n, n_single, fast, slow, _agreement(fast[0][:n_single], slow[0]))
+
+
 def linkage(n, n_single, repeats, rng):
     from machdyn.linkage import crank_angles, four_bar, kinetostatics
     from machdyn.studies import PopulationEvaluator
@@ -390,6 +404,7 @@ CASES = {"cams": (cams, 20_000, 20, 2_000, 5), "parts": (parts, 5_000, 100, 500,
          "engine_orders": (engine_orders, 50_000, 200, 5_000, 20),
          "motor_duty": (motor_duty, 1_000_000, 2_000, 100_000, 200),
          "field_balance": (field_balance, 200_000, 1_000, 20_000, 100),
+         "passage": (passage, 100_000, 1_000, 10_000, 100),
          "linkage": (linkage, 20_000, 100, 2_000, 20)}
 
 
