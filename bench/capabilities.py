@@ -14,6 +14,22 @@ largest relative difference of the compared figure over that subset (0 = identic
 - shaft_balance: two-plane corrections and the ISO 21940-11 grade of random shaft lines of four masses
   (``two_plane_population`` + ``grade_population`` against ``two_plane`` + the grade check per line); the
   figure is the mass of the correction in plane M;
+- balance: ``[balance]`` counterweights of random four-bars (72 positions, one counterweight on the crank) through
+  the optimiser's own evaluator (an ``[optimise]`` table on ``balance.rms_force_after``: the linkage's status, its
+  kinetostatics and the table's population form ``machdyn.balancing.population.balance_population``) against
+  ``least_squares_counterweights`` per design; the figure is the RMS shaking force after balancing;
+- frame: ``[frame]`` (two mounts, two points, ``[frame.after]``, 6 orders) of random four-bars through the
+  optimiser's evaluator (``frame.mean_acceleration_reduction``; the population form
+  ``machdyn.vibration.population.frame_population``) against ``study_frame`` per design; the figure is the mean
+  acceleration reduction;
+- engine_orders: in-line fours with random crank phases, rods and masses (72 angles, 6 orders;
+  ``engine_orders_population`` against ``engine_orders``); the figure is the largest primary couple;
+- motor_duty: the S6 duty of random induction motors (``duty_population`` against ``motor_duty``); the figure is the
+  load ratio;
+- field_balance: two-plane influence-coefficient balances of random readings (``field_balance_population`` against
+  ``field.two_plane``); the figure is the correction mass in the first plane;
+- passage: the closed-form envelope of random damped passages through a resonance at 64 times
+  (``passage_envelope_population`` against ``passage_envelope``); the figure is the largest envelope;
 - linkage (reference): largest |driving torque| of random four-bars (the population evaluator of the studies
   against ``kinetostatics`` per design).
 
@@ -157,6 +173,215 @@ def shaft_balance(n, n_single, repeats, rng):
     return _entry(n, n_single, fast, slow, _agreement(fast[0][:n_single], slow[0]))
 
 
+_FOUR_BAR = """
+[mechanism]
+type = "four_bar"
+crank = {length = "40 mm", mass = "0.5 kg"}
+coupler = {length = "120 mm", mass = "2 kg"}
+rocker = {length = "80 mm", mass = "1 kg"}
+ground = {length = "100 mm"}
+
+[drive]
+speed = "60 rad/s"
+positions = 72
+"""
+
+_OPTIMISE = """
+[optimise]
+population = 5
+generations = 1
+
+[[optimise.variables]]
+parameter = "mechanism.coupler.mass"
+lower = "0.5 kg"
+upper = "3 kg"
+
+[[optimise.variables]]
+parameter = "mechanism.crank.length"
+lower = "30 mm"
+upper = "50 mm"
+
+[[optimise.objectives]]
+result = "{objective}"
+"""
+
+
+def _in_the_optimiser(text, objective, n, repeats, rng):
+    """(problem, designs x, the optimiser's evaluator, rate): the optimiser's own evaluator of ``text`` with an
+    ``[optimise]`` table on ``objective``, timed on n random designs (coupler mass, crank length)."""
+    from machdyn.reading import load_problem
+    from machdyn.studies.optimisation.study import setup
+
+    problem = load_problem(text + _OPTIMISE.format(objective=objective))
+    ev = setup(problem, problem.optimise)
+    x = np.column_stack([rng.uniform(0.5, 3.0, n), rng.uniform(0.03, 0.05, n)])
+    ev(x[:8])  # compile the engine's kernels once
+    return problem, x, ev, _rate(lambda: ev(x)[0], n, repeats)
+
+
+def balance(n, n_single, repeats, rng):
+    from machdyn.balancing.general import CounterweightSlot, least_squares_counterweights
+    from machdyn.balancing.methods import slots
+
+    text = _FOUR_BAR + """
+[balance]
+method = "counterweights"
+positions = 72
+
+[[balance.counterweights]]
+body = "crank"
+radius = "50 mm"
+"""
+    problem, x, ev, fast = _in_the_optimiser(text, "balance.rms_force_after", n, repeats, rng)
+    mech = ev.space.population(x[:n_single]).mechanism
+    phi = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
+    assert all(isinstance(s, CounterweightSlot) for s in slots(problem.balance))
+    slow = _rate(lambda: [least_squares_counterweights(mech.take_designs(i), slots(problem.balance), phi, 60.0)
+                          for i in range(n_single)], n_single, repeats)
+    return _entry(n, n_single, fast, slow, _agreement(fast[0]["balance.rms_force_after"][:n_single],
+                                                      [b.after.rms_force for b in slow[0]]))
+
+
+def frame(n, n_single, repeats, rng):
+    from machdyn.linkage import analyse
+    from machdyn.vibration.study import study_frame
+
+    text = _FOUR_BAR + """
+[frame]
+mass = "300 kg"
+inertia = "40 kg*m^2"
+com = ["0 mm", "50 mm"]
+mechanism_origin = ["200 mm", "100 mm"]
+orders = 6
+direction = "90 deg"
+band = ["1 Hz", "1000 Hz"]
+
+[[frame.mounts]]
+type = "tyre"
+name = "front"
+position = ["500 mm", "-300 mm"]
+vertical_stiffness = "400 kN/m"
+horizontal_stiffness = "250 kN/m"
+vertical_damping = "1.5 kN*s/m"
+horizontal_damping = "0.8 kN*s/m"
+
+[[frame.mounts]]
+type = "spring"
+name = "rear"
+position = ["-500 mm", "-300 mm"]
+direction = "90 deg"
+stiffness = "400 kN/m"
+damping = "1.5 kN*s/m"
+
+[frame.points]
+centre = ["0 mm", "0 mm"]
+front = ["400 mm", "100 mm"]
+
+[frame.after]
+[[frame.after.counterweights]]
+body = "crank"
+mass = "0.3 kg"
+radius = "40 mm"
+angle = "180 deg"
+"""
+    problem, x, ev, fast = _in_the_optimiser(text, "frame.mean_acceleration_reduction", n, repeats, rng)
+    mech = ev.space.population(x[:n_single]).mechanism
+    phi = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
+
+    def single():
+        out = []
+        for i in range(n_single):
+            one = mech.take_designs(i)
+            out.append(study_frame(problem.frame, one, analyse(one, phi, 60.0, diagnostics=False)).acceleration
+                       .mean_reduction)
+        return out
+
+    slow = _rate(single, n_single, repeats)
+    return _entry(n, n_single, fast, slow, _agreement(fast[0]["frame.mean_acceleration_reduction"][:n_single],
+                                                      slow[0]))
+
+
+def engine_orders(n, n_single, repeats, rng):
+    from machdyn.shafts.engine_population import engine_orders_population
+    from machdyn.shafts.reciprocating import Cylinder
+    from machdyn.shafts.reciprocating import engine_orders as one_engine
+
+    shape = (n, 4)  # in-line fours with random crank phases, masses and rods, 72 angles, 6 orders
+    cyl = {"position": np.arange(4) * 0.1, "phase": rng.uniform(0.0, 2 * np.pi, shape), "axis": np.pi / 2,
+           "crank": 0.05, "rod": rng.uniform(0.15, 0.25, shape), "reciprocating_mass": rng.uniform(0.5, 2.0, shape),
+           "rotating_mass": 0.8}
+    fast = _rate(lambda: engine_orders_population(cyl, 300.0, 72, 6, 0.15)["primary_couple"], n, repeats)
+
+    def single():
+        out = []
+        for i in range(n_single):
+            cylinders = [Cylinder(f"c{j}", 0.1 * j, cyl["phase"][i, j], np.pi / 2, 0.05, cyl["rod"][i, j],
+                                  cyl["reciprocating_mass"][i, j], 0.8) for j in range(4)]
+            out.append(one_engine(cylinders, 300.0, 72, 6, 0.15, include_rotating=True).primary_couple)
+        return out
+
+    slow = _rate(single, n_single, repeats)
+    return _entry(n, n_single, fast, slow, _agreement(fast[0][:n_single], slow[0]))
+
+
+def motor_duty(n, n_single, repeats, rng):
+    from machdyn.dynamics.drives import InductionMotor
+    from machdyn.dynamics.duty import motor_duty as one_duty
+    from machdyn.dynamics.population_duty import duty_population
+
+    power, slip = rng.uniform(1e3, 30e3, n), rng.uniform(0.02, 0.06, n)
+    ratio, eff = rng.uniform(5.0, 30.0, n), rng.uniform(0.8, 1.0, n)
+    rated = power / (50 * np.pi * (1 - slip)) * ratio * eff  # the rated torque at the crank
+    load = rated * rng.uniform(0.3, 1.6, n)
+    fast = _rate(lambda: duty_population(load, rated, "S6", 0.4, 10.0)["load_ratio"], n, repeats)
+
+    def single():
+        return [one_duty(InductionMotor(power[i], 50 * np.pi * (1 - slip[i]), 50 * np.pi, 2.5, ratio[i], eff[i]),
+                         load[i], "S6", 0.4, 10.0).load_ratio for i in range(n_single)]
+
+    slow = _rate(single, n_single, repeats)
+    return _entry(n, n_single, fast, slow, _agreement(fast[0][:n_single], slow[0]))
+
+
+def field_balance(n, n_single, repeats, rng):
+    from machdyn.shafts.field import TrialRun, reading, two_plane
+    from machdyn.shafts.field_population import field_balance_population
+
+    coefficients = rng.normal(size=(n, 2, 2)) + 1j * rng.normal(size=(n, 2, 2))
+    v0 = np.einsum("nij,nj->ni", coefficients, rng.normal(size=(n, 2)) + 1j * rng.normal(size=(n, 2)))
+    mass, angle = rng.uniform(0.05, 0.5, (n, 2)), rng.uniform(0, 2 * np.pi, (n, 2))
+    runs = v0[:, None, :] + np.swapaxes(coefficients, 1, 2) * (mass * np.exp(1j * angle))[..., None]
+    fast = _rate(lambda: field_balance_population(v0, runs, mass, angle), n, repeats)
+
+    def single():
+        out = []
+        for i in range(n_single):
+            trials = [TrialRun(k, mass[i, k], angle[i, k], tuple(reading(complex(v)) for v in runs[i, k]))
+                      for k in range(2)]
+            try:
+                out.append(two_plane([reading(complex(v)) for v in v0[i]], trials).correction_mass[0])
+            except ValueError:  # refused (a set whose trial runs act alike): NaN, as the population flags it
+                out.append(np.nan)
+        return out
+
+    slow = _rate(single, n_single, repeats)
+    both = np.isfinite(np.asarray(slow[0]))
+    return _entry(n, n_single, fast, slow, _agreement(fast[0]["mass"][:n_single, 0][both],
+                                                      np.asarray(slow[0])[both]))
+
+
+def passage(n, n_single, repeats, rng):
+    from machdyn.transient.closed_forms import passage_envelope
+    from machdyn.transient.population import passage_envelope_population
+
+    w, alpha, zeta = rng.uniform(20.0, 200.0, n), rng.uniform(0.5, 50.0, n), rng.uniform(0.0, 0.05, n)
+    s = np.linspace(-2.0, 6.0, 64)  # the envelope at 64 times around each resonance
+    fast = _rate(lambda: passage_envelope_population(s, w, alpha, zeta)[0].max(axis=1), n, repeats)
+    slow = _rate(lambda: [float(np.max(passage_envelope(s, w[i], alpha[i], zeta[i]))) for i in range(n_single)],
+                 n_single, repeats)
+    return _entry(n, n_single, fast, slow, _agreement(fast[0][:n_single], slow[0]))
+
+
 def linkage(n, n_single, repeats, rng):
     from machdyn.linkage import crank_angles, four_bar, kinetostatics
     from machdyn.studies import PopulationEvaluator
@@ -175,6 +400,11 @@ def linkage(n, n_single, repeats, rng):
 #: capability -> (function, population size, per-design designs), full run and --quick.
 CASES = {"cams": (cams, 20_000, 20, 2_000, 5), "parts": (parts, 5_000, 100, 500, 20),
          "clutch": (clutch, 200_000, 5_000, 20_000, 500), "shaft_balance": (shaft_balance, 100_000, 500, 10_000, 50),
+         "balance": (balance, 20_000, 50, 2_000, 10), "frame": (frame, 20_000, 50, 2_000, 10),
+         "engine_orders": (engine_orders, 50_000, 200, 5_000, 20),
+         "motor_duty": (motor_duty, 1_000_000, 2_000, 100_000, 200),
+         "field_balance": (field_balance, 200_000, 1_000, 20_000, 100),
+         "passage": (passage, 100_000, 1_000, 10_000, 100),
          "linkage": (linkage, 20_000, 100, 2_000, 20)}
 
 

@@ -299,4 +299,5 @@ CAPABILITY = Capability(
     report="machdyn.report.balancing:sections",
     check=check,
     result_type=BalanceRun,
+    population="machdyn.balancing.population:balance_population",
 )

@@ -237,7 +237,7 @@ FRAME = Capability(
     table="frame", schema=FrameTable, run=run_frame, step="frame vibration", check=check_frame,
     check_model=check_frame_model,
     kinds=("mechanism", "rotary_screen"), report="machdyn.report.vibration:frame_sections", after=("balance",),
-    result_type=FrameStudy,
+    result_type=FrameStudy, population="machdyn.vibration.population:frame_population",
 )
 SIGNALS = Capability(
     table="signals", schema=SignalsTable, run=run_signals, step="measured signals",
