@@ -7,7 +7,8 @@ later edits wait for it). The page and its script are files of this package: not
 network.
 
 Endpoints: ``GET /`` the page; ``GET /api/state`` the fields and the machine as on disk; ``POST /api/evaluate``
-``{"values": {key: number}}`` the machine with those values; ``POST /api/save`` ``{"values": ..., "name":
+``{"values": {key: number}}`` the machine with those values, live (:mod:`machdyn.studio.live`); ``POST
+/api/full`` the same with every table (*Full run*); ``POST /api/save`` ``{"values": ..., "name":
 optional new file name}``; ``GET /report`` the ordinary run's report (files the studio shows read-only).
 """
 
@@ -138,14 +139,17 @@ def create_app(studio: Studio, token: str, *, compute_seconds: float = COMPUTE_S
         except TimeoutError:
             return too_long()
 
-    async def evaluate(request: Request) -> Response:
+    async def evaluate(request: Request, full: bool = False) -> Response:
         try:
             values, _ = await _values(request)
-            return JSONResponse(await computed(studio.evaluate, values))
+            return JSONResponse(await computed(lambda: studio.evaluate(values, full=full)))
         except (ValueError, KeyError) as exc:  # a refused save, an unknown field, a value too long
             return JSONResponse({"ok": False, "problems": [], "message": str(exc).strip("'\"")}, status_code=400)
         except TimeoutError:
             return too_long()
+
+    async def full_run(request: Request) -> Response:
+        return await evaluate(request, full=True)
 
     async def save(request: Request) -> Response:
         try:
@@ -168,6 +172,7 @@ def create_app(studio: Studio, token: str, *, compute_seconds: float = COMPUTE_S
 
     app = Starlette(routes=[
         Route("/", home), Route("/api/state", state), Route("/api/evaluate", evaluate, methods=["POST"]),
+        Route("/api/full", full_run, methods=["POST"]),
         Route("/api/save", save, methods=["POST"]), Route("/report", report),
     ], lifespan=_lifespan(worker))
     return Guard(app, token, max_body)

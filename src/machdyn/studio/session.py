@@ -18,7 +18,6 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-import tomlkit
 
 from ..errors import InputError, MachdynError, ProblemFileError, input_problems
 from ..outputs import atomic_write_text
@@ -27,9 +26,9 @@ from ..reading import LoadedProblem, kind_of, read_problem
 from ..report.animation import scene
 from ..runner import check_problem, run_problem
 from .dragging import drag_rules
-from .fields import edited_text, fields_of
+from .fields import EditableText
+from .live import STUDIES, deferred_tables, live_flywheel
 
-STUDIES = ("sweep", "optimise")
 EDITABLE_KINDS = ("mechanism",)
 MAX_POSITIONS = 3600  # the studio answers within a fraction of a second up to here
 NEW_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9 ._-]{0,120}\.toml$")
@@ -56,7 +55,8 @@ class Studio:
         self.folder = self.path.resolve().parent
         self.text, _ = read_text(self.path)  # bounded: at most the loader's file size
         self.kind = kind_of(parse_toml(self.text, str(self.path)), str(self.path))  # malformed TOML refused here
-        self.fields = fields_of(tomlkit.parse(self.text))
+        self.source = EditableText(self.text)
+        self.fields = self.source.fields
         self.editable = self.kind in EDITABLE_KINDS
         self.last_valid: dict[str, Any] | None = None
         self.report_html: str | None = None
@@ -73,18 +73,20 @@ class Studio:
 
     # ------------------------------------------------------------------ an edit
 
-    def evaluate(self, edits: dict[str, str]) -> dict[str, Any]:
-        """The machine with ``edits`` applied: its view, summary and curves, or the check's messages."""
+    def evaluate(self, edits: dict[str, str], *, full: bool = False) -> dict[str, Any]:
+        """The machine with ``edits`` applied: its view, summary and curves, or the check's messages. Live
+        (``full`` False) the tables that simulate the motion in time are left out (:mod:`machdyn.studio.live`);
+        ``full`` runs them too."""
         if not self.editable:
             raise SaveRefused(f"a [{self.kind}] file opens read-only in the studio")
         with self._lock:
-            return self._evaluate(edits)
+            return self._evaluate(edits, full=full)
 
-    def _evaluate(self, edits: dict[str, str]) -> dict[str, Any]:
+    def _evaluate(self, edits: dict[str, str], *, full: bool = False) -> dict[str, Any]:
         started = time.perf_counter()
-        text = edited_text(self.text, edits)
+        text = self.source.edited(edits)
         try:
-            answer = self._compute(text)
+            answer = self._compute(text, full)
         except InputError as exc:
             answer = self._refused(input_problems(exc))
         except (MachdynError, ArithmeticError, ValueError) as exc:
@@ -99,20 +101,27 @@ class Studio:
         return {"ok": False, "problems": [{"path": p, "message": m} for p, m in problems],
                 "message": str(ProblemFileError(problems, str(self.path)))}
 
-    def _compute(self, text: str) -> dict[str, Any]:
+    def _compute(self, text: str, full: bool = False) -> dict[str, Any]:
         loaded = read_problem(text)
         drive = getattr(loaded.spec, "drive", None)
         positions = getattr(drive, "positions", 0) or 0
         if positions > MAX_POSITIONS:
             return self._refused([("drive.positions", f"the studio computes at most {MAX_POSITIONS} positions; "
                                    f"got {positions} (machdyn run takes more)")])
-        warnings = check_problem(loaded) if self.editable else []
-        studies = {t: None for t in STUDIES if getattr(loaded.spec, t, None) is not None}
-        if studies:
-            loaded = LoadedProblem(loaded.kind, loaded.spec.model_copy(update=studies), loaded.text,
+        warnings = check_problem(loaded) if self.editable else []  # every table judged, deferred ones too
+        spec = loaded.spec  # with its deferred tables
+        deferred = deferred_tables(loaded.spec) if self.editable else []
+        left_out = {t: None for t in (*STUDIES, *([] if full else deferred))
+                    if getattr(loaded.spec, t, None) is not None}
+        if left_out:
+            loaded = LoadedProblem(loaded.kind, loaded.spec.model_copy(update=left_out), loaded.text,
                                    loaded.source, loaded.model)
         result = run_problem(loaded)
-        return self._answer(result, warnings)
+        answer = self._answer(result, warnings)
+        answer["full"], answer["deferred"] = full or not deferred, deferred  # deferred: run only when full
+        if not full and "flywheel" in deferred and result.analysis is not None:
+            answer["summary"] += live_flywheel(spec, result.analysis)
+        return answer
 
     def _answer(self, result: Any, warnings: list[str]) -> dict[str, Any]:
         rows = [{"label": label, "value": _number(value), "unit": unit}
@@ -153,14 +162,15 @@ class Studio:
             raise SaveRefused(f"a [{self.kind}] file opens read-only in the studio")
         where = self.target(name)
         with self._lock:
-            text = edited_text(self.text, edits)
+            text = self.source.edited(edits)
             answer = self._evaluate(edits)
             if not answer["ok"]:
                 raise SaveRefused(answer["message"])
             atomic_write_text(where, text)
             if where == self.path:  # later edits are relative to what is now on disk
                 self.text = text
-                self.fields = fields_of(tomlkit.parse(text))
+                self.source = EditableText(text)
+                self.fields = self.source.fields
         return {"ok": True, "saved": where.name, "fields": [f.as_json() for f in self.fields]}
 
     # ------------------------------------------------------------------ other kinds

@@ -9,6 +9,14 @@
   const W = 640, H = 420;
   let fields = [], values = {}, history = [], future = [], last = null, frame = 0, playing = false;
   let busy = false, again = false, view = null, drag = null;
+  // the time of the first edit not yet drawn (the input event's own time stamp), and the edits measured so far:
+  // the page's latency is from that event to the frame after the redrawn view and plots
+  let editStart = null, edits = 0;
+
+  function edited(e) {
+    if (editStart === null) editStart = e && e.timeStamp ? e.timeStamp : performance.now();
+    recompute();
+  }
 
   async function api(path, body) {
     const response = await fetch(path, body === undefined ? { headers } :
@@ -45,9 +53,9 @@
       input.type = "number"; input.step = "any"; input.value = f.number; input.name = f.key;
       input.disabled = !editable;
       input.setAttribute("aria-label", f.key);
-      input.addEventListener("change", () => {
+      input.addEventListener("change", (e) => {
         if (values[f.key] === input.value) return;  // one edit, however many change events
-        record(); values[f.key] = input.value; recompute();
+        record(); values[f.key] = input.value; edited(e);
       });
       row.insertCell().appendChild(input);
       const range = bounds(f);
@@ -57,10 +65,10 @@
         slide.step = range[2]; slide.value = f.number;  // the file's value sits on the slider's grid
         slide.setAttribute("aria-label", f.key + " slider");
         let sliding = false;
-        slide.addEventListener("input", () => {
+        slide.addEventListener("input", (e) => {
           if (!sliding) { record(); sliding = true; }
           input.value = values[f.key] = String(Number(Number(slide.value).toPrecision(5)));
-          recompute();
+          edited(e);
         });
         slide.addEventListener("change", () => { sliding = false; });
         input.addEventListener("change", () => { slide.value = input.value; });
@@ -97,25 +105,41 @@
       for (const input of row.querySelectorAll("input")) input.value = values[row.dataset.key];
     }
     buttons();
-    recompute();
+    edited();
   }
 
   $("undo").addEventListener("click", () => { if (history.length) { future.push(values); restore(history.pop()); } });
   $("redo").addEventListener("click", () => { if (future.length) { history.push(values); restore(future.pop()); } });
 
   // ------------------------------------------------------------------ the server
-  async function recompute() {
+  async function recompute(full) {
     if (busy) { again = true; return; }  // one request at a time; the latest values follow
     busy = true;
     document.body.dataset.busy = "1";
+    const started = full ? null : editStart;  // an edit made while this request runs is measured with the next
+    if (!full) editStart = null;
     try {
-      const answer = await api("/api/evaluate", { values });
+      const answer = await api(full ? "/api/full" : "/api/evaluate", { values });
       show(answer);
+      if (started !== null) measured(started);
     } catch (e) {
       $("status").textContent = "the studio's server does not answer";
     }
     busy = false;
-    if (again) { again = false; recompute(); } else document.body.dataset.busy = "0";
+    if (again) { again = false; recompute(); }
+    else document.body.dataset.busy = "0";
+  }
+
+  // the frame after the redraw has been laid out: the edit's latency as the user sees it
+  function measured(started) {
+    requestAnimationFrame(() => {
+      const ms = performance.now() - started;
+      performance.measure("studio edit", { start: started, duration: ms });
+      edits += 1;
+      $("latency").textContent = `edit → redrawn in ${ms.toFixed(0)} ms`;
+      $("latency").dataset.ms = ms.toFixed(2);
+      document.body.dataset.edits = String(edits);
+    });
   }
 
   function show(answer) {
@@ -147,9 +171,13 @@
     }
     const body = $("summary").tBodies[0];
     body.textContent = "";
+    $("deferred").hidden = !(answer.deferred && answer.deferred.length && !answer.full);
+    $("deferredtables").textContent = (answer.deferred || []).map((t) => `[${t}]`).join(", ");
+    $("fullmark").hidden = !(answer.deferred && answer.deferred.length && answer.full);
     for (const r of answer.summary) {
       const row = body.insertRow();
-      row.insertCell().textContent = r.label;
+      if (r.live) row.className = "live";
+      row.insertCell().textContent = r.label + (r.live ? " (live estimate)" : "");
       row.insertCell().textContent = fmt(r.value);
       row.cells[1].className = "value";
       row.insertCell().textContent = r.unit;
@@ -163,6 +191,8 @@
     draw();
     document.body.dataset.state = "valid";
   }
+
+  $("fullrun").addEventListener("click", () => recompute(true));
 
   $("save").addEventListener("click", async () => {
     const name = $("saveas").value.trim();
