@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import csv
 import io
-import json
 import math
 import os
 import sys
@@ -171,7 +170,9 @@ class RunResult:
             step("report")
             outputs.text("report.html", self.report_html(watch_stamp))
             if watch_stamp is not None:
-                outputs.text("report.stamp.js", f"window.machdynStamp = {json.dumps(watch_stamp)};\n")
+                from .watching import STAMP_FILE, stamp_script
+
+                outputs.text(STAMP_FILE, stamp_script(watch_stamp))
         except BaseException:
             outputs.abort()
             raise

@@ -1,5 +1,5 @@
 """The studio's browser fixtures: its real server on a free port for a copy of an example, and a page in headless
-Chromium driven by Playwright (skipped where no Chromium executable is found)."""
+Chromium driven by Playwright (skipped where no Chromium executable is found; from tests/studio_browser.py)."""
 
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from studio_browser import CHROMIUM, EXAMPLES, NO_CHROMIUM, TOKEN
+from studio_browser import EXAMPLES, TOKEN, page  # noqa: F401 - the page fixture, shared with tests/cli
 
 
 @pytest.fixture
@@ -50,20 +50,3 @@ def serve(tmp_path) -> Iterator[Callable[[str], tuple[str, Path]]]:
 @pytest.fixture
 def served(serve) -> tuple[str, Path]:
     return serve("four_bar.toml")
-
-
-@pytest.fixture
-def page():
-    if CHROMIUM is None:
-        pytest.skip(NO_CHROMIUM)
-    from playwright import sync_api as playwright
-
-    with playwright.sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=["--no-sandbox", "--disable-gpu"])
-        context = browser.new_context(viewport={"width": 1280, "height": 900})
-        tab = context.new_page()
-        tab.messages = []
-        tab.on("console", lambda m: tab.messages.append(f"{m.type}: {m.text}"))
-        tab.on("pageerror", lambda e: tab.messages.append(f"pageerror: {e}"))
-        yield tab
-        browser.close()
