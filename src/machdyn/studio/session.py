@@ -28,6 +28,7 @@ from ..runner import check_problem, run_problem
 from .dragging import drag_rules
 from .fields import EditableText
 from .live import STUDIES, deferred_tables, live_flywheel
+from .variants import MAX_VARIANTS, Variant, VariantRefused, changed_fields, check_name, compared
 
 EDITABLE_KINDS = ("mechanism",)
 MAX_POSITIONS = 3600  # the studio answers within a fraction of a second up to here
@@ -60,6 +61,7 @@ class Studio:
         self.editable = self.kind in EDITABLE_KINDS
         self.last_valid: dict[str, Any] | None = None
         self.report_html: str | None = None
+        self.variants: dict[str, Variant] = {}
         self._lock = threading.Lock()
 
     # ------------------------------------------------------------------ the page's first view
@@ -143,6 +145,33 @@ class Studio:
                     float(np.nanmax(np.abs(np.asarray(forces.driving_torque, dtype=float))))
             answer["drags"] = drag_rules(result.problem, self.fields, answer["scene"])
         return answer
+
+    # ------------------------------------------------------------------ variants
+
+    def keep_variant(self, name: str, edits: dict[str, str]) -> dict[str, Any]:
+        """Keep the machine of ``edits`` under ``name`` (a valid machine only; a name kept again is replaced)."""
+        if not self.editable:
+            raise SaveRefused(f"a [{self.kind}] file opens read-only in the studio")
+        name = check_name(name)
+        if name not in self.variants and len(self.variants) >= MAX_VARIANTS:
+            raise VariantRefused(f"the studio keeps at most {MAX_VARIANTS} variants")
+        with self._lock:
+            answer = self._evaluate(edits)
+        if not answer["ok"]:
+            raise VariantRefused(f"variant {name!r} not kept: the machine has mistakes\n{answer['message']}")
+        self.variants[name] = Variant(name, dict(edits), answer)
+        return {"ok": True, "variants": list(self.variants)}
+
+    def compare(self, a: str, b: str) -> dict[str, Any]:
+        """Variants ``a`` and ``b`` side by side: both machines (views, summaries), the fields that differ and
+        the table of their common results with the differences."""
+        missing = [n for n in (a, b) if n not in self.variants]
+        if missing:
+            raise VariantRefused(f"no variant named {missing[0]!r}; kept: {', '.join(self.variants) or 'none'}")
+        first, second = self.variants[a], self.variants[b]
+        return {"ok": True, "a": {"name": a, "answer": first.answer}, "b": {"name": b, "answer": second.answer},
+                "fields": changed_fields(first, second, {f.key: f.number for f in self.fields}),
+                "rows": compared(first, second)}
 
     # ------------------------------------------------------------------ saving
 

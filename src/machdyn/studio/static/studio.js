@@ -230,54 +230,129 @@
 
   function draw() {
     const svg = $("view");
+    if (!last || !last.scene) { svg.textContent = ""; drawPlots(); return; }
+    $("angle").textContent = `${fmt(last.scene.angles[frame])}°`;
+    drawMachine(svg, last.scene, view, frame, last.drags);
+    $("slider").value = frame;
+    drawPlots();
+    if (comparing) drawComparison();
+  }
+
+  // the machine of scene s at position i in svg, seen through v (scale and centre); handles where drags allow
+  function drawMachine(svg, s, v, i, drags) {
     svg.textContent = "";
-    if (!last || !last.scene) { drawPlots(); return; }
-    const s = last.scene;
-    $("angle").textContent = `${fmt(s.angles[frame])}°`;
+    const X = (x) => W / 2 + (x - v.cx) * v.k, Y = (y) => H / 2 - (y - v.cy) * v.k;
+    const pt = (name) => {
+      if (name.startsWith("ground:")) {
+        const g = s.ground.find((p) => "ground:" + p.name === name);
+        return g ? [g.x, g.y] : null;
+      }
+      const p = s.points[name];
+      return p && p[0][i] !== null ? [p[0][i], p[1][i]] : null;
+    };
     for (const t of s.traces) {
       const [xs, ys] = s.points[t];
-      const d = xs.map((x, i) => x === null ? "" : `${sx(x).toFixed(1)},${sy(ys[i]).toFixed(1)}`).filter(Boolean).join(" ");
+      const d = xs.map((x, j) => x === null ? "" : `${X(x).toFixed(1)},${Y(ys[j]).toFixed(1)}`).filter(Boolean).join(" ");
       el("polyline", { points: d, fill: "none", stroke: "#9ab", "stroke-dasharray": "3 3" }, svg);
     }
-    for (const g of s.guides) el("line", { x1: sx(g[0]), y1: sy(g[1]), x2: sx(g[2]), y2: sy(g[3]), stroke: "#888", "stroke-width": 3 }, svg);
+    for (const g of s.guides) el("line", { x1: X(g[0]), y1: Y(g[1]), x2: X(g[2]), y2: Y(g[3]), stroke: "#888", "stroke-width": 3 }, svg);
     for (const b of s.bodies) {
-      const pts = b.points.map((p) => at(`${b.name}.${p}`, frame)).filter(Boolean);
+      const pts = b.points.map((p) => pt(`${b.name}.${p}`)).filter(Boolean);
       if (!pts.length) continue;
       if (b.shape === "slider") {
         const [x, y] = pts[0];
-        const r = el("rect", { x: sx(x) - 16, y: sy(y) - 9, width: 32, height: 18, fill: b.colour, "fill-opacity": 0.5, stroke: b.colour }, svg);
-        if (b.angle) r.setAttribute("transform", `rotate(${-b.angle[frame]} ${sx(x)} ${sy(y)})`);
+        const r = el("rect", { x: X(x) - 16, y: Y(y) - 9, width: 32, height: 18, fill: b.colour, "fill-opacity": 0.5, stroke: b.colour }, svg);
+        if (b.angle) r.setAttribute("transform", `rotate(${-b.angle[i]} ${X(x)} ${Y(y)})`);
       } else {
-        el("polygon", { points: pts.map(([x, y]) => `${sx(x)},${sy(y)}`).join(" "), fill: b.colour, "fill-opacity": b.shape === "polygon" ? 0.25 : 0,
+        el("polygon", { points: pts.map(([x, y]) => `${X(x)},${Y(y)}`).join(" "), fill: b.colour, "fill-opacity": b.shape === "polygon" ? 0.25 : 0,
           stroke: b.colour, "stroke-width": 5, "stroke-linejoin": "round" }, svg);
       }
     }
     for (const g of s.ground) {
-      const x = sx(g.x), y = sy(g.y);
+      const x = X(g.x), y = Y(g.y);
       el("path", { d: `M${x},${y} l-9,15 h18 z`, fill: "#ccc", stroke: "#555" }, svg);
     }
-    const handles = new Set(last.drags.flatMap((r) => r.points));
+    const handles = new Set((drags || []).flatMap((r) => r.points));
     const drawn = new Set();
     for (const [name] of Object.entries(s.points)) {
-      const p = at(name, frame);
+      const p = pt(name);
       if (!p) continue;
-      const key = `${sx(p[0]).toFixed(0)},${sy(p[1]).toFixed(0)}`;
+      const key = `${X(p[0]).toFixed(0)},${Y(p[1]).toFixed(0)}`;
       const handle = handles.has(name);
       if (drawn.has(key) && !handle) continue;
       drawn.add(key);
-      const c = el("circle", { cx: sx(p[0]), cy: sy(p[1]), r: handle ? 7 : 4, fill: handle ? "#fff" : "#333", stroke: "#333", "data-point": name }, svg);
+      const c = el("circle", { cx: X(p[0]), cy: Y(p[1]), r: handle ? 7 : 4, fill: handle ? "#fff" : "#333", stroke: "#333", "data-point": name }, svg);
       if (handle) c.classList.add("handle");
     }
     for (const g of s.ground) {
       if (!handles.has("ground:" + g.name)) continue;
-      el("circle", { cx: sx(g.x), cy: sy(g.y), r: 7, fill: "#fff", stroke: "#333", class: "handle", "data-point": "ground:" + g.name }, svg);
+      el("circle", { cx: X(g.x), cy: Y(g.y), r: 7, fill: "#fff", stroke: "#333", class: "handle", "data-point": "ground:" + g.name }, svg);
     }
     for (const g of s.ground) {
-      const t = el("text", { x: sx(g.x) + 10, y: sy(g.y) + 26, "font-size": 12, fill: "#555" }, svg);
+      const t = el("text", { x: X(g.x) + 10, y: Y(g.y) + 26, "font-size": 12, fill: "#555" }, svg);
       t.textContent = g.name;
     }
-    $("slider").value = frame;
-    drawPlots();
+  }
+
+  // ------------------------------------------------------------------ variants side by side
+  let comparing = null;
+
+  function variantList(names) {
+    for (const id of ["vara", "varb"]) {
+      const sel = $(id), kept = sel.value;
+      sel.textContent = "";
+      for (const n of names) { const o = document.createElement("option"); o.value = o.textContent = n; sel.appendChild(o); }
+      if (names.includes(kept)) sel.value = kept;
+    }
+    if (names.length > 1 && $("vara").value === $("varb").value) $("varb").value = names[names.length - 1];
+    $("compare").disabled = names.length < 2;
+    $("variants").dataset.count = String(names.length);
+  }
+
+  $("keep").addEventListener("click", async () => {
+    const name = $("varname").value.trim() || `variant ${Number($("variants").dataset.count || 0) + 1}`;
+    const answer = await api("/api/variant", { name, values });
+    $("varmsg").textContent = answer.ok ? `kept “${name}”` : answer.message;
+    $("varmsg").className = answer.ok ? "ok" : "error";
+    if (answer.ok) { variantList(answer.variants); $("varname").value = ""; }
+  });
+
+  $("compare").addEventListener("click", async () => {
+    const answer = await api("/api/compare", { a: $("vara").value, b: $("varb").value });
+    if (!answer.ok) { $("varmsg").textContent = answer.message; $("varmsg").className = "error"; return; }
+    comparing = answer;
+    $("comparison").hidden = false;
+    drawComparison();
+  });
+  $("closecompare").addEventListener("click", () => { comparing = null; $("comparison").hidden = true; });
+
+  function drawComparison() {
+    const c = comparing;
+    const sa = c.a.answer.scene, sb = c.b.answer.scene;
+    $("cmpa").textContent = c.a.name; $("cmpb").textContent = c.b.name;
+    if (sa && sb) {  // one scale: the union of both machines' extents
+      const e = [Math.min(sa.extent[0], sb.extent[0]), Math.max(sa.extent[1], sb.extent[1]),
+        Math.min(sa.extent[2], sb.extent[2]), Math.max(sa.extent[3], sb.extent[3])];
+      const v = fit({ extent: e });
+      for (const [id, s] of [["viewa", sa], ["viewb", sb]]) {
+        const i = Math.round(frame / Math.max(1, (last && last.scene ? last.scene.angles.length : 1) - 1) * (s.angles.length - 1)) || 0;
+        drawMachine($(id), s, v, Math.min(i, s.angles.length - 1), []);
+      }
+      $("cmpscale").textContent = `one scale: ${fmt(100 / v.k * 1000)} mm per 100 px`;
+    }
+    const fields = $("cmpfields");
+    fields.textContent = c.fields.length ? "Fields that differ: " + c.fields.map((f) => `${f.key} ${f.a} → ${f.b}`).join("; ") : "The two variants have the same values.";
+    const body = $("cmptable").tBodies[0];
+    body.textContent = "";
+    for (const r of c.rows) {
+      const row = body.insertRow();
+      row.insertCell().textContent = r.label;
+      for (const v of [r.a, r.b, r.difference]) { const cell = row.insertCell(); cell.textContent = fmt(v); cell.className = "value"; }
+      const rel = row.insertCell(); rel.className = "value";
+      rel.textContent = r.relative === null ? "–" : `${r.relative >= 0 ? "+" : ""}${(100 * r.relative).toFixed(1)} %`;
+      row.insertCell().textContent = r.unit;
+      if (r.difference !== 0) row.className = "differs";
+    }
   }
 
   // ------------------------------------------------------------------ plots
