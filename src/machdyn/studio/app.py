@@ -9,8 +9,9 @@ network.
 Endpoints: ``GET /`` the page; ``GET /api/state`` the fields and the machine as on disk; ``POST /api/evaluate``
 ``{"values": {key: number}}`` the machine with those values, live (:mod:`machdyn.studio.live`); ``POST
 /api/full`` the same with every table (*Full run*); ``POST /api/variant`` ``{"name": ..., "values": ...}`` keeps
-that machine as a named variant; ``POST /api/compare`` ``{"a": name, "b": name}`` two variants side by side; ``POST /api/save`` ``{"values": ..., "name":
-optional new file name}``; ``GET /report`` the ordinary run's report (files the studio shows read-only).
+that machine as a named variant; ``POST /api/compare`` ``{"a": name, "b": name}`` two variants side by side;
+``POST /api/save`` ``{"values": ..., "name": optional new file name}``; ``GET /report`` the ordinary run's report
+(files the studio shows read-only).
 """
 
 from __future__ import annotations
