@@ -25,12 +25,13 @@ from ..problem.loader import parse_toml, read_text
 from ..reading import LoadedProblem, kind_of, read_problem
 from ..report.animation import scene
 from ..runner import check_problem, run_problem
+from .cam_view import cam_scene
 from .dragging import drag_rules
 from .fields import EditableText
-from .live import STUDIES, deferred_tables, live_flywheel
+from .live import DEFERRED, STUDIES, deferred_tables, live_flywheel, without_simulation
 from .variants import MAX_VARIANTS, Variant, VariantRefused, changed_fields, check_name, compared
 
-EDITABLE_KINDS = ("mechanism",)
+EDITABLE_KINDS = ("mechanism", "cam", "shaft_line")
 MAX_POSITIONS = 3600  # the studio answers within a fraction of a second up to here
 NEW_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9 ._-]{0,120}\.toml$")
 
@@ -113,15 +114,21 @@ class Studio:
         warnings = check_problem(loaded) if self.editable else []  # every table judged, deferred ones too
         spec = loaded.spec  # with its deferred tables
         deferred = deferred_tables(loaded.spec) if self.editable else []
-        left_out = {t: None for t in (*STUDIES, *([] if full else deferred))
+        left_out = {t: None for t in (*STUDIES, *(() if full or not self.editable else DEFERRED))
                     if getattr(loaded.spec, t, None) is not None}
-        if left_out:
-            loaded = LoadedProblem(loaded.kind, loaded.spec.model_copy(update=left_out), loaded.text,
-                                   loaded.source, loaded.model)
+        live = loaded.spec.model_copy(update=left_out) if left_out else loaded.spec
+        if not full and self.editable:
+            live = without_simulation(live)
+        if live is not loaded.spec:
+            loaded = LoadedProblem(loaded.kind, live, loaded.text, loaded.source, loaded.model)
         result = run_problem(loaded)
         answer = self._answer(result, warnings)
+        if result.kind == "cam":
+            answer["cam"] = cam_scene(spec, result.outcomes["cam"], self.fields)
+            answer["headline"] = {"label": "Peak pressure angle", "value": answer["cam"]["max_pressure_angle"],
+                                  "unit": "deg"}
         answer["full"], answer["deferred"] = full or not deferred, deferred  # deferred: run only when full
-        if not full and "flywheel" in deferred and result.analysis is not None:
+        if not full and "[flywheel]" in deferred and result.analysis is not None:
             answer["summary"] += live_flywheel(spec, result.analysis)
         return answer
 
@@ -143,6 +150,7 @@ class Studio:
                 exact = outcome.scalars.get("driving_torque.max_abs")
                 answer["peak_torque"] = float(exact) if exact is not None else \
                     float(np.nanmax(np.abs(np.asarray(forces.driving_torque, dtype=float))))
+                answer["headline"] = {"label": "Peak driving torque", "value": answer["peak_torque"], "unit": "N·m"}
             answer["drags"] = drag_rules(result.problem, self.fields, answer["scene"])
         return answer
 

@@ -164,7 +164,9 @@
     $("check").textContent = "";
     $("status").textContent = `computed in ${answer.compute_ms} ms`;
     $("title").textContent = answer.title || "machdyn studio";
-    $("peak").textContent = answer.peak_torque === null ? "–" : `${fmt(answer.peak_torque)} N·m`;
+    const head = answer.headline;
+    $("peaklabel").textContent = head ? head.label : "Peak driving torque";
+    $("peak").textContent = head && head.value !== null ? `${fmt(head.value)} ${head.unit}` : "–";
     $("warnings").textContent = "";
     for (const w of [...answer.warnings, ...answer.failed_checks.map((c) => "design check failed: " + c)]) {
       const p = document.createElement("p"); p.className = "warning"; p.textContent = w; $("warnings").appendChild(p);
@@ -172,7 +174,7 @@
     const body = $("summary").tBodies[0];
     body.textContent = "";
     $("deferred").hidden = !(answer.deferred && answer.deferred.length && !answer.full);
-    $("deferredtables").textContent = (answer.deferred || []).map((t) => `[${t}]`).join(", ");
+    $("deferredtables").textContent = (answer.deferred || []).join(", ");
     $("fullmark").hidden = !(answer.deferred && answer.deferred.length && answer.full);
     for (const r of answer.summary) {
       const row = body.insertRow();
@@ -187,6 +189,12 @@
       $("slider").max = s.angles.length - 1;
       frame = Math.min(frame, s.angles.length - 1);
       if (!view || !drag && outside(s)) view = fit(s);
+    } else if (answer.cam) {
+      const c = answer.cam;
+      $("slider").max = c.angles.length - 1;
+      frame = Math.min(frame, c.angles.length - 1);
+      const reach = camReach(c);
+      if (!view || !camDrag && outside({ extent: reach })) view = fit({ extent: reach });
     }
     draw();
     document.body.dataset.state = "valid";
@@ -230,6 +238,7 @@
 
   function draw() {
     const svg = $("view");
+    if (last && last.cam) { drawCam(svg, last.cam, frame); $("slider").value = frame; drawPlots(); return; }
     if (!last || !last.scene) { svg.textContent = ""; drawPlots(); return; }
     $("angle").textContent = `${fmt(last.scene.angles[frame])}°`;
     drawMachine(svg, last.scene, view, frame, last.drags);
@@ -356,7 +365,7 @@
   }
 
   // ------------------------------------------------------------------ plots
-  function plot(title, unit, series, angles) {
+  function plot(title, unit, series, angles, extra) {
     const w = 640, h = 170, l = 56, r = 10, t = 20, b = 24;
     const svg = el("svg", { viewBox: `0 0 ${w} ${h}`, class: "plot", "data-title": title });
     const all = series.flatMap((s) => s.ys).filter((v) => v !== null);
@@ -380,7 +389,15 @@
     });
     const x = px(angles[frame]);
     el("line", { x1: x, x2: x, y1: t, y2: h - b, stroke: "#555", "stroke-dasharray": "2 2" }, svg);
+    // from a pointer to the plot's own numbers (angle, value), at the scale it was drawn with
+    svg.inverse = (e) => {
+      const box = svg.getBoundingClientRect();
+      const X = (e.clientX - box.left) * w / box.width, Y = (e.clientY - box.top) * h / box.height;
+      return [a0 + (X - l) / (w - l - r) * (a1 - a0), hi - (Y - t) / (h - t - b) * (hi - lo)];
+    };
+    if (extra) extra(svg, px, py);
     svg.addEventListener("click", (e) => {
+      if (e.target.classList && e.target.classList.contains("handle")) return;
       const box = svg.getBoundingClientRect();
       const a = a0 + ((e.clientX - box.left) * w / box.width - l) / (w - l - r) * (a1 - a0);
       let best = 0;
@@ -392,6 +409,7 @@
 
   function drawPlots() {
     const box = $("plots");
+    if (last && last.cam) { camPlots(box, last.cam); return; }
     box.textContent = "";
     if (!last || !last.scene) return;
     const s = last.scene;
@@ -402,15 +420,109 @@
     }
   }
 
+  // ------------------------------------------------------------------ a cam: its profile turning, its diagrams
+  let camDrag = null;
+
+  function camReach(c) {  // a square around the cam and its follower's travel
+    let r = c.base_radius;
+    for (const [xs, ys] of [c.surface, c.pitch]) xs.forEach((x, i) => { if (x !== null) r = Math.max(r, Math.hypot(x, ys[i])); });
+    r += c.roller_radius;
+    return [-1.15 * r, 1.15 * r, -1.15 * r, 1.6 * r];
+  }
+
+  function drawCam(svg, c, i) {
+    svg.textContent = "";
+    const v = view, X = (x) => W / 2 + (x - v.cx) * v.k, Y = (y) => H / 2 - (y - v.cy) * v.k;
+    const a = c.turn * c.angles[i] * Math.PI / 180, ca = Math.cos(a), sa = Math.sin(a);
+    const turned = (x, y) => [ca * x - sa * y, sa * x + ca * y];  // F = R(theta) P: the cam turned by theta
+    const line = ([xs, ys]) => xs.map((x, j) => x === null ? "" : turned(x, ys[j])).filter(Boolean)
+      .map(([x, y]) => `${X(x).toFixed(1)},${Y(y).toFixed(1)}`).join(" ");
+    el("circle", { cx: X(0), cy: Y(0), r: c.base_radius * v.k, fill: "none", stroke: "#bbb", "stroke-dasharray": "4 3" }, svg);
+    el("polygon", { points: line(c.surface), fill: "#c8d8ea", stroke: "#1f4e79", "stroke-width": 2, "data-part": "cam" }, svg);
+    if (c.contact === "roller") el("polygon", { points: line(c.pitch), fill: "none", stroke: "#9ab", "stroke-dasharray": "3 3" }, svg);
+    el("circle", { cx: X(0), cy: Y(0), r: 4, fill: "#333" }, svg);
+    const [px, py] = turned(c.pitch[0][i], c.pitch[1][i]);
+    if (c.contact === "flat") {
+      el("line", { x1: X(px) - 60, x2: X(px) + 60, y1: Y(py), y2: Y(py), stroke: "#d62728", "stroke-width": 4 }, svg);
+      el("line", { x1: X(0), x2: X(0), y1: Y(py), y2: Y(py) - 70, stroke: "#d62728", "stroke-width": 6 }, svg);
+    } else {
+      el("line", { x1: X(px), x2: X(px), y1: Y(py), y2: Y(py) - 70, stroke: "#d62728", "stroke-width": 6 }, svg);
+      el("circle", { cx: X(px), cy: Y(py), r: Math.max(3, c.roller_radius * v.k), fill: "#fff", stroke: "#d62728", "stroke-width": 2 }, svg);
+    }
+    $("angle").textContent = `${fmt(c.angles[i])}°`;
+  }
+
+  function camPlots(box, c) {
+    const [disp, ...rest] = c.curves;
+    if (camDrag) {  // the diagram being dragged stays, at the drag's scale, until the drop; the others follow
+      for (const child of [...box.children]) if (child !== camDrag.svg) child.remove();
+    } else box.textContent = "";
+    if (!camDrag) box.appendChild(plot(disp.title, disp.unit, [{ name: disp.title, ys: disp.y }], c.angles, (svg, px, py) => {
+      svg.id = "diagram";
+      c.points.forEach((p, k) => {
+        const movable = p.x.length || p.y.length;
+        const h = el("circle", { cx: px(p.theta), cy: py(p.s), r: movable ? 7 : 4, fill: movable ? "#fff" : "#333",
+          stroke: "#333", "data-point": String(k) }, svg);
+        if (movable) { h.classList.add("handle"); h.addEventListener("pointerdown", (e) => camGrab(e, svg, p, k)); }
+      });
+    }));
+    for (const r of rest) {
+      const limit = r.title === "Pressure angle" ? (svg, px, py) => {
+        for (const y of [c.pressure_angle_limit, -c.pressure_angle_limit]) el("line", { x1: px(c.angles[0]), x2: px(c.angles[c.angles.length - 1]), y1: py(y), y2: py(y), stroke: "#c00", "stroke-dasharray": "5 3" }, svg);
+      } : undefined;
+      box.appendChild(plot(r.title, r.unit, [{ name: r.title, ys: r.y }], c.angles, limit));
+    }
+  }
+
+  // a program point dragged: sideways moves its boundary, up or down its stroke end, from where it was grabbed
+  function camGrab(e, svg, p, k) {
+    const [a0, s0] = svg.inverse(e);
+    camDrag = { svg, p, k, a0, s0, from: Object.fromEntries([...p.x, ...p.y].map((r) => [r.key, Number(values[r.key])])) };
+    record();
+    svg.setPointerCapture(e.pointerId);
+    svg.addEventListener("pointermove", camMove);
+    const drop = () => { camDrag = null; svg.removeEventListener("pointermove", camMove); draw(); };
+    svg.addEventListener("pointerup", drop, { once: true });
+    svg.addEventListener("pointercancel", drop, { once: true });
+    e.preventDefault(); e.stopPropagation();
+  }
+
+  function camMove(e) {
+    if (!camDrag) return;
+    const [a, s] = camDrag.svg.inverse(e), p = camDrag.p;
+    const perUnit = p.unit === "deg" ? Math.PI / 180 : 1e-3;  // the diagram's units in SI
+    const dx = (a - camDrag.a0) * Math.PI / 180, dy = (s - camDrag.s0) * perUnit;
+    // one change for all the fields of an axis, rounded once (to 0.001 of the field's unit), so that the angles
+    // still add up to 360 deg and the lifts still close the cycle, exactly as typed numbers would
+    for (const [rules, d] of [[p.x, dx], [p.y, dy]]) {
+      if (!rules.length) continue;
+      const step = Math.round(d / rules[0].si * 1000) / 1000;
+      for (const r of rules) {
+        setField(r.key, 0, String(Number((camDrag.from[r.key] + r.sign * step).toFixed(3))));
+      }
+    }
+    const handle = camDrag.svg.querySelector(`circle[data-point="${camDrag.k}"]`);
+    if (handle) {  // the handle follows the pointer (along the axes that move)
+      const box = camDrag.svg.getBoundingClientRect(), vb = camDrag.svg.viewBox.baseVal;
+      if (p.x.length) handle.setAttribute("cx", (e.clientX - box.left) * vb.width / box.width);
+      if (p.y.length) handle.setAttribute("cy", (e.clientY - box.top) * vb.height / box.height);
+    }
+    edited(e);
+  }
+
   // ------------------------------------------------------------------ slider, play, drag
   $("slider").addEventListener("input", () => { frame = Number($("slider").value); draw(); });
-  $("fit").addEventListener("click", () => { if (last && last.scene) { view = fit(last.scene); draw(); } });
+  $("fit").addEventListener("click", () => {
+    if (last && last.scene) view = fit(last.scene); else if (last && last.cam) view = fit({ extent: camReach(last.cam) });
+    draw();
+  });
   $("play").addEventListener("click", () => {
     playing = !playing;
     $("play").textContent = playing ? "Pause" : "Play";
     const step = () => {
-      if (!playing || !last || !last.scene) return;
-      frame = (frame + 1) % last.scene.angles.length;
+      const angles = last && (last.scene || last.cam) ? (last.scene || last.cam).angles : null;
+      if (!playing || !angles) return;
+      frame = (frame + 1) % angles.length;
       draw();
       requestAnimationFrame(step);
     };
@@ -423,8 +535,8 @@
     return [view.cx + (x - W / 2) / view.k, view.cy - (y - H / 2) / view.k];
   }
 
-  function setField(key, number) {
-    values[key] = String(Number(number.toPrecision(5)));
+  function setField(key, number, text) {
+    values[key] = text === undefined ? String(Number(number.toPrecision(5))) : text;
     const row = [...$("fields").tBodies[0].rows].find((r) => r.dataset.key === key);
     if (row) for (const input of row.querySelectorAll("input")) input.value = values[key];
   }
