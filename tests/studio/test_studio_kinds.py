@@ -9,6 +9,8 @@ from pathlib import Path
 
 import pytest
 
+from machdyn.reading import read_problem
+from machdyn.runner import run_problem
 from machdyn.studio.session import Studio
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -40,6 +42,14 @@ def test_a_cam_opens_editable_with_its_program_points(tmp_path):
     assert live["deferred"] == ["the simulation of the cam's follower"]
     labels = " | ".join(r["label"] for r in live["summary"])
     assert "lift-off" not in labels.lower()
+    # what the live edit leaves out is the file's own switch, [cam.dynamics] simulate = false
+    text = (EXAMPLES / "feeder_cam.toml").read_text()
+    ran = run_problem(read_problem(text)).outcomes["cam"]
+    quick = run_problem(read_problem(text.replace('cam_inertia = "0.004 kg*m^2"',
+                                                  'cam_inertia = "0.004 kg*m^2"\nsimulate = false'))).outcomes["cam"]
+    assert ran.results.simulation is not None and quick.results.simulation is None
+    assert set(ran.scalars) - set(quick.scalars) == {"cam.simulated_max_separation"}
+    assert all(quick.scalars[k] == ran.scalars[k] for k in quick.scalars)  # nothing else changes
     # a shorter rise of the same lift is steeper: a larger pressure angle
     steeper = studio.evaluate({"cam.segments[0].angle": "90", "cam.segments[1].angle": "90"})
     assert steeper["headline"]["value"] > live["headline"]["value"]
