@@ -9,6 +9,7 @@ import os
 from pathlib import Path
 
 import pytest
+
 from studio_browser import CHROMIUM, INVALID, NO_CHROMIUM, VALID
 
 pytestmark = pytest.mark.skipif(CHROMIUM is None, reason=NO_CHROMIUM)
