@@ -2,10 +2,10 @@
 view and plots, and on the server, the answer to one edited value.
 
 * **browser** (the figure a designer feels): headless Chromium (Playwright) on the studio's real server (uvicorn
-  on a free port). Each edit types a new crank length into its field; the page measures with its own clock
-  (``performance.now()``) from the input event's time stamp to the animation frame after the view, the summary
-  and the plots are redrawn, and shows it in ``#latency``. The file's own value and 1 % more alternate, so no
-  answer is cached.
+  on a free port). Each edit types a new value into a field (the crank length; a cam's base radius); the page
+  measures with its own clock (``performance.now()``) from the input event's time stamp to the animation frame
+  after the view, the summary and the plots are redrawn, and shows it in ``#latency``. The file's own value and
+  1 % more alternate, so no answer is cached.
 * **server**: the same edits sent to the studio's JSON endpoint in process (Starlette's test client, no network):
   the compute time the server reports (``compute_ms``: judged as ``check`` judges the file, computed live) and the
   whole request.
@@ -37,14 +37,15 @@ from machdyn.studio.session import Studio
 
 ROOT = Path(__file__).resolve().parents[1]
 TOKEN = "bench"
-FIELD = "mechanism.crank.length"
-#: the examples timed: a plain four-bar with forces; a four-bar with forces, a flywheel and a motor (360
-#: positions); a slider-crank press with a flywheel on a belt shaft and a motor
-CASES = ("four_bar.toml", "compactor_flywheel.toml", "crank_press.toml")
+#: the examples timed and the field each edit changes: a plain four-bar with forces; a four-bar with forces, a
+#: flywheel and a motor (360 positions); a slider-crank press with a flywheel on a belt shaft and a motor; a plate
+#: cam with a roller follower, its spring and contact force (720 positions)
+CASES = {"four_bar.toml": "mechanism.crank.length", "compactor_flywheel.toml": "mechanism.crank.length",
+         "crank_press.toml": "mechanism.crank.length", "feeder_cam.toml": "cam.base_radius"}
 
 
-def _pair(studio: Studio) -> tuple[str, str]:
-    number = next(f.number for f in studio.fields if f.key == FIELD)
+def _pair(studio: Studio, field: str) -> tuple[str, str]:
+    number = next(f.number for f in studio.fields if f.key == field)
     return number, f"{float(number) * 1.01:.6g}"
 
 
@@ -56,16 +57,16 @@ def _copy(example: str) -> Iterator[Path]:
         yield path
 
 
-def server_times(example: str, repeats: int) -> dict[str, list[float]]:
+def server_times(example: str, field: str, repeats: int) -> dict[str, list[float]]:
     with _copy(example) as path:
         studio = Studio(path)
-        pair = _pair(studio)
+        pair = _pair(studio, field)
         with TestClient(create_app(studio, TOKEN)) as client:
             client.get("/api/state", headers={"X-Studio-Token": TOKEN})
             server, request = [], []
             for i in range(repeats + 1):
                 started = time.perf_counter()
-                answer = client.post("/api/evaluate", json={"values": {FIELD: pair[(i + 1) % 2]}},
+                answer = client.post("/api/evaluate", json={"values": {field: pair[(i + 1) % 2]}},
                                      headers={"X-Studio-Token": TOKEN}).json()
                 elapsed = 1e3 * (time.perf_counter() - started)
                 if not answer["ok"]:
@@ -96,11 +97,11 @@ def served(path: Path) -> Iterator[str]:
         thread.join(timeout=10)
 
 
-def browser_edits(page, url: str, pair: tuple[str, str], count: int) -> list[float]:
-    """Open ``url`` and make ``count`` edits of the crank length; the page's latency of each [ms]."""
+def browser_edits(page, url: str, key: str, pair: tuple[str, str], count: int) -> list[float]:
+    """Open ``url`` and make ``count`` edits of the field ``key``; the page's latency of each [ms]."""
     page.goto(url)
     page.wait_for_selector("body[data-ready]")
-    field = page.locator(f'#fields tr[data-key="{FIELD}"] input[type=number]')
+    field = page.locator(f'#fields tr[data-key="{key}"] input[type=number]')
     found = []
     for i in range(count):
         field.fill(pair[(i + 1) % 2])
@@ -110,16 +111,17 @@ def browser_edits(page, url: str, pair: tuple[str, str], count: int) -> list[flo
     return found
 
 
-def browser_times(examples: tuple[str, ...], repeats: int, chromium: str) -> dict[str, list[float]]:
+def browser_times(examples: dict[str, str], repeats: int, chromium: str) -> dict[str, list[float]]:
     from playwright import sync_api
 
     out = {}
     with sync_api.sync_playwright() as p:
         browser = p.chromium.launch(executable_path=chromium, args=["--no-sandbox", "--disable-gpu"])
         page = browser.new_context(viewport={"width": 1280, "height": 900}).new_page()
-        for example in examples:
+        for example, key in examples.items():
             with _copy(example) as path, served(path) as url:
-                out[example] = browser_edits(page, url, _pair(Studio(path)), repeats + 1)[1:]  # less the warm-up
+                pair = _pair(Studio(path), key)
+                out[example] = browser_edits(page, url, key, pair, repeats + 1)[1:]  # less the warm-up
         browser.close()
     return out
 
@@ -135,7 +137,7 @@ def main() -> None:
     args = parser.parse_args()
     chromium = os.environ.get("MACHDYN_CHROMIUM") or shutil.which("chromium") or shutil.which("chromium-browser")
     browser = {} if args.no_browser or chromium is None else browser_times(CASES, args.repeats, chromium)
-    server = {name: server_times(name, args.repeats) for name in CASES}
+    server = {name: server_times(name, key, args.repeats) for name, key in CASES.items()}
     width = max(len(k) for k in CASES)
     print(f"{'example (one edit, ms)':<{width}}  {'browser min / median / max':>27}  {'server min / median / max':>27}")
     for name in CASES:
