@@ -21,7 +21,7 @@ from pathlib import Path
 
 import typer
 
-from .outputs import atomic_write_text
+from .outputs import STAMP_FILE, atomic_write_text, stamp_script
 
 #: A problem file is at most 1 MiB (docs/problem-files.md): a larger one is not hashed, its run refuses it.
 _MAX_HASHED = 1 << 20
@@ -36,18 +36,8 @@ NOT_UPDATED = {
 
 #: What the terminal and the report say over the last valid results while the saved file cannot be run.
 BANNER = "Last valid results shown."
-STAMP_FILE = "report.stamp.js"
-
 #: what a run gives back: its exit code, or its exit code and the message it printed
 RunAnswer = int | tuple[int, str | None]
-
-
-def stamp_script(stamp: str, invalid: dict[str, str] | None = None) -> str:
-    """The text of ``report.stamp.js``: the stamp of the report on disk and, while the saved file cannot be run,
-    what the open report shows in its banner (``message``: the lines ``check`` prints; ``at``: the time of the
-    save)."""
-    return (f"window.machdynStamp = {json.dumps(stamp)};\n"
-            f"window.machdynInvalid = {json.dumps(invalid)};\n")
 
 
 def _stamp_of(out: Path) -> str | None:

@@ -22,6 +22,11 @@ from typing import Any
 
 import numpy as np
 
+from ..dynamics.driveline_file import line_of
+from ..dynamics.flywheel import disc_flywheel, rim_flywheel, rim_speed_limit
+from ..dynamics.population_flywheel import exact_flywheel_inertia
+from ..linkage.motion import is_full_turn
+
 #: tables whose stages simulate the motion in time (seconds per run), deferred to *Full run*
 DEFERRED = ("flywheel", "drivetrain", "parts", "transient")
 #: tables of studies: never run by the studio (a whole study per edit); ``machdyn run`` runs them
@@ -56,11 +61,6 @@ def _row(label: str, value: float, unit: str) -> dict[str, Any]:
 def live_flywheel(problem: Any, analysis: Any) -> list[dict[str, Any]]:
     """Summary rows of the flywheel of a linkage file's ``[flywheel]`` from its constant-speed ``analysis``
     (empty when the file gives none or the analysis is not one evenly sampled full turn)."""
-    from ..dynamics.driveline_file import line_of
-    from ..dynamics.flywheel import disc_flywheel, rim_flywheel, rim_speed_limit
-    from ..dynamics.population_flywheel import exact_flywheel_inertia
-    from ..linkage.motion import is_full_turn
-
     table = getattr(problem, "flywheel", None)
     energy = getattr(analysis, "energy", None)
     if table is None or energy is None:
