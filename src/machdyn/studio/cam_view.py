@@ -85,6 +85,8 @@ def cam_scene(spec: Any, outcome: Any, fields: list[Field]) -> dict[str, Any]:
         "pitch": [_sampled(prof.pitch[0], step), _sampled(prof.pitch[1], step)],
         "base_radius": float(follower.base_radius), "roller_radius": float(follower.roller_radius),
         "contact": follower.contact, "turn": -1.0 if result.clockwise else 1.0,
+        # an oscillating follower's pivot, fixed in the frame at (d, 0) (mirrored for a clockwise cam)
+        "pivot": [(-1.0 if result.clockwise else 1.0) * float(follower.pivot_distance), 0.0] if osc else None,
         "points": program_points(spec, result.model.program, fields),
         "max_pressure_angle": float(np.degrees(outcome.scalars["cam.max_pressure_angle"])),
         "pressure_angle_limit": float(np.degrees(outcome.scalars["cam.pressure_angle_limit"])),

@@ -423,8 +423,8 @@
   // ------------------------------------------------------------------ a cam: its profile turning, its diagrams
   let camDrag = null;
 
-  function camReach(c) {  // a square around the cam and its follower's travel
-    let r = c.base_radius;
+  function camReach(c) {  // a square around the cam and its follower's travel (and an oscillating one's pivot)
+    let r = c.pivot ? Math.abs(c.pivot[0]) : c.base_radius;
     for (const [xs, ys] of [c.surface, c.pitch]) xs.forEach((x, i) => { if (x !== null) r = Math.max(r, Math.hypot(x, ys[i])); });
     r += c.roller_radius;
     return [-1.15 * r, 1.15 * r, -1.15 * r, 1.6 * r];
@@ -445,6 +445,10 @@
     if (c.contact === "flat") {
       el("line", { x1: X(px) - 60, x2: X(px) + 60, y1: Y(py), y2: Y(py), stroke: "#d62728", "stroke-width": 4 }, svg);
       el("line", { x1: X(0), x2: X(0), y1: Y(py), y2: Y(py) - 70, stroke: "#d62728", "stroke-width": 6 }, svg);
+    } else if (c.pivot) {  // an oscillating follower: its arm from the pivot to the roller
+      el("line", { x1: X(c.pivot[0]), x2: X(px), y1: Y(c.pivot[1]), y2: Y(py), stroke: "#d62728", "stroke-width": 6 }, svg);
+      el("path", { d: `M${X(c.pivot[0])},${Y(c.pivot[1])} l-9,15 h18 z`, fill: "#ccc", stroke: "#555" }, svg);
+      el("circle", { cx: X(px), cy: Y(py), r: Math.max(3, c.roller_radius * v.k), fill: "#fff", stroke: "#d62728", "stroke-width": 2 }, svg);
     } else {
       el("line", { x1: X(px), x2: X(px), y1: Y(py), y2: Y(py) - 70, stroke: "#d62728", "stroke-width": 6 }, svg);
       el("circle", { cx: X(px), cy: Y(py), r: Math.max(3, c.roller_radius * v.k), fill: "#fff", stroke: "#d62728", "stroke-width": 2 }, svg);
