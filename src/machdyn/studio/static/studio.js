@@ -112,8 +112,9 @@
   $("redo").addEventListener("click", () => { if (future.length) { history.push(values); restore(future.pop()); } });
 
   // ------------------------------------------------------------------ the server
+  let wantFull = false;  // Full run pressed while a request ran: it follows that request
   async function recompute(full) {
-    if (busy) { again = true; return; }  // one request at a time; the latest values follow
+    if (busy) { again = true; wantFull = wantFull || Boolean(full); return; }  // one at a time; the latest follows
     busy = true;
     document.body.dataset.busy = "1";
     const started = full ? null : editStart;  // an edit made while this request runs is measured with the next
@@ -126,7 +127,7 @@
       $("status").textContent = "the studio's server does not answer";
     }
     busy = false;
-    if (again) { again = false; recompute(); }
+    if (again) { again = false; const f = wantFull; wantFull = false; recompute(f); }
     else document.body.dataset.busy = "0";
   }
 
