@@ -38,6 +38,9 @@ def test_drag_a_cam_point_and_see_the_pressure_angle_change(serve, page):
     assert page.locator("#view polygon[data-part=cam]").count() == 1
     titles = [page.locator("#plots svg").nth(i).get_attribute("data-title") for i in range(3)]
     assert titles == ["Follower displacement s", "Pressure angle", "Contact force along the follower's path"]
+    page.fill("#varname", "rise 110 deg")
+    page.click("#keep")
+    page.wait_for_selector("#variants[data-count='1']", state="attached")
 
     # the end of the rise (110 deg, 30 mm) dragged 80 px to the left: a shorter rise, the dwell longer; the
     # cycloidal rise's peak velocity 2 h / beta grows and with it tan(phi) = (v - e) / (d + s) (Norton eq 8.31):
@@ -56,6 +59,18 @@ def test_drag_a_cam_point_and_see_the_pressure_angle_change(serve, page):
     assert _number(page, "cam.segments[0].lift").input_value() == "30"  # a sideways drag keeps the stroke
     assert _peak(page) > before + 5
     _shot(page, "studio-cam.png")
+
+    # the two cams side by side at one scale, the larger pressure angle in the table
+    page.fill("#varname", "shorter rise")
+    page.click("#keep")
+    page.wait_for_selector("#variants[data-count='2']", state="attached")
+    page.click("#compare")
+    page.wait_for_selector("#comparison:not([hidden])")
+    assert page.locator("#viewa polygon[data-part=cam]").count() == 1
+    assert page.locator("#viewb polygon[data-part=cam]").count() == 1
+    row = page.locator("#cmptable tr", has_text="Pressure angle: largest |phi|").inner_text().split("\t")
+    assert float(row[2]) == pytest.approx(_peak(page), abs=0.01) and float(row[2]) > float(row[1])
+    page.click("#closecompare")
 
     # a rise that no longer fits the turn: check's message, the last valid cam kept and marked
     steeper = _peak(page)

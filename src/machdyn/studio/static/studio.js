@@ -239,7 +239,13 @@
 
   function draw() {
     const svg = $("view");
-    if (last && last.cam) { drawCam(svg, last.cam, frame); $("slider").value = frame; drawPlots(); return; }
+    if (last && last.cam) {
+      drawCam(svg, last.cam, frame, view);
+      $("slider").value = frame;
+      drawPlots();
+      if (comparing) drawComparison();
+      return;
+    }
     if (!last || !last.scene) { svg.textContent = ""; drawPlots(); return; }
     $("angle").textContent = `${fmt(last.scene.angles[frame])}°`;
     drawMachine(svg, last.scene, view, frame, last.drags);
@@ -338,8 +344,16 @@
 
   function drawComparison() {
     const c = comparing;
-    const sa = c.a.answer.scene, sb = c.b.answer.scene;
+    const sa = c.a.answer.scene, sb = c.b.answer.scene, ca = c.a.answer.cam, cb = c.b.answer.cam;
     $("cmpa").textContent = c.a.name; $("cmpb").textContent = c.b.name;
+    for (const id of ["viewa", "viewb"]) $(id).textContent = "";
+    if (ca && cb) {  // two cams at one scale, at the cam angle of the slider
+      const ea = camReach(ca), eb = camReach(cb);
+      const v = fit({ extent: [Math.min(ea[0], eb[0]), Math.max(ea[1], eb[1]), Math.min(ea[2], eb[2]), Math.max(ea[3], eb[3])] });
+      drawCam($("viewa"), ca, Math.min(frame, ca.angles.length - 1), v);
+      drawCam($("viewb"), cb, Math.min(frame, cb.angles.length - 1), v);
+      $("cmpscale").textContent = `one scale: ${fmt(100 / v.k * 1000)} mm per 100 px`;
+    }
     if (sa && sb) {  // one scale: the union of both machines' extents
       const e = [Math.min(sa.extent[0], sb.extent[0]), Math.max(sa.extent[1], sb.extent[1]),
         Math.min(sa.extent[2], sb.extent[2]), Math.max(sa.extent[3], sb.extent[3])];
@@ -431,9 +445,9 @@
     return [-1.15 * r, 1.15 * r, -1.15 * r, 1.6 * r];
   }
 
-  function drawCam(svg, c, i) {
+  function drawCam(svg, c, i, v) {
     svg.textContent = "";
-    const v = view, X = (x) => W / 2 + (x - v.cx) * v.k, Y = (y) => H / 2 - (y - v.cy) * v.k;
+    const X = (x) => W / 2 + (x - v.cx) * v.k, Y = (y) => H / 2 - (y - v.cy) * v.k;
     const a = c.turn * c.angles[i] * Math.PI / 180, ca = Math.cos(a), sa = Math.sin(a);
     const turned = (x, y) => [ca * x - sa * y, sa * x + ca * y];  // F = R(theta) P: the cam turned by theta
     const line = ([xs, ys]) => xs.map((x, j) => x === null ? "" : turned(x, ys[j])).filter(Boolean)
@@ -454,7 +468,7 @@
       el("line", { x1: X(px), x2: X(px), y1: Y(py), y2: Y(py) - 70, stroke: "#d62728", "stroke-width": 6 }, svg);
       el("circle", { cx: X(px), cy: Y(py), r: Math.max(3, c.roller_radius * v.k), fill: "#fff", stroke: "#d62728", "stroke-width": 2 }, svg);
     }
-    $("angle").textContent = `${fmt(c.angles[i])}°`;
+    if (svg === $("view")) $("angle").textContent = `${fmt(c.angles[i])}°`;
   }
 
   function camPlots(box, c) {
