@@ -60,7 +60,9 @@ def _console(stderr: bool = False):
 
 def _fail(message: str, code: int) -> typer.Exit:
     typer.echo(message, err=True)
-    return typer.Exit(code)
+    done = typer.Exit(code)
+    done.message = message  # type: ignore[attr-defined]  # for watch's banner over the last valid results
+    return done
 
 
 def _version(value: bool) -> None:
@@ -361,14 +363,14 @@ def watch(
         unlock_folder(out, created)
 
 
-def _watched_run(file: Path, out: Path, stamp: str) -> int:
-    """One run of ``machdyn watch``: the exit code ``run`` would give; its messages are printed as ``run``
-    prints them."""
+def _watched_run(file: Path, out: Path, stamp: str) -> tuple[int, str | None]:
+    """One run of ``machdyn watch``: the exit code ``run`` would give and the message it printed (printed as
+    ``run`` prints it)."""
     try:
         _run(file, out, TableFormat.table, quiet=True, watch_stamp=stamp)
     except typer.Exit as done:
-        return int(done.exit_code or 0)
-    return EXIT_OK
+        return int(done.exit_code or 0), getattr(done, "message", None)
+    return EXIT_OK, None
 
 
 def _run(file: Path, out: Path, format: TableFormat, quiet: bool, watch_stamp: str | None = None) -> None:

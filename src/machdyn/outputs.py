@@ -374,3 +374,14 @@ def _remove_own_output(out: Path, name: str, digest: str, protected: list[Path])
 
 def _remove_tree(path: Path) -> None:
     shutil.rmtree(path, ignore_errors=True)
+
+
+#: ``machdyn watch``'s stamp of the report beside it, which an open report polls (see :mod:`machdyn.watching`)
+STAMP_FILE = "report.stamp.js"
+
+def stamp_script(stamp: str, invalid: dict[str, str] | None = None) -> str:
+    """The text of ``report.stamp.js``: the stamp of the report on disk and, while the saved file cannot be run,
+    what the open report shows in its banner (``message``: the lines ``check`` prints; ``at``: the time of the
+    save)."""
+    return (f"window.machdynStamp = {json.dumps(stamp)};\n"
+            f"window.machdynInvalid = {json.dumps(invalid)};\n")

@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import csv
 import io
-import json
 import math
 import os
 import sys
@@ -30,7 +29,7 @@ from rich.table import Table
 from . import __version__
 from .errors import AnalysisError, AssemblyError, InputError, ProblemFileError, SingularPositionError
 from .kinds import KINDS, capabilities_for, capability, kind
-from .outputs import OutputSet, json_text
+from .outputs import STAMP_FILE, OutputSet, json_text, stamp_script
 from .pipeline import Outcome, StageContext, Step, import_object, no_step
 from .problem.dumper import dump_problem
 from .reading import LoadedProblem, load_problem, read_problem
@@ -171,7 +170,7 @@ class RunResult:
             step("report")
             outputs.text("report.html", self.report_html(watch_stamp))
             if watch_stamp is not None:
-                outputs.text("report.stamp.js", f"window.machdynStamp = {json.dumps(watch_stamp)};\n")
+                outputs.text(STAMP_FILE, stamp_script(watch_stamp))
         except BaseException:
             outputs.abort()
             raise

@@ -56,17 +56,22 @@ def test_watch_reruns_the_saved_file_and_stamps_each_report(tmp_path):
         torque = json.loads((out / "results.json").read_text())["scalars"]["driving_torque.max_abs"]["value"]
         assert 'class="mdview"' in (out / "report.html").read_text()
 
-        # a mistake: reported, the previous outputs stay
+        # a mistake: reported, the previous outputs stay, marked as the last valid ones with check's message
         problem.write_text(text.replace('length = "40 mm"', 'length = "-40 mm"', 1))
-        time.sleep(3.0)
-        assert stamp.read_text() == first
+        deadline = time.monotonic() + 60
+        while stamp.read_text() == first and time.monotonic() < deadline:
+            time.sleep(0.1)
+        marked = stamp.read_text()
+        assert marked.splitlines()[0] == first.splitlines()[0]  # the same stamp: the open report does not re-load
+        assert "must be > 0 m; got '-40 mm'" in marked and "mechanism.crank.length" in marked
+        assert json.loads((out / "results.json").read_text())["scalars"]["driving_torque.max_abs"]["value"] == torque
 
         # fixed with a longer crank: a new run, a new stamp, a larger peak torque
         problem.write_text(text.replace('length = "40 mm"', 'length = "45 mm"', 1))
         deadline = time.monotonic() + 60
-        while stamp.read_text() == first and time.monotonic() < deadline:
+        while stamp.read_text() == marked and time.monotonic() < deadline:
             time.sleep(0.1)
-        assert stamp.read_text() != first
+        assert stamp.read_text() != marked and stamp.read_text().endswith("window.machdynInvalid = null;\n")
         again = json.loads((out / "results.json").read_text())["scalars"]["driving_torque.max_abs"]["value"]
         assert again != torque
     finally:
@@ -74,6 +79,9 @@ def test_watch_reruns_the_saved_file_and_stamps_each_report(tmp_path):
         _out, err = proc.communicate(timeout=90)  # generous: a loaded CI machine may be mid-run
     assert proc.returncode == 0, err
     assert "report updated" in err and "not updated (exit 2)" in err and "stopped watching" in err
+    # the terminal's banner follows the check's message
+    assert "must be > 0 m; got '-40 mm'" in err
+    assert "Last valid results shown. The saved file has mistakes (above)" in err
     assert "Traceback" not in err
 
 

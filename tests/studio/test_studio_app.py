@@ -62,7 +62,8 @@ def test_the_token_is_required_on_every_request(client):
     assert page.status_code == 200 and "machdyn studio" in page.text
     # no network resource: no tag or style loads one, and the page's calls go to its own server (paths only)
     assert not re.search(r"""(src|href)\s*=\s*["']?(https?:)?//|url\(\s*["']?https?:|@import""", page.text)
-    assert re.findall(r"""(?:api|fetch)\(\s*["']([^"']*)""", page.text) == ["/api/evaluate", "/api/save", "/api/state"]
+    called = re.findall(r"""(?:api|fetch)\(\s*(?:full \? "/api/full" : )?["']([^"']*)""", page.text)
+    assert sorted(called) == ["/api/compare", "/api/evaluate", "/api/save", "/api/state", "/api/variant"]
     assert "default-src 'none'" in page.headers["content-security-policy"]
     assert client.get("/api/state", headers=H).json()["editable"] is True
 
@@ -158,17 +159,17 @@ def test_the_drag_rules_name_the_fields_that_define_the_dragged_points(client):
 
 
 def test_other_kinds_open_read_only_with_their_report(tmp_path):
-    path = tmp_path / "shaft.toml"
-    shutil.copy(EXAMPLES / "shaft_inline_four.toml", path)
+    path = tmp_path / "conveyor.toml"
+    shutil.copy(EXAMPLES / "conveyor_lift_torque.toml", path)
     with TestClient(create_app(Studio(path), TOKEN)) as c:
         state = c.get("/api/state", headers=H).json()
-        assert state["editable"] is False and state["kind"] == "shaft_line"
+        assert state["editable"] is False and state["kind"] == "screw_conveyor"
         assert state["result"]["ok"] and state["result"]["summary"]
         assert c.post("/api/evaluate", json={"values": {}}, headers=H).status_code == 400
         assert c.post("/api/save", json={"values": {}}, headers=H).status_code == 400
         report = c.get("/report", headers=H)
         assert report.status_code == 200 and "<html" in report.text.lower()
-    assert path.read_text() == (EXAMPLES / "shaft_inline_four.toml").read_text()
+    assert path.read_text() == (EXAMPLES / "conveyor_lift_torque.toml").read_text()
 
 
 @pytest.mark.parametrize(("old", "new"), [('"0.25 kg"', '"-0.25 kg"'), ('length = "40 mm"', 'length = "40 mm'),

@@ -7,61 +7,13 @@ found (set ``MACHDYN_CHROMIUM`` to choose one)."""
 from __future__ import annotations
 
 import os
-import shutil
-import threading
-import time
 from pathlib import Path
 
 import pytest
-import uvicorn
-from playwright import sync_api as playwright
 
-from machdyn.studio.app import create_app
-from machdyn.studio.server import free_port
-from machdyn.studio.session import Studio
+from studio_browser import CHROMIUM, INVALID, NO_CHROMIUM, VALID
 
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
-CANDIDATES = ("chromium", "chromium-browser", "google-chrome", "google-chrome-stable")
-CHROMIUM = os.environ.get("MACHDYN_CHROMIUM") or next((shutil.which(n) for n in CANDIDATES if shutil.which(n)), None)
-pytestmark = pytest.mark.skipif(CHROMIUM is None, reason=f"no Chromium on PATH (looked for {', '.join(CANDIDATES)}): "
-                                "apt-get install -y chromium, or set MACHDYN_CHROMIUM")
-TOKEN = "browser-test-token"
-# the page says on its body whether a request is under way and whether the last answer was valid (the page's
-# own Content-Security-Policy forbids evaluating test code in it, so the waits are selectors)
-VALID = "body[data-busy='0'][data-state=valid]"
-INVALID = "body[data-busy='0'][data-state=invalid]"
-
-
-@pytest.fixture
-def served(tmp_path):
-    path = tmp_path / "four_bar.toml"
-    shutil.copy(EXAMPLES / "four_bar.toml", path)
-    port = free_port()
-    server = uvicorn.Server(uvicorn.Config(create_app(Studio(path), TOKEN), host="127.0.0.1", port=port,
-                                           log_level="warning"))
-    thread = threading.Thread(target=server.run, daemon=True)
-    thread.start()
-    deadline = time.monotonic() + 20
-    while not server.started and time.monotonic() < deadline:
-        time.sleep(0.02)
-    assert server.started, "the studio's server did not start"
-    yield f"http://127.0.0.1:{port}/?token={TOKEN}", path
-    server.should_exit = True
-    thread.join(timeout=10)
-    assert not thread.is_alive(), "the server did not stop"
-
-
-@pytest.fixture
-def page():
-    with playwright.sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, args=["--no-sandbox", "--disable-gpu"])
-        context = browser.new_context(viewport={"width": 1280, "height": 900})
-        tab = context.new_page()
-        tab.messages = []
-        tab.on("console", lambda m: tab.messages.append(f"{m.type}: {m.text}"))
-        tab.on("pageerror", lambda e: tab.messages.append(f"pageerror: {e}"))
-        yield tab
-        browser.close()
+pytestmark = pytest.mark.skipif(CHROMIUM is None, reason=NO_CHROMIUM)
 
 
 def _peak(page) -> float:

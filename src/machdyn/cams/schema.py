@@ -104,6 +104,8 @@ class DynamicsSpec(Spec):
     damping: LinearDamping = 0.0
     load: Force = 0.0
     cam_inertia: Inertia = 0.0
+    # the forward simulation of the follower on the cam (seconds; the closed-form jump check stays without it)
+    simulate: bool = Field(True, strict=True)
 
 
 class SpringSpec(Spec):

@@ -297,11 +297,12 @@ def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
         if forces.jump_speed < need * speed * (1 - 1e-9):
             failed.append(f"follower jump: the spring keeps contact only up to {forces.jump_speed * 30 / np.pi:.4g} "
                           f"rpm, below the running speed x {need:g} = {need * speed * 30 / np.pi:.4g} rpm")
-        sim = simulate_follower(model.program, train, spring, speed)
-        values["cam.simulated_max_separation"] = max(sim.max_separation, 0.0) * (arm if osc else 1.0)
-        if not sim.kept_contact:
-            failed.append(f"the simulated follower leaves the cam by {sim.max_separation * 1e3:.3g} "
-                          f"{'mrad' if osc else 'mm'} at the running speed")
+        if cam.dynamics is not None and cam.dynamics.simulate:
+            sim = simulate_follower(model.program, train, spring, speed)
+            values["cam.simulated_max_separation"] = max(sim.max_separation, 0.0) * (arm if osc else 1.0)
+            if not sim.kept_contact:
+                failed.append(f"the simulated follower leaves the cam by {sim.max_separation * 1e3:.3g} "
+                              f"{'mrad' if osc else 'mm'} at the running speed")
     labels = {}
     if osc:
         labels = {k: Label(t, u[0], u[1]) for k, (t, _, u) in _MOTION_LABELS.items()}

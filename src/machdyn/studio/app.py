@@ -7,8 +7,11 @@ later edits wait for it). The page and its script are files of this package: not
 network.
 
 Endpoints: ``GET /`` the page; ``GET /api/state`` the fields and the machine as on disk; ``POST /api/evaluate``
-``{"values": {key: number}}`` the machine with those values; ``POST /api/save`` ``{"values": ..., "name":
-optional new file name}``; ``GET /report`` the ordinary run's report (files the studio shows read-only).
+``{"values": {key: number}}`` the machine with those values, live (:mod:`machdyn.studio.live`); ``POST
+/api/full`` the same with every table (*Full run*); ``POST /api/variant`` ``{"name": ..., "values": ...}`` keeps
+that machine as a named variant; ``POST /api/compare`` ``{"a": name, "b": name}`` two variants side by side;
+``POST /api/save`` ``{"values": ..., "name": optional new file name}``; ``GET /report`` the ordinary run's report
+(files the studio shows read-only).
 """
 
 from __future__ import annotations
@@ -82,6 +85,11 @@ def _too_large(limit: int) -> JSONResponse:
                         status_code=413)
 
 
+def _said(exc: Exception) -> str:
+    """The message of a refusal (a KeyError's without the quotes its str adds)."""
+    return str(exc.args[0]) if isinstance(exc, KeyError) and exc.args else str(exc)
+
+
 def _asset(name: str) -> str:
     return resources.files("machdyn.studio").joinpath("static", name).read_text(encoding="utf-8")
 
@@ -138,14 +146,35 @@ def create_app(studio: Studio, token: str, *, compute_seconds: float = COMPUTE_S
         except TimeoutError:
             return too_long()
 
-    async def evaluate(request: Request) -> Response:
+    async def evaluate(request: Request, full: bool = False) -> Response:
         try:
             values, _ = await _values(request)
-            return JSONResponse(await computed(studio.evaluate, values))
+            return JSONResponse(await computed(lambda: studio.evaluate(values, full=full)))
         except (ValueError, KeyError) as exc:  # a refused save, an unknown field, a value too long
-            return JSONResponse({"ok": False, "problems": [], "message": str(exc).strip("'\"")}, status_code=400)
+            return JSONResponse({"ok": False, "problems": [], "message": _said(exc)}, status_code=400)
         except TimeoutError:
             return too_long()
+
+    async def full_run(request: Request) -> Response:
+        return await evaluate(request, full=True)
+
+    async def variant(request: Request) -> Response:
+        try:
+            values, body = await _values(request)
+            return JSONResponse(await computed(studio.keep_variant, str(body.get("name", "")), values))
+        except (ValueError, KeyError) as exc:  # a refused name or machine, an unknown field
+            return JSONResponse({"ok": False, "message": _said(exc)}, status_code=400)
+        except TimeoutError:
+            return too_long()
+
+    async def compare(request: Request) -> Response:
+        try:
+            body = await request.json()
+            if not isinstance(body, dict):
+                raise ValueError('the request body is {"a": name, "b": name}')
+            return JSONResponse(studio.compare(str(body.get("a", "")), str(body.get("b", ""))))
+        except (ValueError, UnicodeDecodeError) as exc:
+            return JSONResponse({"ok": False, "message": _said(exc)}, status_code=400)
 
     async def save(request: Request) -> Response:
         try:
@@ -153,7 +182,7 @@ def create_app(studio: Studio, token: str, *, compute_seconds: float = COMPUTE_S
             name = body.get("name") if isinstance(body.get("name"), str) else None
             return JSONResponse(await computed(studio.save, values, name))
         except (ValueError, KeyError) as exc:  # a refused save, an unknown field, a value too long
-            return JSONResponse({"ok": False, "message": str(exc).strip("'\"")}, status_code=400)
+            return JSONResponse({"ok": False, "message": _said(exc)}, status_code=400)
         except OSError as exc:
             return JSONResponse({"ok": False, "message": f"cannot write the file: {exc.strerror or exc}"},
                                 status_code=500)
@@ -168,6 +197,8 @@ def create_app(studio: Studio, token: str, *, compute_seconds: float = COMPUTE_S
 
     app = Starlette(routes=[
         Route("/", home), Route("/api/state", state), Route("/api/evaluate", evaluate, methods=["POST"]),
+        Route("/api/full", full_run, methods=["POST"]),
+        Route("/api/variant", variant, methods=["POST"]), Route("/api/compare", compare, methods=["POST"]),
         Route("/api/save", save, methods=["POST"]), Route("/report", report),
     ], lifespan=_lifespan(worker))
     return Guard(app, token, max_body)

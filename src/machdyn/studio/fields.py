@@ -114,21 +114,41 @@ def edited_text(text: str, edits: Mapping[str, str]) -> str:
     """The problem file ``text`` with each field named in ``edits`` (key -> the number as typed) replaced, every
     other byte kept. A typed value that is not a plain number is put in as typed, for the loader to refuse with
     its own message; an unknown key is a :class:`KeyError`, a value over MAX_TYPED characters a ValueError."""
-    document = tomlkit.parse(text)
-    known = {f.key: f for f in fields_of(document)}
-    for key, typed in edits.items():
-        field = known.get(key)
-        if field is None:
-            raise KeyError(f"'{key}' is not an editable quantity of this file")
-        typed = str(typed).strip()
-        if len(typed) > MAX_TYPED:
-            raise ValueError(f"{key}: a value is a number of at most {MAX_TYPED} characters; got {len(typed)}")
-        if typed == field.number:
-            continue
-        node = _container(document, field.path)
-        last = field.path[-1]
-        node[last] = _value(typed, field)
-    return tomlkit.dumps(document)
+    return EditableText(text).edited(edits)
+
+
+class EditableText:
+    """A problem file parsed once, for many edits: :meth:`edited` puts the edits into the one parsed document,
+    writes it out and puts the file's own items back (parsing the file on every keystroke took most of an
+    edit's time). Not for use by two threads at once."""
+
+    def __init__(self, text: str) -> None:
+        self.text = text
+        self.document = tomlkit.parse(text)
+        self.fields = fields_of(self.document)
+        self.known = {f.key: f for f in self.fields}
+
+    def edited(self, edits: Mapping[str, str]) -> str:
+        """The text with ``edits`` put in (see :func:`edited_text`)."""
+        changed: list[tuple[Any, str | int, Any]] = []
+        try:
+            for key, typed in edits.items():
+                field = self.known.get(key)
+                if field is None:
+                    raise KeyError(f"'{key}' is not an editable quantity of this file")
+                typed = str(typed).strip()
+                if len(typed) > MAX_TYPED:
+                    raise ValueError(f"{key}: a value is a number of at most {MAX_TYPED} characters; got {len(typed)}")
+                if typed == field.number:
+                    continue
+                node = _container(self.document, field.path)
+                last = field.path[-1]
+                changed.append((node, last, node[last]))
+                node[last] = _value(typed, field)
+            return tomlkit.dumps(self.document) if changed else self.text
+        finally:
+            for node, last, item in reversed(changed):
+                node[last] = item
 
 
 def _value(typed: str, field: Field) -> Any:
