@@ -9,6 +9,7 @@ to 4e-4 of V's share."""
 
 from __future__ import annotations
 
+import json
 import math
 
 import pytest
@@ -112,3 +113,73 @@ def test_jindal_example_25_3_lewis_beam_strength_and_power_rating():
     book_kv = (3 + speed) / 3
     assert power * 0.358 / lewis_form_factor(30) * velocity_factor(speed, "cast") / book_kv == pytest.approx(
         11.657, abs=5e-4)
+
+
+SHIGLEY_TEETH = """[drivetrain.stages.teeth]
+module = "3.175 mm"
+face_width = "38.1 mm"
+pinion_teeth = 16
+manufacture = "cut"
+allowable_bending = "68.94757 MPa"
+
+"""
+
+
+SARKAR_BRAKE = """[drivetrain.brake.geometry]
+kind = "differential_band"
+friction = 0.25
+force = "180 N"
+drum_radius = "450 mm"
+lever = "700 mm"
+slack_arm = "100 mm"
+tight_arm = "30 mm"
+blocks = 12
+block_angle = "16 deg"
+
+"""
+
+
+def test_shigley_example_14_1_and_sarkar_band_and_block_brake_through_a_problem_file_and_the_command_line(tmp_path):
+    """Shigley's MED, 10th ed., Example 14-1 (above) as the gear stage of a problem file run by ``machdyn run``:
+    the shipped press with the book's stock pinion (16 teeth, 8 teeth/in = 3.175 mm module, 1.5 in face, cut
+    teeth) on its pinion shaft, the belt and the gear ratios changed (1.25 and 30: the same 37.5 overall) so that
+    the pinion turns at the book's 1200 rpm. The run's pitch speed is the printed 628.3 ft/min, and its bending
+    stress per newton of its tangential load is the book's: 10 kpsi at the printed rating W_t = 365 lbf
+    (tolerance 0.4 %, as in the direct test: the book rounds K_v and W_t); the allowable is the book's 10 kpsi.
+
+    The same run's brake is B. K. Sarkar's band-and-block brake (*Theory of Machines*, Tata McGraw-Hill 2002,
+    ch. 10, illustration 10, p. 275; tests/validation/test_brakes_clutches_published.py): 12 blocks of 16°, no
+    wrap angle needed; ``brake.torque`` is the printed 2481.63 N·m within the book's rounding (0.05 %)."""
+    from pathlib import Path
+
+    from typer.testing import CliRunner
+
+    from machdyn.cli import app
+
+    example = Path(__file__).resolve().parents[2] / "examples" / "press_brake_clutch.toml"
+    text = example.read_text()
+    text = text[: text.index("[flywheel]")] + text[text.index("[drivetrain]"): text.index("[drivetrain.single_stroke]")]
+    for old, new in (("ratio = 4.6875", "ratio = 1.25"), ("ratio = 8.0 ", "ratio = 30.0 "),
+                     ('wheel_radius = "50 mm"', 'wheel_radius = "25.4 mm"')):
+        assert text.count(old) == 1
+        text = text.replace(old, new)
+    for header, table in (("[drivetrain.stages.teeth]", SHIGLEY_TEETH), ("[drivetrain.brake.geometry]", SARKAR_BRAKE)):
+        start = text.index(header)
+        text = text[:start] + table + text[text.index("\n\n", start) + 2:]
+    path = tmp_path / "shigley.toml"
+    path.write_text(text)
+    out = tmp_path / "out"
+    result = CliRunner().invoke(app, ["run", str(path), "--out", str(out), "-q"])
+    assert result.exit_code in (0, 3), result.output
+    reported = json.loads((out / "results.json").read_text())["scalars"]
+    stage = "drivetrain.stage_1."
+    units = {name: reported[stage + name]["unit"] for name in ("pitch_speed", "tangential_load",
+                                                               "pinion_bending_stress")}
+    assert units == {"pitch_speed": "m/s", "tangential_load": "N", "pinion_bending_stress": "MPa"}
+    scalars = {k: v["value"] for k, v in reported.items()}
+    scalars[stage + "pinion_bending_stress"] *= 1e6
+    assert scalars[stage + "pitch_speed"] / 0.3048 * 60 == pytest.approx(628.3, abs=0.05)
+    per_newton = scalars[stage + "pinion_bending_stress"] / scalars[stage + "tangential_load"]
+    assert per_newton == pytest.approx(10_000 * PSI / (365 * LBF), rel=4e-3)
+    assert scalars[stage + "utilisation"] >= scalars[stage + "pinion_bending_stress"] / (10_000 * PSI) * (1 - 1e-6)
+    assert scalars["brake.torque"] == pytest.approx(2481.63, rel=5e-4)
