@@ -20,7 +20,7 @@ import math
 import pytest
 from typer.testing import CliRunner
 
-from machdyn.cams.geometric import circular_arc_flat, contour_phi, rise_angle, tangent_roller
+from machdyn.cams.geometric import circular_arc_flat, contour_phi, flank_radius_for_angle, rise_angle, tangent_roller
 from machdyn.cli import app
 
 
@@ -71,6 +71,8 @@ def test_bevan_example_5_circular_arc_cam_with_a_flat_faced_follower():
     and ω² d = 1973.9 ft/s² are checked at three nose angles to half a unit of the last printed digit."""
     flank = _bevan_flank_radius()
     assert (flank - BEVAN_BASE) / INCH == pytest.approx(4.477, abs=0.002)
+    # the closed form of the book's triangle agrees with the root of the rise angle
+    assert flank_radius_for_angle(BEVAN_BASE, BEVAN_NOSE, BEVAN_LIFT, BEVAN_RISE) == pytest.approx(flank, rel=1e-12)
     phi = contour_phi("circular_arc", BEVAN_BASE, BEVAN_NOSE, BEVAN_LIFT, flank)
     on_flank = [0.2 * phi, 0.6 * phi, phi]
     m = circular_arc_flat(BEVAN_BASE, BEVAN_NOSE, BEVAN_LIFT, flank, on_flank, BEVAN_OMEGA)
@@ -87,16 +89,15 @@ def test_bevan_example_5_circular_arc_cam_with_a_flat_faced_follower():
     assert float(top.x[0]) == pytest.approx(BEVAN_LIFT, rel=1e-12) and float(top.v[0]) == pytest.approx(0, abs=1e-12)
 
 
-def _bevan_problem(flank: float) -> str:
+def _bevan_problem() -> str:
     rest = 360 - 2 * 55
     segment = """
 [[cam.segments]]
 motion = "{motion}"
-angle = "55 deg"
+angle = "55 deg"                # the book's angle of rise: the flank radius follows from it
 lift = "0.5 in"
 law = "circular_arc"
 nose_radius = "0.125 in"
-flank_radius = "{flank!r} m"
 """
     return ("""[meta]
 name = "Bevan, The Theory of Machines, ch. 9, Example 5"
@@ -108,7 +109,7 @@ base_radius = "1.125 in"
 [cam.follower]
 motion = "translating"
 contact = "flat"
-""" + segment.format(motion="rise", flank=flank) + segment.format(motion="return", flank=flank)
+""" + segment.format(motion="rise") + segment.format(motion="return")
             + f"""
 [[cam.segments]]
 motion = "dwell"
@@ -117,14 +118,15 @@ angle = "{rest} deg"
 
 
 def test_bevan_example_5_through_a_problem_file_and_the_command_line(tmp_path):
-    """Bevan, *The Theory of Machines*, 3rd ed., ch. 9, Example 5, p. 300 (above), typed as a cam file (its flank
-    radius the one whose rise lasts the book's 55°) and run by ``machdyn run``. The rise's largest acceleration is
-    at the start of the flank, ω² (R − r1): with the book's R − r1 = 4.477 in it is 5891 ft/s² (tolerance 0.05 %,
-    the book's rounding of R − r1); its largest velocity is where contact passes to the nose, the book's
+    """Bevan, *The Theory of Machines*, 3rd ed., ch. 9, Example 5, p. 300 (above), typed as the book gives it — the
+    radii, the lift and the angle of rise, no flank radius — and run by ``machdyn run``. The rise's largest
+    acceleration is at the start of the flank, ω² (R − r1): with the book's R − r1 = 4.477 in it is 5891 ft/s²
+    (tolerance 0.05 %, the book's rounding of R − r1); its largest velocity is where contact passes to the nose, the
+    book's
     15.71 ft/s × sin(α − φ) (half a unit of the printed digit); the return mirrors the rise."""
     flank = _bevan_flank_radius()
     path = tmp_path / "bevan5.toml"
-    path.write_text(_bevan_problem(flank))
+    path.write_text(_bevan_problem())
     out = tmp_path / "out"
     result = CliRunner().invoke(app, ["run", str(path), "--out", str(out), "-q"])
     assert result.exit_code in (0, 3), result.output
