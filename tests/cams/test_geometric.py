@@ -136,3 +136,46 @@ def test_check_and_run_refuse_a_contour_that_does_not_fit(contact, angle, field,
     ran = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "out"), "--quiet"])
     assert checked.exit_code == 2 and ran.exit_code == 2
     assert field in checked.stderr and field in ran.stderr
+
+
+def test_the_radius_a_given_angle_of_rise_needs():
+    """The inverse of the rise angle: the flank radius (circular arc) and the nose radius (tangent cam) solved
+    from the angle give back that angle; angles the shape cannot have are refused with the limit."""
+    from machdyn.cams.geometric import flank_radius_for_angle, nose_radius_for_angle, rise_angle
+
+    for flank in (0.04, 0.09, 0.5):
+        alpha = rise_angle("circular_arc", R1, R2, H, flank)
+        assert flank_radius_for_angle(R1, R2, H, alpha) == pytest.approx(flank, rel=1e-10)
+    for nose in (0.002, 0.005, 0.015):
+        alpha = rise_angle("tangent", R1, nose, H, 0.008)
+        assert nose_radius_for_angle(R1, H, alpha) == pytest.approx(nose, rel=1e-10)
+    straight = rise_angle("tangent", R1, R2, H, 0.008)  # a circular arc's flanks straighten as R grows
+    assert flank_radius_for_angle(R1, R2, H, straight + 1e-6) > 100.0
+    with pytest.raises(InputError, match="above"):
+        flank_radius_for_angle(R1, R2, H, straight - 1e-3)
+    with pytest.raises(InputError, match="too large"):
+        flank_radius_for_angle(R1, R2, H, np.radians(179))
+    with pytest.raises(InputError, match="above"):
+        nose_radius_for_angle(R1, H, np.radians(10))
+    with pytest.raises(InputError, match="90 deg"):
+        nose_radius_for_angle(R1, H, np.radians(95))
+
+
+def test_a_cam_file_may_give_the_angle_of_rise_instead_of_the_flank_radius(tmp_path):
+    """A circular-arc segment without flank_radius takes the one its angle needs (the same cam as with the
+    90 mm flank given); an angle no circular arc can have is refused by check and run, naming the angle."""
+    from typer.testing import CliRunner
+
+    from machdyn.cli import app
+    from machdyn.runner import run_problem
+
+    text = _arc_file().replace('flank_radius = "90 mm"\n', "")
+    run = run_problem(text)
+    given = run_problem(_arc_file())
+    solved = run.outcomes["cam"].results.model.program
+    assert np.allclose(solved.segments[0].contour, given.outcomes["cam"].results.model.program.segments[0].contour,
+                       rtol=1e-9, atol=0.0)
+    bad = tmp_path / "bad.toml"
+    bad.write_text(_arc_file(angle=30.0).replace('flank_radius = "90 mm"\n', ""), encoding="utf-8")
+    checked = CliRunner().invoke(app, ["check", str(bad)])
+    assert checked.exit_code == 2 and "cam.segments[0].angle" in checked.stderr and "above" in checked.stderr

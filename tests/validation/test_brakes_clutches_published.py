@@ -275,3 +275,57 @@ def test_gate_me_2012_simple_band_brake_torque():
     b = brakes.band_brake(0.25, 400.0, 0.25, 1.0, 1.0, math.pi, lever_on="tight")
     assert b.torque == pytest.approx(54.4, abs=0.05)
     assert 400.0 / brakes.band_ratio(0.25, math.pi) == pytest.approx(182.375, abs=5e-4)  # the solution's T2
+
+
+# B. K. Sarkar, *Theory of Machines*, Tata McGraw-Hill 2002, ch. 10 "Brakes and dynamometers". The book's data and
+# printed answers are read from the public FOSSEE Python Textbook Companion (Theory_Of_Machines_by_B._K._Sarkar/
+# Chapter10_1.ipynb), which gives the page of each illustration. The book computes with π = 3.14 and degrees =
+# radians × 57.3; each tolerance below says how much that moves the printed answer, and machdyn is exact.
+
+
+def test_sarkar_illustration_3_double_block_brake():
+    """Sarkar, *Theory of Machines*, ch. 10, illustration 3, p. 270: a double block (shoe) brake on a 360 mm
+    wheel, μ = 0.4, each block subtending 100°, a force of 3500 N on each arm 450 mm from its fulcrum, the block
+    200 mm from the fulcrum and the fulcrum 40 mm inside the wheel's radius (so 140 mm off the friction line).
+    Printed: the largest torque absorbed, 1412.67 N·m. The book's long-shoe μ' = 4μ sin 50°/(2θ + sin 100°) with
+    π = 3.14 and 57.3 is 0.026 % high (0.44906 for the exact 0.44894), and the torque with it 0.03 % (exact
+    1412.22 N·m): tolerance 0.05 %."""
+    b = brakes.double_block_brake(0.4, 3500.0, 0.180, 0.450, 0.200, 0.140, math.radians(100))
+    assert b.torque == pytest.approx(1412.67, rel=5e-4)
+    assert brakes.equivalent_friction(0.4, math.radians(100)) == pytest.approx(0.44894, abs=5e-6)
+    # the self-energising and the other block of the pair, each from its own lever's moments
+    one = brakes.block_brake(0.4, 3500.0, 0.180, 0.450, 0.200, 0.140, math.radians(100))
+    assert b.torque == pytest.approx(one.torque + one.torque_reverse, rel=1e-12)
+
+
+def test_sarkar_illustration_10_differential_band_and_block_brake():
+    """Sarkar, *Theory of Machines*, ch. 10, illustration 10, p. 275: 12 blocks of 16° each on a drum of 0.9 m
+    effective diameter, μ = 0.25, the band's slack end 100 mm and its tight end 30 mm from the lever's pivot on
+    either side, 180 N at 700 mm; the drum and its load, 2000 kg with k = 0.5 m, run at 360 rpm. Printed: the
+    largest braking torque 2481.63 N·m, the drum's retardation 4.96 rad/s² and 7.59 s to rest. The book's tan
+    (8/57.3) makes its tension ratio 6e-5 low and its torque 0.026 % low (exact 2482.27 N·m): tolerance 0.05 %;
+    the retardation and the time to half a unit of their last printed digit."""
+    b = brakes.differential_band_brake(0.25, 180.0, 0.45, 0.70, 0.100, 0.030, 0.0, blocks=12,
+                                       block_angle=math.radians(16))
+    assert b.self_energising
+    assert b.torque == pytest.approx(2481.63, rel=5e-4)
+    retardation = b.torque / (2000 * 0.5**2)
+    assert retardation == pytest.approx(4.96, abs=0.005)
+    assert 360 * math.pi / 30 / retardation == pytest.approx(7.59, abs=0.005)
+
+
+def test_sarkar_illustration_9_band_and_block_brake_for_a_rated_power():
+    """Sarkar, *Theory of Machines*, ch. 10, illustration 9, p. 275: 12 blocks of 15° each on a 1.25 m drum,
+    μ = 0.25, the slack end 140 mm and the tight end 40 mm from the pivot of a 1 m lever, to absorb 185 kW at
+    300 rpm; the rotor, 2400 kg with k = 0.5 m. Printed: the least force 406.1 N, and 3.2 s to rest. machdyn's
+    torque under the printed force is the rated 5888.7 N·m: the book's π = 3.14 (in the torque, +0.05 %) and
+    tan(7.5/57.3) (in the ratio) make its force 0.08 % high (exact 405.78 N), so the tolerance is 0.1 %; the time
+    to half a unit of its last digit."""
+    b = brakes.differential_band_brake(0.25, 406.1, 0.625, 1.0, 0.140, 0.040, 0.0, blocks=12,
+                                       block_angle=math.radians(15))
+    rated = 185e3 / (300 * math.pi / 30)
+    assert b.torque == pytest.approx(rated, rel=1e-3)
+    exact = brakes.differential_band_brake(0.25, 1.0, 0.625, 1.0, 0.140, 0.040, 0.0, blocks=12,
+                                           block_angle=math.radians(15))
+    assert rated / exact.torque == pytest.approx(405.78, abs=0.005)  # the exact least force
+    assert 300 * math.pi / 30 * 2400 * 0.5**2 / b.torque == pytest.approx(3.2, abs=0.05)

@@ -9,6 +9,7 @@ to 4e-4 of V's share."""
 
 from __future__ import annotations
 
+import json
 import math
 
 import pytest
@@ -49,3 +50,136 @@ def test_shigley_example_14_3_contact_stress_of_a_steel_pinion_on_a_cast_iron_ge
     # the book's radii of curvature, printed to three decimals
     assert PINION_DIAMETER * math.sin(math.radians(20)) / 2 / INCH == pytest.approx(0.342, abs=5e-4)
     assert 50 * MODULE * math.sin(math.radians(20)) / 2 / INCH == pytest.approx(1.069, abs=5e-4)
+
+
+# T. H. Wentzell, *Machine Design*, Cengage Learning (Indian edition) 2007, ch. 12 "Spur gear design and
+# selection", and U. C. Jindal, *Machine Design*, 1st ed., Dorling Kindersley (India) 2010, ch. 25 "Gears": the
+# books' data and printed answers are read from the public FOSSEE Python Textbook Companions of the books
+# (Machine_Design_by_T._H._Wentzell,_P._E/Chapter12.ipynb and Machine_Design_by_U.C._Jindal/Ch25_2.ipynb, which give
+# the pages). Wentzell's dynamic load is Barth's (600 + V)/600 · W_t with V in ft/min, machdyn's cast-tooth factor
+# (3.05 + V)/3.05 with V in m/s: 600 ft/min is 3.048 m/s, so machdyn's factor is up to 0.05 % smaller.
+FPM = 0.3048 / 60  # 1 ft/min in m/s
+
+
+def test_wentzell_example_12_4_dynamic_load_and_lewis_check_of_a_pinion():
+    """Wentzell, *Machine Design*, ch. 12, Example 12.4, p. 262: the 20-tooth, 8 teeth/in, 1 in wide steel pinion
+    of Examples 12.1–12.3 (S_n = 47.5 kpsi, allowable load F_s = S_n b Y/P_d = 1900 lbf with the book's Y = 0.320)
+    carries W_t = 146 lbf at V = 1129 ft/min. Printed: the dynamic load F_d = (600 + V) W_t/600 = 420.72 lbf, and
+    with a safety factor 2 an acceptable design (F_s/2 = 950 lbf > F_d). machdyn's velocity factor times W_t is the
+    printed F_d within 0.05 % (the SI constant); its Lewis stress uses Shigley's Y = 0.322 for 20 teeth, so its
+    utilisation σ/(S_n/2) = 0.4399 is the book's F_d/(F_s/2) = 0.4429 times 0.320/0.322: tolerance 0.1 % on that
+    product, and the design is acceptable."""
+    speed = 1129 * FPM
+    assert velocity_factor(speed, "cast") * 146 == pytest.approx(420.72, rel=5e-4)
+    sigma = lewis_bending_stress(146 * LBF, 1 * INCH, INCH / 8, 20, speed, "cast")
+    utilisation = sigma / (47_500 * PSI / 2)
+    assert utilisation < 1
+    assert utilisation == pytest.approx(420.72 / 950 * 0.320 / lewis_form_factor(20), rel=1e-3)
+
+
+def test_wentzell_example_12_6_dynamic_force_on_a_48_tooth_pinion():
+    """Wentzell, *Machine Design*, ch. 12, Example 12.6, p. 266: a 48-tooth, 12 teeth/in pinion at 900 rpm
+    transmits 2 hp. Printed: V = 942.48 ft/min, W_t = 70.03 lbf, the dynamic force F_d = 180.03 lbf. machdyn's
+    pitch speed of the pinion, the tangential load from the power, and its velocity factor times W_t: to half a
+    unit of the last printed digit, F_d within 0.05 % (the SI constant). (The book then sizes the face width with
+    its own Lewis Y = 0.344 for these teeth, a table other than the 20° full-depth one machdyn carries, so that
+    step is not compared.)"""
+    diameter = 48 / 12 * INCH
+    speed = math.pi * diameter * 900 / 60
+    assert speed / FPM == pytest.approx(942.48, abs=0.005)
+    load = 2 * 745.69987 / speed / LBF
+    assert load == pytest.approx(70.03, abs=0.005)
+    assert velocity_factor(speed, "cast") * 70.03 == pytest.approx(180.03, rel=5e-4)
+
+
+def test_jindal_example_25_3_lewis_beam_strength_and_power_rating():
+    """Jindal, *Machine Design*, ch. 25, Example 25-3, p. 670: a 30-tooth pinion of module 5 mm, face 60 mm, at
+    1000 rpm drives 75 teeth; σ_b = σ_ut/3 = 150 MPa, service factor 1.5 and safety factor 2. Printed: the beam
+    strength S_b = m b σ_b Y = 16110 N (the book's Y = 0.358), and the power 11.657 kW at which
+    S_b C_v/(C_s n) is the tangential load, with C_v = 3/(3 + v), v = 7.854 m/s.
+
+    machdyn's Lewis stress at S_b and standstill (K_v = 1) is σ_b within 0.3 % (its Y = 0.359 from Shigley's
+    table). Its power rating — the load at which its stress, service and safety factors applied, is σ_b — is
+    11.83 kW: the book's velocity factor is Barth's with 3 m/s where machdyn (Shigley, cast teeth) has 3.05 m/s,
+    1.2 % apart at this speed, and its Y 0.28 % smaller; with those two ratios the printed 11.657 kW is met to
+    half a unit of its last digit."""
+    beam = lewis_bending_stress(16110.0, 0.060, 0.005, 30, 0.0, "cast")
+    assert beam == pytest.approx(150e6, rel=3e-3)
+    speed = math.pi * 0.150 * 1000 / 60
+    allowed = 150e6 / (1.5 * 2)
+    load = allowed / lewis_bending_stress(1.0, 0.060, 0.005, 30, speed, "cast")
+    power = load * speed / 1e3
+    assert power == pytest.approx(11.657, rel=0.016)
+    book_kv = (3 + speed) / 3
+    assert power * 0.358 / lewis_form_factor(30) * velocity_factor(speed, "cast") / book_kv == pytest.approx(
+        11.657, abs=5e-4)
+
+
+SHIGLEY_TEETH = """[drivetrain.stages.teeth]
+module = "3.175 mm"
+face_width = "38.1 mm"
+pinion_teeth = 16
+manufacture = "cut"
+allowable_bending = "68.94757 MPa"
+
+"""
+
+
+SARKAR_BRAKE = """[drivetrain.brake.geometry]
+kind = "differential_band"
+friction = 0.25
+force = "180 N"
+drum_radius = "450 mm"
+lever = "700 mm"
+slack_arm = "100 mm"
+tight_arm = "30 mm"
+blocks = 12
+block_angle = "16 deg"
+
+"""
+
+
+def test_shigley_example_14_1_and_sarkar_band_and_block_brake_through_a_problem_file_and_the_command_line(tmp_path):
+    """Shigley's MED, 10th ed., Example 14-1 (above) as the gear stage of a problem file run by ``machdyn run``:
+    the shipped press with the book's stock pinion (16 teeth, 8 teeth/in = 3.175 mm module, 1.5 in face, cut
+    teeth) on its pinion shaft, the belt and the gear ratios changed (1.25 and 30: the same 37.5 overall) so that
+    the pinion turns at the book's 1200 rpm. The run's pitch speed is the printed 628.3 ft/min, and its bending
+    stress per newton of its tangential load is the book's: 10 kpsi at the printed rating W_t = 365 lbf
+    (tolerance 0.4 %, as in the direct test: the book rounds K_v and W_t); the allowable is the book's 10 kpsi.
+
+    The same run's brake is B. K. Sarkar's band-and-block brake (*Theory of Machines*, Tata McGraw-Hill 2002,
+    ch. 10, illustration 10, p. 275; tests/validation/test_brakes_clutches_published.py): 12 blocks of 16°, no
+    wrap angle needed; ``brake.torque`` is the printed 2481.63 N·m within the book's rounding (0.05 %)."""
+    from pathlib import Path
+
+    from typer.testing import CliRunner
+
+    from machdyn.cli import app
+
+    example = Path(__file__).resolve().parents[2] / "examples" / "press_brake_clutch.toml"
+    text = example.read_text()
+    text = text[: text.index("[flywheel]")] + text[text.index("[drivetrain]"): text.index("[drivetrain.single_stroke]")]
+    for old, new in (("ratio = 4.6875", "ratio = 1.25"), ("ratio = 8.0 ", "ratio = 30.0 "),
+                     ('wheel_radius = "50 mm"', 'wheel_radius = "25.4 mm"')):
+        assert text.count(old) == 1
+        text = text.replace(old, new)
+    for header, table in (("[drivetrain.stages.teeth]", SHIGLEY_TEETH), ("[drivetrain.brake.geometry]", SARKAR_BRAKE)):
+        start = text.index(header)
+        text = text[:start] + table + text[text.index("\n\n", start) + 2:]
+    path = tmp_path / "shigley.toml"
+    path.write_text(text)
+    out = tmp_path / "out"
+    result = CliRunner().invoke(app, ["run", str(path), "--out", str(out), "-q"])
+    assert result.exit_code in (0, 3), result.output
+    reported = json.loads((out / "results.json").read_text())["scalars"]
+    stage = "drivetrain.stage_1."
+    units = {name: reported[stage + name]["unit"] for name in ("pitch_speed", "tangential_load",
+                                                               "pinion_bending_stress")}
+    assert units == {"pitch_speed": "m/s", "tangential_load": "N", "pinion_bending_stress": "MPa"}
+    scalars = {k: v["value"] for k, v in reported.items()}
+    scalars[stage + "pinion_bending_stress"] *= 1e6
+    assert scalars[stage + "pitch_speed"] / 0.3048 * 60 == pytest.approx(628.3, abs=0.05)
+    per_newton = scalars[stage + "pinion_bending_stress"] / scalars[stage + "tangential_load"]
+    assert per_newton == pytest.approx(10_000 * PSI / (365 * LBF), rel=4e-3)
+    assert scalars[stage + "utilisation"] >= scalars[stage + "pinion_bending_stress"] / (10_000 * PSI) * (1 - 1e-6)
+    assert scalars["brake.torque"] == pytest.approx(2481.63, rel=5e-4)

@@ -34,6 +34,9 @@ on the nose, with L = r2 + r and theta' = alpha - theta:
 
 tan phi = d sin alpha / (r1 + r).
 
+The books often give the angle of rise instead of one radius: :func:`flank_radius_for_angle` and
+:func:`nose_radius_for_angle` solve these relations for R and r2.
+
 Validity: 0 < r2 < r1, h > 0 with d > 0; circular arc: R > r1 + h (the flank must reach the nose); the roller
 any r >= 0. Angles outside [0, alpha] are refused.
 """
@@ -168,3 +171,58 @@ def contour_phi(kind: str, base: float, nose: float, lift: float, size: float) -
     """phi [rad]: the cam angle from the start of a contour's rise where contact passes from flank to nose."""
     make = circular_arc_flat if kind == "circular_arc" else tangent_roller
     return make(base, nose, lift, size, [0.0]).phi
+
+
+def flank_radius_for_angle(base: float, nose: float, lift: float, alpha: float) -> float:
+    """R [m]: the flank radius of the circular-arc cam whose rise lasts alpha [rad] — the shape the books give by
+    its angle of rise (T. Bevan, *The Theory of Machines*, 3rd ed., ch. 9, Example 5; Khurmi & Gupta, *Theory of
+    Machines*, 14th ed., §20.14). From the triangle O P Q of the module docstring, with u = R - r1 = |OP|,
+    |PQ| = u + r1 - r2 and the angle at O equal to pi - alpha:
+
+        u = (d^2 - (r1 - r2)^2) / (2 ((r1 - r2) - d cos alpha)),   d = r1 + h - r2.
+
+    Validity: 0 < r2 < r1, h > 0, and alpha between the tangent cam's angle arccos((r1 - r2)/d) (R infinite: the
+    flanks become straight) and the angle at which R = r1 + h; outside that an :class:`InputError` says which.
+
+    >>> R = flank_radius_for_angle(0.02, 0.005, 0.012, rise_angle("circular_arc", 0.02, 0.005, 0.012, 0.09))
+    >>> round(R, 12)
+    0.09
+    """
+    d = _shape(base, nose, lift)
+    if not (np.isfinite(alpha) and 0.0 < alpha < np.pi):
+        raise InputError(f"A cam's angle of rise must lie between 0 and 180 deg; got {np.degrees(alpha)!r} deg.")
+    straight = float(np.arccos((base - nose) / d))
+    gap = (base - nose) - d * np.cos(alpha)
+    if gap <= 0.0:
+        raise InputError(f"A circular-arc cam with these radii and lift needs an angle of rise above "
+                         f"{np.degrees(straight):.6g} deg (the tangent cam's, straight flanks); got "
+                         f"{np.degrees(alpha):.6g} deg.")
+    flank = base + (d * d - (base - nose) ** 2) / (2.0 * gap)
+    if not flank > base + lift:
+        raise InputError(f"An angle of rise of {np.degrees(alpha):.6g} deg gives a flank radius {flank:.6g} m, not "
+                         f"above base radius + lift = {base + lift:.6g} m: the angle is too large for this cam.")
+    return float(flank)
+
+
+def nose_radius_for_angle(base: float, lift: float, alpha: float) -> float:
+    """r2 [m]: the nose radius of the tangent cam whose rise lasts alpha [rad] (Khurmi & Gupta, *Theory of
+    Machines*, 14th ed., §20.13: cos alpha = (r1 - r2)/(r1 + h - r2)), so
+
+        r2 = (r1 - (r1 + h) cos alpha) / (1 - cos alpha).
+
+    Validity: r1 > 0, h > 0, alpha < 90 deg and (r1 + h) cos alpha < r1 (a nose radius > 0, which is then below
+    r1); otherwise an :class:`InputError`.
+
+    >>> round(nose_radius_for_angle(0.030, 0.0175, np.radians(75)) * 1e3, 2)
+    23.89
+    """
+    if not (np.isfinite([base, lift, alpha]).all() and base > 0.0 and lift > 0.0 and 0.0 < alpha < np.pi / 2):
+        raise InputError(f"A tangent cam needs a base radius and a lift > 0 and an angle of rise between 0 and "
+                         f"90 deg; got r1 = {base!r} m, h = {lift!r} m, {np.degrees(alpha)!r} deg.")
+    c = float(np.cos(alpha))
+    nose = (base - (base + lift) * c) / (1.0 - c)
+    if not nose > 0.0:
+        raise InputError(f"A tangent cam of base radius {base:.6g} m and lift {lift:.6g} m needs an angle of rise "
+                         f"above {np.degrees(np.arccos(base / (base + lift))):.6g} deg (a nose of radius 0); got "
+                         f"{np.degrees(alpha):.6g} deg.")
+    return nose

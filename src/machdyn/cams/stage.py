@@ -17,6 +17,7 @@ from .checks import check_cam, rim_speed_failure
 from .dxf import profile_dxf
 from .dynamics import FollowerTrain, Spring, cam_forces, cam_machine, simulate_follower, size_spring
 from .followers import Follower
+from .geometric import flank_radius_for_angle, nose_radius_for_angle
 from .profile import cam_angles, profile
 from .program import Segment, program
 from .schema import CamProblem
@@ -137,14 +138,25 @@ def _contour(problem: CamProblem, s: Any, path: str, problems: list[tuple[str, s
         problems.append((f"{path}.law", f"a {s.law.replace('_', '-')} cam drives a translating {want} follower on "
                                         f"a line through the cam's centre; the follower is {f.motion}, "
                                         f"{f.contact}, offset {f.offset * 1e3:g} mm"))
-    if s.nose_radius is None:
-        problems.append((f"{path}.nose_radius", f"a {s.law.replace('_', '-')} cam needs its nose radius"))
-    if s.law == "circular_arc" and s.flank_radius is None:
-        problems.append((f"{path}.flank_radius", "a circular-arc cam needs its flank radius"))
+    base, lift = float(problem.cam.base_radius), float(s.lift or 0.0)
+    nose, size = s.nose_radius, (s.flank_radius if s.law == "circular_arc" else f.roller_radius)
     if s.law == "tangent" and s.flank_radius is not None:
         problems.append((f"{path}.flank_radius", "a tangent cam's flanks are straight: remove flank_radius"))
-    size = s.flank_radius if s.law == "circular_arc" else f.roller_radius
-    return (float(problem.cam.base_radius), float(s.nose_radius or 0.0), float(size or 0.0))
+    # the books give the angle of rise instead of one radius: the missing radius follows from the segment's angle
+    try:
+        if s.law == "tangent" and nose is None and lift > 0:
+            nose = nose_radius_for_angle(base, lift, float(s.angle))
+        elif s.law == "circular_arc" and nose is not None and size is None and lift > 0:
+            size = flank_radius_for_angle(base, float(nose), lift, float(s.angle))
+    except InputError as exc:
+        problems.append((f"{path}.angle", str(exc)))
+        return ()
+    if nose is None:
+        problems.append((f"{path}.nose_radius", f"a {s.law.replace('_', '-')} cam needs its nose radius"))
+    if s.law == "circular_arc" and size is None:
+        problems.append((f"{path}.flank_radius", "a circular-arc cam needs its flank radius (or the nose radius "
+                                                 "and its angle of rise, from which it follows)"))
+    return (base, float(nose or 0.0), float(size or 0.0))
 
 
 def _field(message: str, default: str) -> str:

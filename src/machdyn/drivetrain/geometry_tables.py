@@ -176,7 +176,9 @@ class BrakeGeometry(Spec):
         needs = BRAKE_NEEDS[self.kind]
         if self.kind == "internal_shoe" and (self.force is None) == (self.max_pressure is None):
             raise ValueError("an internal_shoe brake needs either force or max_pressure, not both nor neither")
-        missing = [name for name in needs if getattr(self, name) is None]
+        # a band-and-block brake's tension ratio comes from its blocks: its band's wrap is not needed
+        missing = [name for name in needs if getattr(self, name) is None
+                   and not (name == "wrap_angle" and self.blocks)]
         if missing:
             raise ValueError(f"a {self.kind} brake needs {', '.join(missing)}")
         ri, ro = self.inner_radius or 0.0, self.outer_radius or 0.0
@@ -191,12 +193,13 @@ def rate_brake(geometry: BrakeGeometry) -> brakes.BrakeTorque:
     if g.kind in ("block", "double_block"):
         rate = brakes.block_brake if g.kind == "block" else brakes.double_block_brake
         return rate(g.friction, g.force, g.drum_radius, g.lever, g.block, g.offset, g.contact_angle)
+    wrap = g.wrap_angle if g.wrap_angle is not None else 0.0  # None only with blocks, which set the ratio
     if g.kind == "band":
-        return brakes.band_brake(g.friction, g.force, g.drum_radius, g.lever, g.arm, g.wrap_angle,
+        return brakes.band_brake(g.friction, g.force, g.drum_radius, g.lever, g.arm, wrap,
                                  lever_on=g.lever_on, blocks=g.blocks, block_angle=g.block_angle)
     if g.kind == "differential_band":
         return brakes.differential_band_brake(g.friction, g.force, g.drum_radius, g.lever, g.slack_arm,
-                                              g.tight_arm, g.wrap_angle, blocks=g.blocks, block_angle=g.block_angle)
+                                              g.tight_arm, wrap, blocks=g.blocks, block_angle=g.block_angle)
     if g.kind == "internal_shoe":
         moments = brakes.shoe_moments(g.friction, g.drum_radius, g.width, g.shoe_start, g.shoe_end, g.hinge)
         force = g.force if g.force is not None else g.max_pressure * (moments.normal - moments.friction) / g.force_arm
