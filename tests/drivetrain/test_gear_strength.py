@@ -93,6 +93,13 @@ def test_bad_teeth_tables_are_refused_with_the_key_named(extra, words):
         GearTeethTable(**BASE, **extra)
 
 
+def test_every_mistake_of_a_teeth_table_is_named_at_once():
+    with pytest.raises(ValidationError) as info:
+        GearTeethTable(**BASE, method="buckingham", bhn=300, load_stress_factor="1 MPa")
+    text = str(info.value)
+    assert all(key in text for key in ("load_stress_factor", "allowable_bending", "tooth_error"))
+
+
 def test_the_stage_rates_its_teeth_as_forces_and_fails_a_short_factor_of_safety():
     torques = np.array([[100.0, -240.0], [400.0, 960.0]])
     ratios = np.array([4.0, 1.0])

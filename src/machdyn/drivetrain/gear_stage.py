@@ -70,21 +70,22 @@ class GearTeethTable(Spec):
 
     @model_validator(mode="after")
     def _complete(self):
+        problems = []
         wear = [k for k in ("surface_endurance", "bhn", "load_stress_factor") if getattr(self, k) is not None]
         if len(wear) > 1:
-            raise ValueError(f"give one of surface_endurance, bhn and load_stress_factor; got {', '.join(wear)}")
-        if self.method == "lewis":
-            return self
-        if self.allowable_bending is None:
-            raise ValueError(f'method = "{self.method}" rates the beam strength m b σ_b Y with σ_b = '
-                             "allowable_bending, which is missing")
+            problems.append(f"give one of surface_endurance, bhn and load_stress_factor; got {', '.join(wear)}")
+        if self.method != "lewis" and self.allowable_bending is None:
+            problems.append(f'method = "{self.method}" rates the beam strength m b σ_b Y with σ_b = '
+                            "allowable_bending, which is missing")
         if self.method == "buckingham":
             if self.tooth_error is None:
-                raise ValueError('method = "buckingham" needs tooth_error (the sum of both wheels\' errors)')
+                problems.append('method = "buckingham" needs tooth_error (the sum of both wheels\' errors)')
             degrees = round(math.degrees(self.pressure_angle), 3)
             if self.deformation_factor is None and degrees not in (14.5, 20.0):
-                raise ValueError(f"Buckingham's deformation factor is tabulated for 14.5° and 20° teeth, not "
-                                 f"{degrees:g}°: give deformation_factor")
+                problems.append(f"Buckingham's deformation factor is tabulated for 14.5° and 20° teeth, not "
+                                f"{degrees:g}°: give deformation_factor")
+        if problems:
+            raise ValueError("; ".join(problems))
         return self
 
 
