@@ -20,7 +20,8 @@ Sources
   P_eff = C_s P_t + P_d (§ "Estimation of dynamic load by Buckingham's equation"); the equation numbers and pages
   were not checked against a printed copy.
 - R. S. Khurmi, J. K. Gupta, *A Textbook of Machine Design*, S. Chand 2005, ch. 28 "Spur gears": the same
-  dynamic load W_D = W_T + W_I written with C standing for the product of the deformation factor and the error.
+  dynamic load W_D = W_T + W_I written with C standing for the product of the deformation factor and the error
+  (chapter and page not checked against a printed copy).
 """
 
 from __future__ import annotations
