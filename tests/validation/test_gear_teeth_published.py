@@ -52,6 +52,23 @@ def test_shigley_example_14_3_contact_stress_of_a_steel_pinion_on_a_cast_iron_ge
     assert 50 * MODULE * math.sin(math.radians(20)) / 2 / INCH == pytest.approx(1.069, abs=5e-4)
 
 
+@pytest.mark.parametrize("wheel, size_factor, printed", [("pinion", 1.043, 70_360), ("gear", 1.052, 70_660)])
+def test_shigley_example_14_4_contact_stress_of_pinion_and_gear(wheel, size_factor, printed):
+    """Shigley's MED, 10th ed., Example 14-4 (AGMA rating of a 17-tooth pinion on a 52-tooth gear, 10 teeth/in,
+    1.5 in face, 4 hp at 1800 rev/min, steel on steel; page not checked against a printed copy; the printed
+    figures as transcribed): d_P = 1.7 in, d_G = 5.2 in, W_t = 164.8 lbf, K_o = 1, K_v = 1.377 (AGMA, Q_v = 6),
+    K_s = 1.043 (pinion) and 1.052 (gear), K_m = 1.22, C_f = 1, I = 0.121, C_p = 2300 √psi. Printed:
+    σ_c = 70 360 psi (pinion) and 70 660 psi (gear). AGMA's eq. 14-16 with I = cos φ sin φ/2 · m_G/(m_G + 1) is
+    the Hertz stress of eq. 14-14, so machdyn's contact stress at standstill (no Barth factor) under the book's
+    factored load W_t K_o K_v K_s K_m C_f is the printed stress; tolerance 0.1 % for the book's four-digit W_t and
+    the printed factors (machdyn is 0.04 % low)."""
+    load = 164.8 * 1.377 * size_factor * 1.22 * LBF
+    sigma = contact_stress(load, FACE, 1.7 * INCH, 5.2 * INCH, 0.0, elastic=2300 * math.sqrt(PSI))
+    assert sigma / PSI == pytest.approx(printed, rel=1e-3)
+    geometry = math.cos(math.radians(20)) * math.sin(math.radians(20)) / 2 * (52 / 17) / (52 / 17 + 1)
+    assert geometry == pytest.approx(0.121, abs=5e-4)  # the printed I
+
+
 # T. H. Wentzell, *Machine Design*, Cengage Learning (Indian edition) 2007, ch. 12 "Spur gear design and
 # selection", and U. C. Jindal, *Machine Design*, 1st ed., Dorling Kindersley (India) 2010, ch. 25 "Gears": the
 # books' data and printed answers are read from the public FOSSEE Python Textbook Companions of the books

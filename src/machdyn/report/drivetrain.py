@@ -131,6 +131,13 @@ def _geometry_rows(run: Any) -> list[list[str]]:
                      f"{format_value(g.pitch_speed)} m/s"])
         allowed = (f" (allowed {format_value(g.allowable_contact / 1e6)} MPa)" if g.allowable_contact else "")
         rows.append([f"gear stage {g.stage}: contact stress (Hertz)", f"{format_value(g.contact / 1e6)} MPa{allowed}"])
+        r = g.strength
+        if r is not None:
+            wear = ("" if r.wear_strength is None or r.safety_wear is None else
+                    f", wear strength {format_value(r.wear_strength)} N (safety {format_value(r.safety_wear)})")
+            rows.append([f"gear stage {g.stage}: effective load ({r.method}) against the teeth's strengths",
+                         f"{format_value(r.effective_load)} N; beam strength {format_value(r.beam_strength)} N "
+                         f"(safety {format_value(r.safety_bending)}){wear}; required {format_value(r.safety_factor)}"])
     for c in getattr(run, "shaft_checks", ()):
         rows.append([f"shaft {c.shaft}: at the wheel",
                      f"M = {format_value(c.moment)} N·m, T = {format_value(c.torque_mean)} ± "
