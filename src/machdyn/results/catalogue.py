@@ -295,6 +295,8 @@ RUN_TIME: tuple[Quantity, ...] = (
              producer="shaft_line"),
     Quantity("transient.passage_<index>.<figure>", "Transient: resonance passage {index}, {figure}",
              producer="transient"),
+    Quantity("transient.mount.<mount>.peak_force", "Transient: largest dynamic force of mount {mount}", "N",
+             producer="transient"),
     Quantity("check_<name*>_utilisation", "Check {name}, utilisation", producer="screw_conveyor"),
 )
 
