@@ -23,6 +23,7 @@ from ..problem.fields import Inertia
 from ..problem.schema import Spec
 from ..results.labels import Label
 from ..shafts.frame6 import modes6
+from ..shafts.model import ShaftLine
 from ..shafts.model import build as build_line
 from .passage import AmplitudeCurve, Passage, amplitude_curve, capture, passages
 from .run import Scenario, TransientLimitError
@@ -73,6 +74,8 @@ class ShaftTransientRun:
     captured: bool
     final_speed: float
     free_speed: float
+    line: ShaftLine
+    shaft: tuple[float, float]
     direction: None = None
 
 
@@ -196,7 +199,8 @@ def run_shaft_transient(ctx: StageContext, scenario: Scenario) -> Outcome:
         captured, final = capture(run, md.angular_frequencies, free, table.band)  # type: ignore[arg-type]
     else:
         captured, final = False, abs(float(run.omega[0, -1]))
-    return outcome_of(ShaftTransientRun(table, run, md, curve, found, point, name, captured, final, free))
+    return outcome_of(ShaftTransientRun(table, run, md, curve, found, point, name, captured, final, free, line,
+                                        (float(fs.shaft[0]), float(fs.shaft[1]))))
 
 
 def outcome_of(r: ShaftTransientRun) -> Outcome:
