@@ -76,7 +76,7 @@ def test_a_prescribed_constant_speed_settles_to_the_frames_steady_response():
 def test_a_free_decay_vibrates_at_the_frames_natural_frequencies():
     frame = block(damping=0.0)
     model = shaft_frame_model(line(LIGHT), frame, SHAFT)
-    run = run_shaft_scenario(model, Scenario(duration=2.0, prescribed=(0.0, 0.0), method="DOP853", rtol=1e-9,
+    run = run_shaft_scenario(model, Scenario(duration=1.5, prescribed=(0.0, 0.0), method="DOP853", rtol=1e-9,
                                              samples_per_period=16),
                              frame_start=np.full(6, 1e-3))
     hz, shapes = modes6(frame)
@@ -134,7 +134,7 @@ def test_one_soft_translational_mode_is_the_oscillator_driven_through_resonance(
     """The frame's x mode alone is soft (its mount at the centre of mass, nothing else acting along x); the
     unbalance m e turns at a constant angular acceleration through it."""
     mass, k, c = 100.0, 2.5e5, 300.0
-    stiff = 6e5
+    stiff = 4e5
     mounts = (Mount6("x", (0.0, 0.0, 0.0), (1, 0, 0), k, c),
               *(Mount6(f"y{i}", (sx * 0.5, 0.0, sz * 0.5), (0, 1, 0), stiff, 2e3)
                 for i, (sx, sz) in enumerate(((1, 1), (1, -1), (-1, 1), (-1, -1)))),
@@ -143,7 +143,7 @@ def test_one_soft_translational_mode_is_the_oscillator_driven_through_resonance(
     frame = Frame6(mass, (20.0, 20.0, 20.0), mounts)
     me = 0.1
     model = shaft_frame_model(line([Mass("unbalance", 1.0, me, 0.0, 0.0)]), frame)
-    speed0, alpha, duration = 30.0, 10.0, 3.5
+    speed0, alpha, duration = 35.0, 10.0, 2.9  # through 50 rad/s at 1.5 s, the peak some 0.7 s later
     run = run_shaft_scenario(model, Scenario(duration=duration, prescribed=(speed0, alpha), method="DOP853",
                                              rtol=1e-8))
 

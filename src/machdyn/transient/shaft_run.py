@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
-from ..shafts.frame6 import Frame6
+from ..shafts.frame6 import Frame6, modes6
 from .run import Scenario, TransientLimitError, _shifted, _torque_function
 from .shaft_model import ShaftFrameModel
 
@@ -151,8 +151,6 @@ def run_shaft_scenario(model: ShaftFrameModel, scenario: Scenario, frame_start=N
         if torque_only:
             return drive_t
         return np.concatenate([dq, ddq, [drive_t * w, load_t * w, float(dq @ c_mat @ dq), 0.0]])
-
-    from ..shafts.frame6 import modes6
 
     fastest = max(reference, 2.0 * math.pi * float(np.max(modes6(model.frame)[0])))
     step = 2.0 * math.pi / fastest / max(int(scenario.samples_per_period), 4)
