@@ -11,6 +11,7 @@ from matplotlib.axes import Axes
 
 from .html import _render, format_value, rows_html
 from .plots import PALETTE
+from .transient_view import transient_view
 
 RPM = 30.0 / np.pi
 
@@ -40,9 +41,9 @@ def plot_displacement(result: Any, ax: Axes) -> Axes:
     run = result.run
     s = _thin(run.t)
     u = run.point_displacement(result.point) * 1e3
-    if result.direction is None:
-        ax.plot(run.t[s], u[0, s], color=PALETTE[0], lw=0.6, label="x")
-        ax.plot(run.t[s], u[1, s], color=PALETTE[1], lw=0.6, label="y")
+    if result.direction is None:  # its components: x and y on a planar frame, x, y and z in space
+        for k, axis in enumerate("xyz"[:u.shape[0]]):
+            ax.plot(run.t[s], u[k, s], color=PALETTE[k], lw=0.6, label=axis)
         ax.legend(fontsize=7)
     else:
         d = result.direction
@@ -124,7 +125,8 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
                   hspace=0.45)
     state = {"duration": "ran to its end", "stopped": "ended when the crank came to rest",
              "rolled back": "ended when the crank rolled back under its drive"}[run.ended]
-    intro = (f"<p>The motor, the mechanism and the frame on its mounts simulated together over "
+    machine = "shaft line" if run.q.shape[0] == 6 else "mechanism"
+    intro = (f"<p>The motor, the {machine} and the frame on its mounts simulated together over "
              f"{format_value(float(run.t[-1]))} s (the run {state}); final crank speed "
              f"{format_value(result.final_speed * RPM)} rpm. The energy balance of the run (motor work = change "
              f"of kinetic and potential energy + dissipation + work on the loads) closes to "
@@ -133,7 +135,8 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
         intro += (" <strong>The drive is captured by a frame resonance</strong> (Sommerfeld effect): it would run at "
                   f"{format_value(result.free_speed * RPM)} rpm on a rigid frame.")
     intro += "</p>"
-    body = intro + f"<figure class=\"plot\">{fig.svg}</figure>"
+    moving = transient_view(result) if framed else None  # the frame and the machine on it, moving in time
+    body = intro + (str(moving) if moving is not None else "") + f"<figure class=\"plot\">{fig.svg}</figure>"
     if result.passages:
         body += rows_html(passage_rows(result), head=("mode", "direction", "time [s]", "peak displacement [mm]",
                                                       "peak mount force [kN]", "time in band [s]"))

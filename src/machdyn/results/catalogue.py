@@ -318,6 +318,8 @@ RUN_TIME: tuple[Quantity, ...] = (
              producer="transient"),
     Quantity("transient.stage_<index>.peak_torque", "Transient: peak torque through stiff stage {index}", "N*m",
              producer="transient"),
+    Quantity("transient.mount.<mount>.peak_force", "Transient: largest dynamic force of mount {mount}", "N",
+             producer="transient"),
     Quantity("check_<name*>_utilisation", "Check {name}, utilisation", producer="screw_conveyor"),
 )
 

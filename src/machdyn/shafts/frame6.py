@@ -25,6 +25,7 @@ import numpy as np
 
 from ..errors import InputError, check_finite, check_positive
 from ..vibration.frame import mount_sum
+from ..vibration.gravity import gravity_stiffness
 
 __all__ = ["Mount6", "Frame6", "modes6", "Response6", "steady_response"]
 
@@ -64,12 +65,15 @@ class Mount6:
 @dataclass(frozen=True)
 class Frame6:
     """A rigid frame: mass [kg] > 0, inertia tensor about its centre of mass [kg m^2] (3 x 3, symmetric, positive
-    definite; a 3-vector means principal values along x, y, z), centre of mass (x, y, z) [m] and its mounts."""
+    definite; a 3-vector means principal values along x, y, z), centre of mass (x, y, z) [m] and its mounts;
+    ``gravity`` (g_x, g_y, g_z) [m/s^2] in frame axes adds the weight's pendulum term to the rotations' stiffness
+    (:mod:`machdyn.vibration.gravity`; zero: left out)."""
 
     mass: float
     inertia: tuple
     mounts: tuple[Mount6, ...]
     com: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    gravity: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
     def __post_init__(self) -> None:
         check_positive("frame mass", self.mass, "kg")
@@ -80,6 +84,7 @@ class Frame6:
             raise InputError("The frame's inertia tensor must be symmetric and positive definite (3 x 3, or 3 "
                              f"principal values > 0); got {self.inertia}.")
         object.__setattr__(self, "inertia", tuple(map(tuple, j)))
+        check_finite("frame gravity", self.gravity, "m/s^2")
         if not self.mounts:
             raise InputError("The frame needs at least one mount; got none.")
         names = [m.name for m in self.mounts]
@@ -97,7 +102,9 @@ class Frame6:
         return np.array([m.influence for m in self.mounts])
 
     def stiffness_matrix(self) -> np.ndarray:
-        return mount_sum(self.mounts, "stiffness")
+        """Sum k b b^T of the mounts, plus gravity's pendulum term (:mod:`machdyn.vibration.gravity`)."""
+        k = mount_sum(self.mounts, "stiffness")
+        return k + gravity_stiffness(self.mass, self.com, self.gravity, self.mounts, k)
 
     def damping_matrix(self) -> np.ndarray:
         return mount_sum(self.mounts, "damping")
@@ -114,10 +121,15 @@ def modes6(frame: Frame6) -> tuple[np.ndarray, np.ndarray]:
     from scipy.linalg import eigh
 
     k, m = frame.stiffness_matrix(), frame.mass_matrix()
-    ev = np.linalg.eigvalsh(k)
-    if ev[0] <= 1e-9 * max(ev[-1], 1e-300):
+    bare = np.linalg.eigvalsh(mount_sum(frame.mounts, "stiffness"))
+    if bare[0] <= 1e-9 * max(bare[-1], 1e-300):
         raise InputError("The frame's mounts leave it free to move in some direction (its stiffness matrix is "
                          "singular): add mounts that restrain all six rigid-body motions.")
+    ev = np.linalg.eigvalsh(k)
+    if ev[0] <= 1e-9 * max(ev[-1], 1e-300):
+        raise InputError("The frame tips over on its mounts: its weight's pendulum term (its centre of gravity "
+                         "above the mounts) exceeds their rocking stiffness. Spread the mounts, stiffen them or "
+                         "lower the centre of gravity.")
     w2, shapes = eigh(k, m)
     return np.sqrt(np.maximum(w2, 0.0)) / (2 * np.pi), shapes
 

@@ -231,7 +231,8 @@ def build(problem: Any) -> tuple[ShaftLine | None, list[tuple[str, str]]]:
             problems, f"frame.mounts[{i}]", lambda ms=ms: Mount6(ms.name, ms.position, ms.direction, ms.stiffness,
                                                                   ms.damping))) is not None)
         if len(mounts) == len(fs.mounts):
-            frame = _try(problems, "frame", lambda: Frame6(fs.mass, fs.inertia, mounts, fs.com))
+            frame = _try(problems, "frame", lambda: Frame6(fs.mass, fs.inertia, mounts, fs.com,
+                                                            tuple(fs.gravity) if fs.gravity else (0.0, 0.0, 0.0)))
         if frame is not None:
             _try(problems, "frame.mounts", lambda: modes6(frame))
         if not masses and not cylinders and not problem.linkages:

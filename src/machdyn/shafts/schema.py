@@ -14,6 +14,7 @@ from typing import Annotated, Any
 from pydantic import Field, PrivateAttr, model_validator
 
 from ..problem.fields import (
+    Acceleration,
     Angle,
     AngularVelocity,
     Force,
@@ -163,7 +164,8 @@ class PointSpec(Spec):
 
 class FrameSpec(Spec):
     """The frame in space on its mounts: mass, principal inertias about x, y, z through the centre of mass,
-    the centre of mass, where the shaft's axis passes (x, y), the orders of the response, mounts and points."""
+    the centre of mass, where the shaft's axis passes (x, y), the orders of the response, mounts and points, and
+    ``gravity`` (a vector in frame axes) for the weight's pendulum term in the rocking stiffness."""
 
     mass: PositiveMass
     inertia: tuple[Inertia, Inertia, Inertia]
@@ -172,6 +174,9 @@ class FrameSpec(Spec):
     orders: int = Field(4, ge=1, le=40, strict=True)
     mounts: list[MountSpec] = Field(min_length=1)
     points: list[PointSpec] = []
+    # the acceleration of gravity in frame axes (which way is down is the file's to say): adds the weight's
+    # pendulum term to the rotations' stiffness; omitted, it is left out
+    gravity: tuple[Acceleration, Acceleration, Acceleration] | None = None
 
 
 class PhaseSearchSpec(Spec):

@@ -253,7 +253,8 @@ class CoupledModel:
             self.mean_weight = np.zeros(len(self.parts))
             return
         self.mass_f = self.frame.mass_matrix()
-        self.stiffness = self.frame.stiffness_matrix()
+        # the mounts, and the pendulum term of the weight they carry: the frame's and the mechanisms' at their mean
+        self.stiffness = carried_frame(self).stiffness_matrix()
         self.damping = self.frame.damping_matrix()
         self.mean_weight = np.array([p.gravity[1] * p.c0[5] - p.gravity[0] * p.c0[6] for p in self.parts])
 
@@ -369,4 +370,4 @@ def carried_frame(model: CoupledModel) -> Frame:
                     + sum(float(p.c0[7]) + p.own for p in model.parts))
     com = (sx / mass, sy / mass)
     inertia = about_origin - mass * (com[0] ** 2 + com[1] ** 2)
-    return Frame(mass, inertia, frame.mounts, com=com, name=frame.name)
+    return Frame(mass, inertia, frame.mounts, com=com, name=frame.name, gravity=frame.gravity)

@@ -53,8 +53,8 @@ class Passage:
 
 def _along(run: Transient, point, direction) -> np.ndarray:
     u = run.point_displacement(point)
-    if direction is None:
-        return np.hypot(u[0], u[1])
+    if direction is None:  # the length of the displacement (two components on a planar frame, three in space)
+        return np.sqrt(np.sum(u * u, axis=0))
     return np.abs(math.cos(direction) * u[0] + math.sin(direction) * u[1])
 
 

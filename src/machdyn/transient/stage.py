@@ -37,6 +37,7 @@ from .torsion_results import (
     torsion_scalars,
     torsion_series,
 )
+from .shaft_stage import ShaftDriveSpec, ShaftTransientRun, check_shaft_transient, is_shaft_line, run_shaft_transient
 
 __all__ = ["CAPABILITY", "TransientRun", "TransientTable", "TwinSpec", "check_transient", "run_transient",
            "scenario_of"]
@@ -85,6 +86,7 @@ class TransientTable(Spec):
     max_seconds: Time = 120.0
     twin: TwinSpec | None = None
     motor: MotorSpec | None = None
+    drive: ShaftDriveSpec | None = None  # a shaft-line file's motor and drive-line inertia
 
     @model_validator(mode="after")
     def _consistent(self):
@@ -114,6 +116,8 @@ LABELS = {
     "transient.captured": Label("Transient: drive captured by a frame resonance (1 = yes, Sommerfeld effect)", ""),
     "transient.peak_amplitude": Label("Transient: largest frame displacement at the point", "m", "mm"),
     "transient.peak_mount_force": Label("Transient: largest dynamic mount force", "N"),
+    "transient.peak_rotation": Label("Transient: largest rotation of the frame (six degrees of freedom)", "rad",
+                                     "mrad"),
     "transient.passage_peak_amplitude": Label("Transient: largest displacement in a resonance passage", "m",
                                               "mm"),
     "transient.passage_peak_mount_force": Label("Transient: largest mount force in a resonance passage", "N"),
@@ -196,6 +200,8 @@ def run_transient(ctx: StageContext) -> Outcome:
     """The stage: build the coupled model from the mechanism, ``[flywheel]``'s drive and ``[frame]``, run the
     scenario, and sum it up."""
     table: TransientTable = ctx.table
+    if is_shaft_line(ctx.problem):  # a shaft line on its frame in space: its own model (six degrees of freedom)
+        return run_shaft_transient(ctx, scenario_of(table))
     fly = ctx.result_of("flywheel", FlywheelRun)
     if fly is None and table.prescribed_speed is None:
         return Outcome(failed_checks=("[transient] has no drive: [flywheel] found no steady state for its motor, "
@@ -383,7 +389,11 @@ def _columns(r: TransientRun, amp) -> dict[str, tuple[Any, str]]:
 
 def check_transient(problem, table: TransientTable, source: str | None = None) -> list[tuple[str, str]]:
     """What ``check`` can tell without running: a drive to run the machine, and the point to watch."""
+    if is_shaft_line(problem):
+        return check_shaft_transient(problem, table)
     found: list[tuple[str, str]] = []
+    if table.drive is not None:
+        found.append(("transient.drive", "is a shaft line's motor; a mechanism's drive is [flywheel.motor]"))
     if table.prescribed_speed is None and getattr(problem, "flywheel", None) is None:
         found.append(("transient", "needs [flywheel] with its [flywheel.motor] (the drive that turns the machine), "
                                    "or prescribed_speed"))
@@ -482,11 +492,11 @@ CAPABILITY = Capability(
     schema=TransientTable,
     run=run_transient,
     step="machine in time",
-    kinds=("mechanism", "rotary_screen"),
+    kinds=("mechanism", "rotary_screen", "shaft_line"),
     labels=LABELS,
     report="machdyn.report.transient_drive:sections",
     check=check_transient,
     after=("flywheel", "frame"),
-    result_type=TransientRun,
+    result_type=(TransientRun, ShaftTransientRun),
 )
 

@@ -23,6 +23,7 @@ import numpy as np
 
 from ..constants import STANDARD_GRAVITY
 from ..errors import InputError, check_finite
+from .gravity import gravity_stiffness
 
 __all__ = [
     "STANDARD_GRAVITY",
@@ -249,6 +250,8 @@ class Frame:
     mounts : the :class:`Mount` lines supporting the frame
     com : (x, y) [m] of the centre of mass in frame coordinates
     name : label
+    gravity : (g_x, g_y) [m/s^2] in frame axes, or (0, 0): the weight's pendulum term in the rocking stiffness
+        (:mod:`machdyn.vibration.gravity`)
     """
 
     mass: float
@@ -256,6 +259,7 @@ class Frame:
     mounts: tuple[Mount, ...]
     com: tuple[float, float] = (0.0, 0.0)
     name: str = "frame"
+    gravity: tuple[float, float] = (0.0, 0.0)
 
     def __post_init__(self) -> None:
         _check_number(f"mass of frame '{self.name}'", self.mass, "kg", rule=">0")
@@ -273,6 +277,8 @@ class Frame:
         if dupes:
             raise InputError(f"The mount names of frame '{self.name}' must be unique; got {', '.join(dupes)} twice.")
         object.__setattr__(self, "mounts", mounts)
+        object.__setattr__(self, "gravity", tuple(_check_number(f"gravity of frame '{self.name}'", g, "m/s^2")
+                                                  for g in self.gravity))
 
     def mount(self, name: str) -> Mount:
         """The mount called ``name``."""
@@ -296,8 +302,10 @@ class Frame:
         return np.array([m.influence for m in self.mounts])
 
     def stiffness_matrix(self) -> np.ndarray:
-        """K = sum k_i b_i b_i^T [N/m, N, N m]."""
-        return mount_sum(self.mounts, "stiffness")
+        """K = sum k_i b_i b_i^T [N/m, N, N m], plus the weight's pendulum term on the rotation when the frame has
+        ``gravity`` (:func:`machdyn.vibration.gravity.gravity_stiffness`)."""
+        k = mount_sum(self.mounts, "stiffness")
+        return k + gravity_stiffness(self.mass, self.com, self.gravity, self.mounts, k)
 
     def damping_matrix(self) -> np.ndarray:
         """C = sum c_i b_i b_i^T [N s/m, N s, N m s]."""

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from .frame import Frame
+from .frame import Frame, mount_sum
 
 __all__ = ["Modes", "modes", "check_supported"]
 
@@ -40,7 +40,7 @@ def check_supported(frame: Frame) -> None:
     """
     size = max(1.0, *(np.hypot(*m.position) for m in frame.mounts))
     s = np.diag([1.0, 1.0, 1.0 / size])
-    k = s @ frame.stiffness_matrix() @ s
+    k = s @ mount_sum(frame.mounts, "stiffness") @ s
     values, vectors = np.linalg.eigh(k)
     top = float(np.max(values))
     if top <= 0:
@@ -53,6 +53,12 @@ def check_supported(frame: Frame) -> None:
             f"The frame '{frame.name}' is not supported: its mounts leave {len(free)} rigid motion(s) free "
             f"({motions}), so it is a mechanism, not a structure. Add a mount that resists this motion."
         )
+    weighed = np.linalg.eigvalsh(s @ frame.stiffness_matrix() @ s)
+    if weighed[0] < _SINGULAR * top:
+        raise InputError(
+            f"The frame '{frame.name}' tips over on its mounts: its weight's pendulum term (its centre of gravity "
+            f"above the mounts' elastic support) exceeds their rocking stiffness. Spread the mounts, stiffen them or "
+            f"lower the centre of gravity.")
 
 
 @dataclass(frozen=True)

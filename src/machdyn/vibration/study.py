@@ -17,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from ..constants import DOWNWARD_GRAVITY
 from ..errors import InputError
 from ..linkage import analyse
 from ..linkage.model import PointMass, Spring
@@ -47,7 +48,18 @@ def build_frame(table, crank_frequency: float) -> Frame:
         else:
             mounts.extend(rope(m.name, m.position, m.length, m.supported_mass, m.axial_stiffness, angle=m.angle,
                                damping=m.damping))
-    return Frame(table.mass, table.inertia, tuple(mounts), com=tuple(table.com), name="frame")
+    return Frame(table.mass, table.inertia, tuple(mounts), com=tuple(table.com), name="frame",
+                 gravity=frame_gravity(getattr(table, "gravity", "off")))
+
+
+def frame_gravity(value) -> tuple[float, float]:
+    """The acceleration of gravity [m/s^2] in frame axes of a ``[frame] gravity`` value: "on" standard gravity
+    along the frame's -y axis (its y axis up, as vertical mounts at 90 deg have it), "off" none, or the vector."""
+    if value == "on":
+        return DOWNWARD_GRAVITY
+    if value == "off":
+        return (0.0, 0.0)
+    return (float(value[0]), float(value[1]))
 
 
 def with_variant(mechanism, variant):

@@ -27,7 +27,7 @@ from ..problem.fields import (
 )
 from ..problem.fields import LinearDamping as Damping
 from ..problem.fields import PositiveVelocity as Velocity
-from ..problem.schema import CounterweightSpec, Name, Spec, SpringSpec
+from ..problem.schema import CounterweightSpec, Gravity, Name, Spec, SpringSpec
 
 MachineClass = Literal["I", "II", "III", "IV"]
 Standard = Literal["ISO 10816-1", "ISO 20816-1", "ISO 2372"]
@@ -109,7 +109,9 @@ class FrameTable(Spec):
     ``mass``, ``inertia`` (centroidal) and ``com`` of everything that moves with the frame; the mechanism's
     origin sits at ``mechanism_origin`` (axes turned by ``mechanism_angle``); ``orders`` harmonics of the
     shaking loads are kept; RMS values are taken along ``direction`` (omit it for the vector magnitude) at the
-    named ``points``; the predicted RMS velocity is judged by ``standard`` for ``machine_class``.
+    named ``points``; the predicted RMS velocity is judged by ``standard`` for ``machine_class``; ``gravity``
+    ("on": standard gravity along the frame's -y axis, "off", or a vector in frame axes) adds the weight's
+    pendulum term to the rocking stiffness (:mod:`machdyn.vibration.gravity`).
     """
 
     label: str = "before"
@@ -126,6 +128,9 @@ class FrameTable(Spec):
     mounts: list[MountSpec] = Field(min_length=1)
     points: dict[Name, Point] = Field(default_factory=lambda: {"origin": (0.0, 0.0)}, min_length=1)
     after: VariantSpec | None = None
+    # the weight's pendulum term in the rocking stiffness: "on" (standard gravity along the frame's -y), "off", or
+    # a vector in frame axes
+    gravity: Gravity = "on"
 
     @field_validator("mounts")
     @classmethod

@@ -167,7 +167,7 @@
   }
 
   /* ------------------------------------------------------------------ one curve against the crank angle */
-  function CurvePlot(parent, angles, c, onPick, range) {
+  function CurvePlot(parent, angles, c, onPick, range, axis) {
     var W = 300, H = 130, L = 46, R = 8, T = 18, B = 22;
     var svg = el("svg", { viewBox: "0 0 " + W + " " + H, "class": "mdview-curve", "data-curve": c.title }, parent);
     var ys = c.y.filter(function (v) { return v !== null; });
@@ -184,8 +184,10 @@
     el("line", { x1: L, y1: py(0), x2: W - R, y2: py(0), "class": "mdview-axis" }, svg);
     el("text", { x: L - 4, y: py(hi) + 4, "class": "mdview-tick", "text-anchor": "end" }, svg).textContent = fmt(hi);
     el("text", { x: L - 4, y: py(lo), "class": "mdview-tick", "text-anchor": "end" }, svg).textContent = fmt(lo);
-    el("text", { x: L, y: H - 6, "class": "mdview-tick" }, svg).textContent = fmt(a0) + "°";
-    el("text", { x: W - R, y: H - 6, "class": "mdview-tick", "text-anchor": "end" }, svg).textContent = fmt(a1) + "° crank";
+    /* the frames' axis: the crank angle, or another (a transient's time) named by the scene's "axis" */
+    var unit = axis ? " " + axis.unit : "°", what = axis ? " " + axis.name : " crank";
+    el("text", { x: L, y: H - 6, "class": "mdview-tick" }, svg).textContent = fmt(a0) + unit;
+    el("text", { x: W - R, y: H - 6, "class": "mdview-tick", "text-anchor": "end" }, svg).textContent = fmt(a1) + unit + what;
     var pts = [];
     c.y.forEach(function (v, i) { if (v !== null) pts.push(px(angles[i]).toFixed(2) + "," + py(v).toFixed(2)); });
     el("polyline", { points: pts.join(" "), "class": "mdview-curve-line" }, svg);
@@ -258,7 +260,7 @@
     names.forEach(function (k) {
       data.scenes[k].curves.forEach(function (c) {
         var shown = names.length > 1 ? { title: c.title + " (" + k + ")", unit: c.unit, y: c.y, zero: c.zero } : c;
-        curves.push(new CurvePlot(curveRow, angles, shown, function (i) { self.set(i); }, ranges[c.title]));
+        curves.push(new CurvePlot(curveRow, angles, shown, function (i) { self.set(i); }, ranges[c.title], first.axis));
       });
     });
     function nearest(a) {
@@ -270,7 +272,8 @@
       i = ((Math.round(i) % n) + n) % n;
       self.index = i;
       slider.value = i;
-      readout.textContent = "φ = " + fmt(angles[i]) + "°";
+      readout.textContent = first.axis ? first.axis.symbol + " = " + fmt(angles[i]) + " " + first.axis.unit
+                                       : "φ = " + fmt(angles[i]) + "°";
       root.setAttribute("data-index", i);
       root.setAttribute("data-angle", angles[i]);
       drawings.forEach(function (d) { d.show(i); });
