@@ -28,6 +28,7 @@ from .model import Exciter, carried_frame, coupled_model
 from .motor_table import MOTOR_LABELS, MOTOR_SUMMARY, MotorSpec, dq_motor, motor_checks, motor_scalars, motor_series
 from .passage import AmplitudeCurve, Passage, amplitude_curve, capture, passages
 from .run import Scenario, Transient, TransientLimitError, run_scenario
+from .shaft_stage import ShaftDriveSpec, ShaftTransientRun, check_shaft_transient, is_shaft_line, run_shaft_transient
 from .torsion import TorsionRun, torsion_run, torsional_line
 from .torsion_results import (
     TORSION_LABELS,
@@ -37,7 +38,6 @@ from .torsion_results import (
     torsion_scalars,
     torsion_series,
 )
-from .shaft_stage import ShaftDriveSpec, ShaftTransientRun, check_shaft_transient, is_shaft_line, run_shaft_transient
 
 __all__ = ["CAPABILITY", "TransientRun", "TransientTable", "TwinSpec", "check_transient", "run_transient",
            "scenario_of"]
