@@ -16,9 +16,11 @@ design, on each smooth piece of each segment (x in [0, 1] of the segment, split 
 jumps): the piece is sampled at the same :data:`~machdyn.cams.exact.GRID` points, and for every design at once
 the best sample's bracket (its two neighbours) is shrunk by a golden-section search of :data:`GOLDEN_STEPS`
 steps on the law's closed form (Press et al., *Numerical Recipes*, 3rd ed., §10.2): the bracket, 2/64 of the
-piece, ends 0.618^48 ~ 1e-10 times as wide, where a smooth maximum's value differs from the exact one by
-(1/2)|f''| dx^2, far below 1e-12 of it. A maximum at a piece's end is its end sample's own value, as in the single
-search. The result equals the single-design check (:func:`machdyn.cams.checks.check_cam`) to about 1e-14.
+piece, ends 0.618^36 x 2/64 ~ 1e-9 of the piece wide, where a smooth maximum's value differs from the exact one by
+(1/2)|f''| dx^2 < 1e-12 |f| for any |f''/f| below 1e6 (per piece^2; the laws' pressure angle and curvature have a
+few broad extremes per piece). A maximum at a piece's end is its end sample's own value, as in the single search.
+The largest |phi| is searched as the largest |tan phi| (the same place: d + s > 0), without an arctangent per
+step. The result equals the single-design check (:func:`machdyn.cams.checks.check_cam`) to about 1e-15.
 
 The smallest base circle meeting a pressure-angle limit, R_b = sqrt(d_min^2 + e^2) - r_r with
 d_min = max(|v - e|/tan phi_max - s) (direct, :func:`machdyn.cams.checks.min_base_radius_pressure`), is taken over
@@ -41,7 +43,7 @@ from ..errors import InputError
 from .exact import GRID, INSIDE, segment_motion, smooth_pieces
 from .program import Program
 
-#: Golden-section steps that shrink a piece's best bracket (2/64 of the piece) to ~1e-10 of the piece.
+#: Golden-section steps that shrink a piece's best bracket (2/64 of the piece) to ~1e-9 of the piece.
 GOLDEN_STEPS = 36
 _INV_GOLD = (np.sqrt(5.0) - 1.0) / 2.0
 
