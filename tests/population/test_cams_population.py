@@ -122,3 +122,22 @@ def test_bad_arguments_are_refused_naming_the_rule():
         analyse_population(prog, [0.0], [0.05, 0.06], [0.01, 0.01, 0.01])
     with pytest.raises(InputError, match="pressure_limit"):
         analyse_population(prog, [0.0], 0.05, 0.01, pressure_limit=D(90.0))
+
+
+def test_chunks_of_designs_give_the_whole_population_s_results(monkeypatch):
+    """The designs are evaluated in chunks (bounded memory): chunks of 7 give the results of one pass, bit for bit;
+    no cam angles give no per-angle array and the same extremes."""
+    import machdyn.cams.population as population
+
+    rng = np.random.default_rng(2)
+    n = 40
+    args = (_program("poly345", 0.03), np.radians(np.arange(0.0, 360.0, 10.0)), rng.uniform(0.03, 0.08, n),
+            rng.uniform(0.0, 0.02, n), rng.uniform(-0.01, 0.01, n), rng.uniform(0.5, 1.5, n))
+    whole = population.analyse_population(*args)
+    monkeypatch.setattr(population, "CHUNK_DESIGNS", 7)
+    chunked = population.analyse_population(*args)
+    for field in ("max_pressure_angle", "min_pitch_curvature_radius", "min_base_radius_pressure", "pressure_angle"):
+        np.testing.assert_array_equal(getattr(chunked, field), getattr(whole, field))
+    bare = population.analyse_population(args[0], [], *args[2:])
+    assert bare.pressure_angle.shape == (n, 0)
+    np.testing.assert_array_equal(bare.max_pressure_angle, whole.max_pressure_angle)

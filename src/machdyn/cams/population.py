@@ -28,7 +28,9 @@ the same angles as the single check, every piece's grid (:func:`machdyn.cams.exa
 
 A design the single-design run refuses (a base radius not > 0, a negative roller radius, a lift scale not > 0, a
 value not finite, or an offset |e| >= R_p: the follower does not assemble) is reported with ``valid`` False and
-NaN results, so that a study counts it infeasible and goes on with the others. Valid for translating followers
+NaN results, so that a study counts it infeasible and goes on with the others. The extremes are computed in chunks
+of :data:`CHUNK_DESIGNS` designs (bounded memory); the per-angle pressure angles are (N, K) for the K angles given
+(none: ``theta=[]``). Valid for translating followers
 with a roller (r_r > 0) or a knife edge (r_r = 0) and every program of :mod:`machdyn.cams.program`.
 """
 
@@ -46,6 +48,8 @@ from .program import Program
 #: Golden-section steps that shrink a piece's best bracket (2/64 of the piece) to ~1e-9 of the piece.
 GOLDEN_STEPS = 36
 _INV_GOLD = (np.sqrt(5.0) - 1.0) / 2.0
+#: Designs evaluated together: the temporaries (designs x GRID per piece) stay bounded for any population.
+CHUNK_DESIGNS = 16384
 
 
 @dataclass(frozen=True)
@@ -122,30 +126,14 @@ def _arrays(*values):
     return [np.broadcast_to(x, (n,)).copy() for x in arrays]
 
 
-def analyse_population(prog: Program, theta, base_radius, roller_radius=0.0, offset=0.0, lift_scale=1.0,
-                       pressure_limit: float = np.radians(30.0), curvature_factor: float = 1.0) -> PopulationCams:
-    """The exact largest pressure angle, smallest convex radius of curvature, smallest base circle and the
-    checks' flags of N translating cams (module docstring); ``theta`` [rad] the cam angles of the (N, K)
-    pressure angles, ``pressure_limit`` [rad] in (0, 90 deg), ``curvature_factor`` [-] the required
-    rho_min / r_r (1: no undercut)."""
-    if not 0 < pressure_limit < np.pi / 2:
-        raise InputError(f"cams.population: pressure_limit must lie between 0 and 90 deg; got "
-                         f"{np.degrees(pressure_limit):g} deg.")
-    rb, rr, e, k = _arrays(base_radius, roller_radius, offset, lift_scale)
-    rp = rb + rr
-    with np.errstate(invalid="ignore"):
-        valid = (np.isfinite(rb) & np.isfinite(rr) & np.isfinite(e) & np.isfinite(k) & (rb > 0) & (rr >= 0)
-                 & (k > 0) & (np.abs(e) < rp))
-    # a refused design is computed on a harmless stand-in and reported as NaN
-    rb, rr, e, k = (np.where(valid, x, y) for x, y in ((rb, 1.0), (rr, 0.0), (e, 0.0), (k, 1.0)))
-    rp = rb + rr
-    d = np.sqrt(rp**2 - e**2)
-    tan_limit = np.tan(pressure_limit)
+def _extremes(prog: Program, e: np.ndarray, d: np.ndarray, k: np.ndarray,
+              tan_limit: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Per design: the exact largest |tan phi|, the largest convex curvature [1/m] (0 if none) and d_min [m] over
+    the pieces' grids (module docstring), for offsets e, d = sqrt(R_p^2 - e^2) and lift scales k (N,)."""
     ec, dc, kc = e[:, None], d[:, None], k[:, None]
-
-    slope_max = np.zeros_like(rb)
-    kappa_max = np.zeros_like(rb)
-    dmin = np.full_like(rb, -np.inf)
+    slope_max = np.zeros_like(e)
+    kappa_max = np.zeros_like(e)
+    dmin = np.full_like(e, -np.inf)
     for seg, x0, x1 in smooth_pieces(prog):
         span = x1 - x0
         dwell = prog.segments[seg].motion == "dwell"
@@ -169,7 +157,33 @@ def analyse_population(prog: Program, theta, base_radius, roller_radius=0.0, off
 
         slope_max = np.maximum(slope_max, _piece_max(pressure, xs, slope))
         kappa_max = np.maximum(kappa_max, _piece_max(curvature, xs, kappa))
+    return slope_max, kappa_max, dmin
 
+
+def analyse_population(prog: Program, theta, base_radius, roller_radius=0.0, offset=0.0, lift_scale=1.0,
+                       pressure_limit: float = np.radians(30.0), curvature_factor: float = 1.0) -> PopulationCams:
+    """The exact largest pressure angle, smallest convex radius of curvature, smallest base circle and the
+    checks' flags of N translating cams (module docstring); ``theta`` [rad] the cam angles of the (N, K)
+    pressure angles, ``pressure_limit`` [rad] in (0, 90 deg), ``curvature_factor`` [-] the required
+    rho_min / r_r (1: no undercut)."""
+    if not 0 < pressure_limit < np.pi / 2:
+        raise InputError(f"cams.population: pressure_limit must lie between 0 and 90 deg; got "
+                         f"{np.degrees(pressure_limit):g} deg.")
+    rb, rr, e, k = _arrays(base_radius, roller_radius, offset, lift_scale)
+    rp = rb + rr
+    with np.errstate(invalid="ignore"):
+        valid = (np.isfinite(rb) & np.isfinite(rr) & np.isfinite(e) & np.isfinite(k) & (rb > 0) & (rr >= 0)
+                 & (k > 0) & (np.abs(e) < rp))
+    # a refused design is computed on a harmless stand-in and reported as NaN
+    rb, rr, e, k = (np.where(valid, x, y) for x, y in ((rb, 1.0), (rr, 0.0), (e, 0.0), (k, 1.0)))
+    rp = rb + rr
+    d = np.sqrt(rp**2 - e**2)
+    tan_limit = np.tan(pressure_limit)
+    slope_max, kappa_max, dmin = np.empty_like(rb), np.empty_like(rb), np.empty_like(rb)
+    for lo in range(0, rb.size, CHUNK_DESIGNS):  # bounded temporaries (designs x GRID) for any population
+        part = slice(lo, lo + CHUNK_DESIGNS)
+        slope_max[part], kappa_max[part], dmin[part] = _extremes(prog, e[part], d[part], k[part], tan_limit)
+    ec, dc, kc = e[:, None], d[:, None], k[:, None]
     phi_max = np.arctan(slope_max)
     with np.errstate(divide="ignore"):
         rho = np.where(kappa_max > 0, 1.0 / np.where(kappa_max > 0, kappa_max, 1.0), np.inf)
