@@ -11,6 +11,7 @@ import pytest
 
 from machdyn.cams.checks import check_cam
 from machdyn.cams.followers import Follower
+from machdyn.cams.geometric import rise_angle
 from machdyn.cams.population import analyse_population
 from machdyn.cams.profile import profile
 from machdyn.cams.program import Segment, program
@@ -122,6 +123,12 @@ def test_bad_arguments_are_refused_naming_the_rule():
         analyse_population(prog, [0.0], [0.05, 0.06], [0.01, 0.01, 0.01])
     with pytest.raises(InputError, match="pressure_limit"):
         analyse_population(prog, [0.0], 0.05, 0.01, pressure_limit=D(90.0))
+    shape = (0.02, 0.008, 0.01)  # base, nose and roller radius [m] of a tangent cam
+    rise = rise_angle("tangent", shape[0], shape[1], 0.01, shape[2])
+    tangent = program([Segment("rise", rise, 0.01, "tangent", contour=shape), Segment("dwell", D(180) - rise),
+                       Segment("return", D(120), 0.01, "cycloidal"), Segment("dwell", D(60))])
+    with pytest.raises(InputError, match="tangent law follows from one cam's own base circle"):
+        analyse_population(tangent, [0.0], 0.02, 0.01)
 
 
 def test_chunks_of_designs_give_the_whole_population_s_results(monkeypatch):

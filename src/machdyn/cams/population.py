@@ -31,7 +31,8 @@ value not finite, or an offset |e| >= R_p: the follower does not assemble) is re
 NaN results, so that a study counts it infeasible and goes on with the others. The extremes are computed in chunks
 of :data:`CHUNK_DESIGNS` designs (bounded memory); the per-angle pressure angles are (N, K) for the K angles given
 (none: ``theta=[]``). Valid for translating followers
-with a roller (r_r > 0) or a knife edge (r_r = 0) and every program of :mod:`machdyn.cams.program`.
+with a roller (r_r > 0) or a knife edge (r_r = 0) and every program of :mod:`machdyn.cams.program` but the contour
+laws (circular arc, tangent), whose motion follows from one cam's own base circle and roller (refused).
 """
 
 from __future__ import annotations
@@ -43,7 +44,7 @@ import numpy as np
 
 from ..errors import InputError
 from .exact import GRID, INSIDE, segment_motion, smooth_pieces
-from .program import Program
+from .program import CONTOURS, Program
 
 #: Golden-section steps that shrink a piece's best bracket (2/64 of the piece) to ~1e-9 of the piece.
 GOLDEN_STEPS = 36
@@ -169,6 +170,10 @@ def analyse_population(prog: Program, theta, base_radius, roller_radius=0.0, off
     if not 0 < pressure_limit < np.pi / 2:
         raise InputError(f"cams.population: pressure_limit must lie between 0 and 90 deg; got "
                          f"{np.degrees(pressure_limit):g} deg.")
+    contour = [seg.law for seg in prog.segments if seg.motion != "dwell" and seg.law in CONTOURS]
+    if contour:
+        raise InputError(f"cams.population: the {contour[0]} law follows from one cam's own base circle, nose and "
+                         "roller, not a shape the designs share; analyse such cams one by one.")
     rb, rr, e, k = _arrays(base_radius, roller_radius, offset, lift_scale)
     rp = rb + rr
     with np.errstate(invalid="ignore"):
