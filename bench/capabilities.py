@@ -5,8 +5,10 @@ call) and a subset of the same designs by the single-design functions one after 
 largest relative difference of the compared figure over that subset (0 = identical), ``designs_per_s`` and
 ``per_design_per_s`` the median over the repeats (min and max beside them).
 
-- cams: largest pressure angle of translating roller cams of one program shape with random base radius, roller,
-  offset and lift (``machdyn.cams.population.analyse_population`` against ``profile`` + ``check_cam``);
+- cams: the exact largest pressure angle, smallest convex radius of curvature of the pitch curve and smallest base
+  circle of translating roller cams of one program shape with random base radius, roller, offset and lift
+  (``machdyn.cams.population.analyse_population`` against ``profile`` + ``check_cam``); the agreement is the
+  largest over the three figures;
 - parts: the ``[parts]`` checks of random four-bars (a ball bearing, a pin, a link in fatigue), forces included:
   one kinetostatics of the population + ``parts_population`` against ``kinetostatics`` + ``size_parts`` per
   design; the figure is the largest utilisation;
@@ -94,11 +96,14 @@ def cams(n, n_single, repeats, rng):
 
     def single():
         return [check_cam(profile(prog(0.02 * k[i]), Follower("translating", "roller", rb[i], rr[i], e[i]), theta),
-                          prog(0.02 * k[i])).max_pressure_angle for i in range(n_single)]
+                          prog(0.02 * k[i])) for i in range(n_single)]
 
     slow = _rate(single, n_single, repeats)
-    return _entry(n, n_single, fast, slow,
-                  _agreement(fast[0].max_pressure_angle[:n_single], np.abs(np.asarray(slow[0]))))
+    pop = fast[0]
+    return _entry(n, n_single, fast, slow, max(
+        _agreement(pop.max_pressure_angle[:n_single], [c.max_pressure_angle for c in slow[0]]),
+        _agreement(pop.min_pitch_curvature_radius[:n_single], [c.min_pitch_radius for c in slow[0]]),
+        _agreement(pop.min_base_radius_pressure[:n_single], [c.min_base_radius_pressure for c in slow[0]])))
 
 
 def parts(n, n_single, repeats, rng):

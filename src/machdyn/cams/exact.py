@@ -40,7 +40,7 @@ BREAKS: dict[str, tuple[float, ...]] = {
     "modified_trapezoid": (0.125, 0.375, 0.625, 0.875),
     "modified_sine": (0.125, 0.875),
 }
-_INSIDE = 1e-12  # a piece is evaluated just inside its ends, so that a jump's one-sided value is the piece's own
+INSIDE = 1e-12  # a piece is evaluated just inside its ends, so that a jump's one-sided value is the piece's own
 
 
 @dataclass(frozen=True)
@@ -64,7 +64,7 @@ class Extremes:
         return 1.0 / self.max_convex_curvature if self.max_convex_curvature > 0 else float("inf")
 
 
-def _pieces(prog: Program) -> list[tuple[int, float, float]]:
+def smooth_pieces(prog: Program) -> list[tuple[int, float, float]]:
     """(segment, x0, x1) of every smooth piece of every segment."""
     out = []
     for k, seg in enumerate(prog.segments):
@@ -76,7 +76,7 @@ def _pieces(prog: Program) -> list[tuple[int, float, float]]:
     return out
 
 
-def _motion(prog: Program, k: int, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def segment_motion(prog: Program, k: int, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Cam angle [rad], s, v = ds/dtheta, a of segment k at x in its interval, from the law's closed form."""
     seg, t0, level = prog.segments[k], prog.starts[k], prog.levels[k]
     theta = t0 + seg.duration * x
@@ -106,7 +106,7 @@ def _largest(fn: Callable[[np.ndarray], np.ndarray], x0: float, x1: float) -> tu
     from scipy.optimize import minimize_scalar
 
     span = x1 - x0
-    xs = np.linspace(x0 + _INSIDE * span, x1 - _INSIDE * span, GRID)
+    xs = np.linspace(x0 + INSIDE * span, x1 - INSIDE * span, GRID)
     ys = fn(xs)
     i = int(np.argmax(ys))
     best_x, best = float(xs[i]), float(ys[i])
@@ -127,19 +127,19 @@ def extremes(prog: Program, follower: Follower) -> Extremes:
     vmin, vmax = float("inf"), -float("inf")
 
     def at(k: int, x: float) -> float:
-        return float(_motion(prog, k, np.array([x]))[0][0])
+        return float(segment_motion(prog, k, np.array([x]))[0][0])
 
-    for k, x0, x1 in _pieces(prog):
+    for k, x0, x1 in smooth_pieces(prog):
         if flat:
             def radius(x: np.ndarray, k: int = k) -> np.ndarray:
-                _, s, _, a = _motion(prog, k, x)
+                _, s, _, a = segment_motion(prog, k, x)
                 return -(follower.base_radius + s + a)
 
             def contact(x: np.ndarray, k: int = k) -> np.ndarray:
-                return _motion(prog, k, x)[2]
+                return segment_motion(prog, k, x)[2]
 
             def contact_below(x: np.ndarray, k: int = k) -> np.ndarray:
-                return -_motion(prog, k, x)[2]
+                return -segment_motion(prog, k, x)[2]
 
             value, x = _largest(radius, x0, x1)
             if -value < rmin[0]:
@@ -149,11 +149,11 @@ def extremes(prog: Program, follower: Follower) -> Extremes:
             continue
 
         def pressure(x: np.ndarray, k: int = k) -> np.ndarray:
-            _, s, v, a = _motion(prog, k, x)
+            _, s, v, a = segment_motion(prog, k, x)
             return _pitch(follower, s, v, a)[0]
 
         def curvature(x: np.ndarray, k: int = k) -> np.ndarray:
-            _, s, v, a = _motion(prog, k, x)
+            _, s, v, a = segment_motion(prog, k, x)
             return _pitch(follower, s, v, a)[1]
 
         value, x = _largest(pressure, x0, x1)
@@ -171,7 +171,7 @@ def segment_angles(prog: Program, per_piece: int = GRID) -> np.ndarray:
     """Cam angles [rad] that sample every smooth piece of every segment at ``per_piece`` points, just inside its
     ends (for searches that need a grid that sees every segment, e.g. the smallest base circle)."""
     out = []
-    for k, x0, x1 in _pieces(prog):
+    for k, x0, x1 in smooth_pieces(prog):
         span = x1 - x0
-        out.append(_motion(prog, k, np.linspace(x0 + _INSIDE * span, x1 - _INSIDE * span, per_piece))[0])
+        out.append(segment_motion(prog, k, np.linspace(x0 + INSIDE * span, x1 - INSIDE * span, per_piece))[0])
     return np.unique(np.concatenate(out))

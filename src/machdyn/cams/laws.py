@@ -51,14 +51,15 @@ def parabolic(x: np.ndarray) -> Values:
 def harmonic(x: np.ndarray) -> Values:
     """Simple harmonic: y = (1 - cos pi x)/2 (Norton eq 8.6); acceleration jumps at the ends of a double dwell."""
     p = np.pi
-    return ((1.0 - np.cos(p * x)) / 2.0, p / 2.0 * np.sin(p * x), p**2 / 2.0 * np.cos(p * x),
-            -(p**3) / 2.0 * np.sin(p * x))
+    c, s = np.cos(p * x), np.sin(p * x)  # once each: the law is evaluated on large arrays of a population
+    return (1.0 - c) / 2.0, p / 2.0 * s, p**2 / 2.0 * c, -(p**3) / 2.0 * s
 
 
 def cycloidal(x: np.ndarray) -> Values:
     """Cycloidal: y = x - sin(2 pi x)/(2 pi) (Norton eq 8.8); continuous acceleration, peak y'' = 2 pi."""
     t = 2.0 * np.pi
-    return (x - np.sin(t * x) / t, 1.0 - np.cos(t * x), t * np.sin(t * x), t**2 * np.cos(t * x))
+    s, c = np.sin(t * x), np.cos(t * x)  # once each: the law is evaluated on large arrays of a population
+    return x - s / t, 1.0 - c, t * s, t**2 * c
 
 
 def _poly(coeffs: dict[int, float]) -> Callable[[np.ndarray], Values]:

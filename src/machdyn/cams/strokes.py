@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .dynamics import FollowerTrain, Spring
-from .exact import _largest, _pieces, _pitch
+from .exact import _largest, _pitch, smooth_pieces
 from .followers import Follower
 from .program import Program
 
@@ -112,7 +112,7 @@ def strokes(prog: Program, follower: Follower, speed: float, train: FollowerTrai
     [25.46, 12.73]
     """
     pieces: dict[int, list[tuple[float, float]]] = {}
-    for k, x0, x1 in _pieces(prog):
+    for k, x0, x1 in smooth_pieces(prog):
         if prog.segments[k].motion != "dwell":
             pieces.setdefault(k, []).append((x0, x1))
     return tuple(_stroke(prog, follower, speed, k, spans, train, spring, arm) for k, spans in pieces.items())
