@@ -213,7 +213,15 @@ def check_problem(problem: Any) -> list[str]:
     :class:`~machdyn.errors.ProblemFileError` for bad input and the engine's errors for a linkage that cannot
     close or passes a dead position."""
     loaded = _loaded(problem, None)
-    return kind(loaded.kind).check(loaded.spec, loaded.model)
+    found = list(kind(loaded.kind).check(loaded.spec, loaded.model))
+    return found + [w for w in _advice(loaded) if w not in found]
+
+
+def _advice(loaded: LoadedProblem) -> list[str]:
+    """The capability tables' advice on a valid file (:attr:`~machdyn.pipeline.Capability.advise`), said by
+    ``check`` and ``run`` alike."""
+    return [w for cap in _tables(loaded) if cap.advise is not None
+            for w in cap.advise(loaded.spec, getattr(loaded.spec, cap.table))]
 
 
 class DesignResults(dict):
@@ -260,7 +268,7 @@ def run_problem(problem: Any, *, text: str | None = None, step: Step = no_step) 
     values: dict[str, Any] = {}
     units: dict[str, str] = {}
     summary: list[str] = []
-    warnings: list[str] = []
+    warnings: list[str] = _advice(loaded)
     failed: list[str] = []
     for name, outcome in outcomes.items():
         clash = sorted(set(values) & set(outcome.scalars))

@@ -134,7 +134,7 @@ def _shaft_labels() -> dict[str, Label]:
     """The cam's own results under the ``shaft_cam.`` prefix, declared once for the catalogue."""
 
     return {_rename(k): Label(f"Shaft cam: {lab.text}", lab.unit, lab.display,
-                              None if lab.zero_below is None else _rename(lab.zero_below))
+                              None if lab.zero_below is None else _rename(lab.zero_below), lab.over, lab.better)
             for k, lab in LABELS.items()}
 
 
@@ -145,8 +145,10 @@ CAPABILITY = Capability(
     step="cam on the crank shaft",
     kinds=("mechanism",),
     labels={**_shaft_labels(),
-            "shaft_cam.combined_peak_torque": Label("Shaft: peak driving torque, linkage + cam", "N*m"),
-            "shaft_cam.linkage_peak_torque": Label("Shaft: peak driving torque of the linkage alone", "N*m")},
+            "shaft_cam.combined_peak_torque": Label("Shaft: peak driving torque, linkage + cam", "N*m",
+                                                    over="max_abs", better="lower"),
+            "shaft_cam.linkage_peak_torque": Label("Shaft: peak driving torque of the linkage alone", "N*m",
+                                                   over="max_abs", better="lower")},
     report="machdyn.report.cams:shaft_sections",
     check=check,
     result_type=ShaftCamResult,

@@ -138,7 +138,7 @@ REDUCTIONS: dict[str, Reduction] = {
     "harmonic_phase": Reduction("phase of the n-th harmonic over one turn"),
     "cycle": Reduction("a figure of the whole cycle"),
     "count": Reduction("a count over the cycle"),
-    "value": Reduction("one value per design (no reduction)"),
+    "scalar": Reduction("a single figure per design, not a series over the positions"),
 }
 
 

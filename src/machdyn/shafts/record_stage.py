@@ -153,7 +153,7 @@ CAPABILITY = Capability(
     step="field balancing from records",
     kinds=("shaft_line",),
     labels={"shaft.records.speed": Label("Field balancing from records: shaft speed of the original run", "rad/s",
-                                         "rpm")},
+                                         "rpm", over="scalar", better="none")},
     report="machdyn.report.shafts:record_sections",
     check=check,
     result_type=RecordBalance,

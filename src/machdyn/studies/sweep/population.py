@@ -28,11 +28,12 @@ RANKED = ("driving_torque.max_abs", "frame_force.max")
 
 LABELS = {
     "sweep.regular": Label("Sweep: each design regular (assembles, no dead point, branch change, near dead point "
-                           "or poor transmission)"),
-    "sweep.status": Label("Sweep: status of each design (regular or its first fault)"),
-    "sweep.designs": Label("Sweep: designs"),
-    "sweep.regular_count": Label("Sweep: regular designs"),
-    **{f"sweep.count.{fault.replace(' ', '_')}": Label(f"Sweep: designs whose first fault is: {fault}")
+                           "or poor transmission)", over="scalar", better="none"),
+    "sweep.status": Label("Sweep: status of each design (regular or its first fault)", over="scalar", better="none"),
+    "sweep.designs": Label("Sweep: designs", over="count", better="none"),
+    "sweep.regular_count": Label("Sweep: regular designs", over="count", better="higher"),
+    **{f"sweep.count.{fault.replace(' ', '_')}": Label(f"Sweep: designs whose first fault is: {fault}",
+                                                       over="count", better="lower")
        for _flag, fault in FAULTS},
 }
 
