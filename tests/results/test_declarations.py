@@ -1,4 +1,5 @@
-"""Every result declares how it reduces over the positions and which way is better, and the studies read it."""
+"""Every result declares how it reduces over the positions and which way is better, and the studies read it
+(the optimiser's warning: tests/optimise/test_objective_direction.py)."""
 
 from __future__ import annotations
 
@@ -7,41 +8,8 @@ import pytest
 
 from machdyn.kinds import catalogue
 from machdyn.linkage.reductions import REDUCTIONS
-from machdyn.reading import load_problem
 from machdyn.results.catalogue import BETTER, against, best_index, better_of, worst
-from machdyn.runner import check_problem, run_problem
 from machdyn.studies.exploration.digest import Digest
-
-FOUR_BAR = """
-[meta]
-name = "crank-rocker"
-[mechanism]
-type = "four_bar"
-[mechanism.crank]
-length = "40 mm"
-mass = "0.3 kg"
-[mechanism.coupler]
-length = "120 mm"
-mass = "0.5 kg"
-[mechanism.rocker]
-length = "100 mm"
-mass = "0.4 kg"
-[mechanism.ground]
-length = "150 mm"
-[drive]
-speed = "120 rpm"
-positions = 36
-[optimise]
-population = 6
-generations = 1
-[[optimise.variables]]
-parameter = "mechanism.crank.length"
-lower = "35 mm"
-upper = "45 mm"
-[[optimise.objectives]]
-result = "{result}"
-sense = "{sense}"
-"""
 
 
 def test_every_key_of_the_catalogue_declares_its_reduction_and_better_direction():
@@ -83,11 +51,3 @@ def test_an_exploration_keeps_the_highest_of_a_result_of_which_more_is_better():
     lowest.add(cols, 0, 1)
     np.testing.assert_array_equal(lowest.best["design"], [4, 0])
 
-
-def test_an_objective_against_its_declared_direction_is_warned_by_check_and_run_alike():
-    problem = load_problem(FOUR_BAR.format(result="transmission_angle.worst", sense="minimise"))
-    said = [w for w in check_problem(problem) if "transmission_angle.worst" in w]
-    assert len(said) == 1 and "higher" in said[0] and "optimise.objectives[0]" in said[0]
-    assert said[0] in run_problem(problem).warnings
-    fine = load_problem(FOUR_BAR.format(result="transmission_angle.worst", sense="maximise"))
-    assert not [w for w in check_problem(fine) if "better direction" in w]

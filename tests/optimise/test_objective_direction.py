@@ -1,0 +1,34 @@
+"""An objective whose sense works against its result's declared better direction is warned of, by check and run
+alike, naming the key."""
+
+from __future__ import annotations
+
+from machdyn.runner import check_problem, run_problem
+
+from .conftest import problem_with
+
+OPTIMISE = """
+[optimise]
+population = 6
+generations = 1
+positions = 36
+[[optimise.variables]]
+parameter = "mechanism.crank.length"
+lower = "35 mm"
+upper = "45 mm"
+[[optimise.objectives]]
+result = "transmission_angle.worst"
+sense = "{sense}"
+"""
+
+
+def test_an_objective_against_its_declared_direction_is_warned_by_check_and_run_alike():
+    problem = problem_with(OPTIMISE.format(sense="minimise"))
+    said = [w for w in check_problem(problem) if "transmission_angle.worst" in w]
+    assert len(said) == 1 and "higher" in said[0] and "optimise.objectives[0]" in said[0]
+    assert said[0] in run_problem(problem).warnings
+
+
+def test_an_objective_along_its_declared_direction_is_not_questioned():
+    problem = problem_with(OPTIMISE.format(sense="maximise"))
+    assert not [w for w in check_problem(problem) if "better direction" in w]
