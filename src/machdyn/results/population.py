@@ -43,8 +43,8 @@ from ..errors import InputError
 from ..linkage import analyse, kinematics, sweep
 from ..linkage.diagnostics import full_turn_stroke, time_ratio
 from ..linkage.engines import available, check_engine
-from ..linkage.fused_population import run_population
 from ..linkage.force_gain import crank_force_gain
+from ..linkage.fused_population import run_population
 from ..linkage.fused_source import SUMMARY_FIELDS
 from ..linkage.grashof import grashof_margin, grashof_type
 from ..linkage.loads import window
