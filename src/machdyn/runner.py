@@ -30,6 +30,7 @@ from rich.table import Table
 from . import __version__
 from .errors import AnalysisError, AssemblyError, InputError, ProblemFileError, SingularPositionError
 from .kinds import KINDS, capabilities_for, capability, kind
+from .notebook import ShownInNotebook
 from .outputs import OutputSet, json_text
 from .pipeline import Outcome, StageContext, Step, import_object, no_step
 from .problem.dumper import dump_problem
@@ -39,9 +40,26 @@ from .results import Results, Summary, collect, summarise
 __all__ = ["RunResult", "check_problem", "load_problem", "read_problem", "run_problem"]
 
 
+@dataclass(frozen=True)
+class StageResult(ShownInNotebook):
+    """One stage of a run (the kind's analysis or a capability's table), as :meth:`RunResult.stage` gives it:
+    its ``name``, its ``outcome`` (the typed result in ``outcome.results``) and its ``results`` (its scalars, each
+    with its label and unit). Shown in Jupyter as its results table and its report sections with their plots."""
+
+    name: str
+    report: str | None
+    outcome: Outcome
+    results: Results
+
+    def sections(self) -> list[tuple[str, str]]:
+        """(heading, html) of the stage's report sections (none for a stage without a report)."""
+        return [] if self.report is None else import_object(self.report)(self.outcome)
+
+
 @dataclass
-class RunResult:
-    """What a run computed, ready to print, convert or write.
+class RunResult(ShownInNotebook):
+    """What a run computed, ready to print, convert or write. Shown in Jupyter as its summary table (values in
+    their display units) and its report's sections with their plots; :meth:`stage` gives one stage alone.
 
     ``results`` every scalar in SI with its label; ``summary`` the summary table (the same one the command line
     prints and the report shows); ``outcomes`` each stage's outcome by name (the kind's under its own name, each
@@ -129,6 +147,17 @@ class RunResult:
                 "best_design": "the scalars 'optimise.best.*': the best design found, written to best_design.toml",
             }
         return data
+
+    def stage(self, name: str) -> StageResult:
+        """The stage ``name`` of the run: the kind's (its main table, e.g. ``"mechanism"``) or a capability's
+        (its table, e.g. ``"flywheel"``), with its own results and report."""
+        if name not in self.outcomes:
+            raise InputError(f"This run has no stage '{name}'; it has: {', '.join(self.outcomes)}.")
+        outcome = self.outcomes[name]
+        stage = kind(self.kind) if name == self.kind else capability(name)
+        keys = [k for k in outcome.scalars if k in self.results]
+        return StageResult(name, stage.report, outcome,
+                           Results({k: self.results[k] for k in keys}, {k: self.results.label(k) for k in keys}))
 
     def report_sections(self) -> list[tuple[str, str]]:
         """(heading, html) of every stage's report sections, in the order the stages ran."""

@@ -26,7 +26,11 @@ def test_an_objective_against_its_declared_direction_is_warned_by_check_and_run_
     problem = problem_with(OPTIMISE.format(sense="minimise"))
     said = [w for w in check_problem(problem) if "transmission_angle.worst" in w]
     assert len(said) == 1 and "higher" in said[0] and "optimise.objectives[0]" in said[0]
-    assert said[0] in run_problem(problem).warnings
+    run = run_problem(problem)
+    assert said[0] in run.warnings
+    # the study's own result shows itself in a notebook: its variables with units and its convergence plot
+    html = run.outcomes["optimise"].results._repr_html_()
+    assert "<th>variable</th>" in html and "mm</td>" in html and "<svg" in html
 
 
 def test_an_objective_along_its_declared_direction_is_not_questioned():

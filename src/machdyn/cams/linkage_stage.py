@@ -21,6 +21,7 @@ import numpy as np
 
 from ..dynamics.contributions import ShaftContribution
 from ..errors import InputError, ProblemFileError
+from ..notebook import ShownInNotebook
 from ..pipeline import Capability, Outcome, StageContext
 from ..results.labels import Label
 from .follower_linkage import (
@@ -91,7 +92,7 @@ SUMMARY = tuple(P + k for k in ("output_stroke", "follower_load.max", "linkage_t
 
 
 @dataclass(frozen=True)
-class FollowerLinkageResult(ShaftContribution):
+class FollowerLinkageResult(ShaftContribution, ShownInNotebook):
     """What the stage computed (SI), for the report, the Python API and ``[flywheel]``.
 
     cam : the cam's own result; load : the linkage's kinetostatics and its load on the follower and the camshaft;

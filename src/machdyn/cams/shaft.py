@@ -22,6 +22,7 @@ from ..dynamics.contributions import ShaftContribution
 from ..dynamics.equivalent import EquivalentMachine
 from ..dynamics.tables import PeriodicCurve
 from ..errors import ProblemFileError
+from ..notebook import ShownInNotebook
 from ..pipeline import Capability, Outcome, StageContext, no_step
 from ..results.labels import Label
 from .dynamics import cam_forces, cam_machine
@@ -37,7 +38,7 @@ def _rename(text: str) -> str:
 
 
 @dataclass(frozen=True)
-class ShaftCamResult(CamResult, ShaftContribution):
+class ShaftCamResult(CamResult, ShaftContribution, ShownInNotebook):
     """A cam's result on the crank shaft, at ``phase`` [rad] (cam angle = crank angle + phase): its reduced
     quantities add to the linkage's machine for ``[flywheel]``."""
 

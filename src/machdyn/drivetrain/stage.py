@@ -15,6 +15,7 @@ from ..dynamics.equivalent import equivalent_machine
 from ..dynamics.stage import FlywheelRun
 from ..errors import InputError, ProblemFileError
 from ..linkage import analyse, crank_angles
+from ..notebook import ShownInNotebook
 from ..pipeline import Capability, Outcome, StageContext
 from ..problem.build import build_mechanism
 from ..results.labels import Label
@@ -35,7 +36,7 @@ RPM = 30.0 / np.pi
 
 
 @dataclass(frozen=True)
-class DriveTrainRun:
+class DriveTrainRun(ShownInNotebook):
     """What ``[drivetrain]`` computed: the train, the crank-side inertia, the shaft torques over the cycle
     (shafts first), the clutch engagement (at the clutch shaft), the worst stop and every stop computed."""
 

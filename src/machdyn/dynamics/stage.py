@@ -14,6 +14,7 @@ import numpy as np
 from pydantic import Field, model_validator
 
 from ..errors import InputError, ProblemFileError
+from ..notebook import ShownInNotebook
 from ..pipeline import Capability, Outcome, StageContext
 from ..problem.fields import (
     AngularVelocity,
@@ -444,7 +445,7 @@ def _cycle_columns(r) -> dict[str, tuple[Any, str]]:
 
 
 @dataclass(frozen=True)
-class FlywheelRun:
+class FlywheelRun(ShownInNotebook):
     """Everything the ``[flywheel]`` stage computed (SI), for the report and the Python API."""
 
     table: Any

@@ -16,6 +16,7 @@ from ..dynamics.drives import ConstantSpeed
 from ..dynamics.simulate import balance_speed
 from ..dynamics.stage import FlywheelRun
 from ..errors import InputError, ProblemFileError
+from ..notebook import ShownInNotebook
 from ..pipeline import Capability, Outcome, StageContext
 from ..problem.fields import Angle, AngularAcceleration, AngularVelocity, Point, Time, Torque
 from ..problem.schema import Name, Spec
@@ -135,7 +136,7 @@ SUMMARY = ("transient.final_speed", "transient.captured", "transient.phase_diffe
 
 
 @dataclass(frozen=True)
-class TransientRun:
+class TransientRun(ShownInNotebook):
     """Everything the ``[transient]`` stage computed (SI), for the report and the Python API."""
 
     table: Any

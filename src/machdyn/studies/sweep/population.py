@@ -11,6 +11,7 @@ import numpy as np
 from ...errors import ProblemFileError
 from ...limits import held_values_error
 from ...linkage import stack_designs
+from ...notebook import ShownInNotebook
 from ...pipeline import Outcome, StageContext
 from ...pipelines.linkage_run import crank_range
 from ...problem.build import build_mechanism, crank_angles, harmonics_of
@@ -39,7 +40,7 @@ LABELS = {
 
 
 @dataclass(frozen=True)
-class SweepRun:
+class SweepRun(ShownInNotebook):
     """A sweep's plan (parameter, values) and the per-design columns (catalogue keys, SI; the status columns
     ``assembled``, ``regular``, ``status``... among them)."""
 
