@@ -484,8 +484,9 @@ def _check(file: Path) -> None:
 
 @app.command(name="results", epilog=EXIT_CODES_HELP)
 def results_of(file: FileArg, debug: DebugOpt = False) -> None:
-    """List every result key a run of FILE reports, with its unit, meaning and better direction (the names a
-    [sweep], an exploration and [optimise] accept). The file is run; nothing is written."""
+    """List every result key a run of FILE reports, with its unit, meaning, reduction over the crank positions and
+    better direction (the names a [sweep], an exploration and [optimise] accept). The file is run; nothing is
+    written."""
     from .errors import AssemblyError, InputError, ProblemFileError, SingularPositionError
 
     loaded = _load(file)
@@ -501,10 +502,10 @@ def results_of(file: FileArg, debug: DebugOpt = False) -> None:
     from rich.table import Table
 
     table = Table(title=f"Results of {file.name} ({len(rows)} keys)", title_justify="left")
-    for column in ("key", "unit", "meaning", "better"):
+    for column in ("key", "unit", "meaning", "reduction", "better"):
         table.add_column(column)
     for row in rows:
-        table.add_row(row.key, row.unit, row.meaning, row.better or "–")
+        table.add_row(row.key, row.unit, row.meaning, row.reduction or "–", row.better or "–")
     _console().print(table)
 
 

@@ -19,19 +19,22 @@ from pathlib import Path
 
 from .kinds import catalogue
 from .linkage.reductions import REDUCTIONS
-from .results.catalogue import COMPACTOR, GROUPS, MECHANISM, STATUS, Quantity, find
+from .results.catalogue import BETTER, COMPACTOR, GROUPS, MECHANISM, STATUS, Quantity, find
 from .results.labels import Label
 
 
 @dataclass(frozen=True)
 class Listed:
-    """One key of a run: its ``key``, the ``unit`` it is shown in, its ``meaning`` (the label) and the
-    ``better`` direction ("lower", "higher", "" for none)."""
+    """One key of a run: its ``key``, the ``unit`` it is shown in, its ``meaning`` (the label), the ``better``
+    direction ("lower", "higher", "target", "true" for a yes/no check, "" for none) and its ``reduction`` over the
+    crank positions (a name of :data:`machdyn.linkage.reductions.REDUCTIONS`, "" for a key the catalogue does not
+    know)."""
 
     key: str
     unit: str
     meaning: str
     better: str
+    reduction: str = ""
 
 
 def _quantity(key: str) -> Quantity | None:
@@ -51,8 +54,9 @@ def listed(labels: Mapping[str, Label]) -> list[Listed]:
     out = []
     for key, lab in labels.items():
         quantity = _quantity(key)
-        better = quantity.better if quantity is not None and quantity.better != "true" else ""
-        out.append(Listed(key, lab.shown_unit or "", lab.text, better))
+        better = quantity.better if quantity is not None and quantity.better != "none" else ""
+        reduction = quantity.over_positions if quantity is not None else ""
+        out.append(Listed(key, lab.shown_unit or "", lab.text, better, reduction))
     return out
 
 
@@ -76,8 +80,12 @@ def mechanism_table(entries: Iterable[Quantity] = MECHANISM + COMPACTOR) -> str:
              "|---|---|---|---|---|---|---|"]
     for q in entries:
         lines.append(f"| `{q.key}` | {q.unit or '–'} | {_cell(q.text)} | {f'`{q.series}`' if q.series else '–'} "
-                     f"| {REDUCTIONS[q.over_positions].text} | {q.better or '–'} | {_cell(_group(q))} |")
+                     f"| {REDUCTIONS[q.over_positions].text} | {_better(q)} | {_cell(_group(q))} |")
     return "\n".join(lines)
+
+
+def _better(q: Quantity) -> str:
+    return q.better
 
 
 def status_table() -> str:
@@ -97,11 +105,20 @@ def reductions_table() -> str:
 def capability_table() -> str:
     """The markdown table of every other declared result: the problem kinds' and the capabilities'."""
     own = {q.key for q in MECHANISM + COMPACTOR + STATUS}
-    lines = ["| key | SI unit | meaning | better | produced by |", "|---|---|---|---|---|"]
+    lines = ["| key | SI unit | meaning | over the crank positions | better | produced by |",
+             "|---|---|---|---|---|---|"]
     for q in catalogue():
         if q.key in own:
             continue
-        lines.append(f"| `{q.key}` | {q.unit or '–'} | {_cell(q.text)} | {q.better or '–'} | `{q.producer}` |")
+        lines.append(f"| `{q.key}` | {q.unit or '–'} | {_cell(q.text)} | `{q.over_positions}` | {_better(q)} "
+                     f"| `{q.producer}` |")
+    return "\n".join(lines)
+
+
+def better_table() -> str:
+    """The markdown table of the better directions (:data:`machdyn.results.catalogue.BETTER`)."""
+    lines = ["| better | meaning |", "|---|---|"]
+    lines += [f"| `{name}` | {text} |" for name, text in BETTER.items()]
     return "\n".join(lines)
 
 
@@ -116,6 +133,7 @@ TABLES = {
     "mechanism": mechanism_table,
     "status": status_table,
     "reductions": reductions_table,
+    "better": better_table,
     "groups": groups_table,
     "capabilities": capability_table,
 }

@@ -122,6 +122,8 @@ class Capability:
         cycle (:func:`machdyn.linkage.kinetostatics` of a mechanism of N designs), None where it cannot stand in
         for a run of each design (the studies then run each design). Imported only by a study that asks for
         the table's results (:func:`machdyn.kinds.population_form`).
+    advise : ``(problem, table) -> [warning, ...]``: advice on a valid table (an objective against its result's
+        declared better direction), said by ``check`` and by ``run`` alike.
     """
 
     table: str
@@ -136,6 +138,7 @@ class Capability:
     after: tuple[str, ...] = ()
     result_type: type | tuple[type, ...] | None = None
     population: str | None = None
+    advise: Callable[[Any, Any], list[str]] | None = None
 
 
 @dataclass(frozen=True)

@@ -29,6 +29,7 @@ from rich.table import Table
 from . import __version__
 from .errors import AnalysisError, AssemblyError, InputError, ProblemFileError, SingularPositionError
 from .kinds import KINDS, capabilities_for, capability, kind
+from .notebook import ShownInNotebook
 from .outputs import STAMP_FILE, OutputSet, json_text, stamp_script
 from .pipeline import Outcome, StageContext, Step, import_object, no_step
 from .problem.dumper import dump_problem
@@ -38,9 +39,26 @@ from .results import Results, Summary, collect, summarise
 __all__ = ["RunResult", "check_problem", "load_problem", "read_problem", "run_problem"]
 
 
+@dataclass(frozen=True)
+class StageResult(ShownInNotebook):
+    """One stage of a run (the kind's analysis or a capability's table), as :meth:`RunResult.stage` gives it:
+    its ``name``, its ``outcome`` (the typed result in ``outcome.results``) and its ``results`` (its scalars, each
+    with its label and unit). Shown in Jupyter as its results table and its report sections with their plots."""
+
+    name: str
+    report: str | None
+    outcome: Outcome
+    results: Results
+
+    def sections(self) -> list[tuple[str, str]]:
+        """(heading, html) of the stage's report sections (none for a stage without a report)."""
+        return [] if self.report is None else import_object(self.report)(self.outcome)
+
+
 @dataclass
-class RunResult:
-    """What a run computed, ready to print, convert or write.
+class RunResult(ShownInNotebook):
+    """What a run computed, ready to print, convert or write. Shown in Jupyter as its summary table (values in
+    their display units) and its report's sections with their plots; :meth:`stage` gives one stage alone.
 
     ``results`` every scalar in SI with its label; ``summary`` the summary table (the same one the command line
     prints and the report shows); ``outcomes`` each stage's outcome by name (the kind's under its own name, each
@@ -129,6 +147,17 @@ class RunResult:
             }
         return data
 
+    def stage(self, name: str) -> StageResult:
+        """The stage ``name`` of the run: the kind's (its main table, e.g. ``"mechanism"``) or a capability's
+        (its table, e.g. ``"flywheel"``), with its own results and report."""
+        if name not in self.outcomes:
+            raise InputError(f"This run has no stage '{name}'; it has: {', '.join(self.outcomes)}.")
+        outcome = self.outcomes[name]
+        stage = kind(self.kind) if name == self.kind else capability(name)
+        keys = [k for k in outcome.scalars if k in self.results]
+        return StageResult(name, stage.report, outcome,
+                           Results({k: self.results[k] for k in keys}, {k: self.results.label(k) for k in keys}))
+
     def report_sections(self) -> list[tuple[str, str]]:
         """(heading, html) of every stage's report sections, in the order the stages ran."""
         out: list[tuple[str, str]] = []
@@ -212,7 +241,15 @@ def check_problem(problem: Any) -> list[str]:
     :class:`~machdyn.errors.ProblemFileError` for bad input and the engine's errors for a linkage that cannot
     close or passes a dead position."""
     loaded = _loaded(problem, None)
-    return kind(loaded.kind).check(loaded.spec, loaded.model)
+    found = list(kind(loaded.kind).check(loaded.spec, loaded.model))
+    return found + [w for w in _advice(loaded) if w not in found]
+
+
+def _advice(loaded: LoadedProblem) -> list[str]:
+    """The capability tables' advice on a valid file (:attr:`~machdyn.pipeline.Capability.advise`), said by
+    ``check`` and ``run`` alike."""
+    return [w for cap in _tables(loaded) if cap.advise is not None
+            for w in cap.advise(loaded.spec, getattr(loaded.spec, cap.table))]
 
 
 class DesignResults(dict):
@@ -259,7 +296,7 @@ def run_problem(problem: Any, *, text: str | None = None, step: Step = no_step) 
     values: dict[str, Any] = {}
     units: dict[str, str] = {}
     summary: list[str] = []
-    warnings: list[str] = []
+    warnings: list[str] = _advice(loaded)
     failed: list[str] = []
     for name, outcome in outcomes.items():
         clash = sorted(set(values) & set(outcome.scalars))

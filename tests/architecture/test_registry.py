@@ -52,7 +52,7 @@ def _run(ctx: StageContext) -> Outcome:
 
 CAPABILITY = Capability(
     table="torque_limit", schema=LimitTable, run=_run, step="torque limit",
-    labels={"torque_limit.utilisation": Label("Peak driving torque / allowed", "")},
+    labels={"torque_limit.utilisation": Label("Peak driving torque / allowed", "", over="scalar", better="lower")},
     result_type=float,
 )
 

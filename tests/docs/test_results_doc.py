@@ -49,9 +49,9 @@ def test_machdyn_results_lists_every_key_the_run_reports_with_unit_meaning_and_b
         row = next(line for line in lines if f" {key} " in line)
         assert entry["unit"] in row, key
     row = next(line for line in lines if " driving_torque.max_abs " in line)
-    assert "Driving torque, max |T|" in row and "lower" in row and "N*m" in row
+    assert "Driving torque, max |T|" in row and "lower" in row and "N*m" in row and " max_abs " in row
     row = next(line for line in lines if " transmission_angle.worst " in line)
-    assert "higher" in row and "deg" in row
+    assert "higher" in row and "deg" in row and " worst " in row
 
 
 def test_machdyn_results_of_a_bad_file_exits_2(tmp_path):

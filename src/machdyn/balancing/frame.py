@@ -17,6 +17,7 @@ import numpy as np
 from ..errors import InputError, check_finite
 from ..linkage import Mechanism, kinematics, kinetostatics
 from ..linkage.loads import mass_elements
+from ..notebook import ShownInNotebook
 
 __all__ = ["FrameLoads", "BalanceRow", "BalanceTable", "BalanceResult", "frame_loads", "compare", "cycle"]
 
@@ -220,7 +221,7 @@ class BalanceResult:
 
 
 @dataclass(frozen=True)
-class BalanceRun:
+class BalanceRun(ShownInNotebook):
     """The outcome of ``[balance]`` (the contract its readers, ``[frame]`` and the report, rely on): the method,
     the balance ``result`` (:class:`BalanceResult`, or :class:`~machdyn.balancing.robust.RobustResult` over
     operating states), the trade-off curve of the crank method (or None), the table's reference reduction and its

@@ -21,6 +21,7 @@ import numpy as np
 
 from ..dynamics.contributions import ShaftContribution
 from ..errors import InputError, ProblemFileError
+from ..notebook import ShownInNotebook
 from ..pipeline import Capability, Outcome, StageContext
 from ..results.labels import Label
 from .follower_linkage import (
@@ -45,32 +46,44 @@ from .stage import build as build_cam
 P = f"{TABLE}."
 
 LABELS: dict[str, Label] = {
-    P + "camshaft_torque.max": Label("Camshaft torque with the linkage: peak |T|", "N*m"),
-    P + "camshaft_torque.rms": Label("Camshaft torque with the linkage: RMS over the turn", "N*m"),
-    P + "linkage_torque.max": Label("Camshaft torque the linkage adds: peak |T|", "N*m"),
+    P + "camshaft_torque.max": Label("Camshaft torque with the linkage: peak |T|", "N*m", over="max_abs",
+                                     better="lower"),
+    P + "camshaft_torque.rms": Label("Camshaft torque with the linkage: RMS over the turn", "N*m", over="time_rms",
+                                     better="lower"),
+    P + "linkage_torque.max": Label("Camshaft torque the linkage adds: peak |T|", "N*m", over="max_abs",
+                                    better="lower"),
     P + "follower_load.max": Label("The linkage's load on the follower, at the roller along its path: peak |F|",
-                                   "N"),
+                                   "N", over="max_abs", better="lower"),
     P + "work_per_cycle": Label("Camshaft work per turn the linkage adds (its loads' work)", "J",
-                                zero_below=P + "linkage_torque.max"),
-    P + "mean_power": Label("Camshaft with the linkage: mean power", "W", zero_below=P + "peak_power"),
-    P + "peak_power": Label("Camshaft with the linkage: peak power |T omega|", "W"),
-    P + "output_stroke": Label("Linkage output: stroke of the slider", "m", "mm"),
-    P + "output_velocity.max": Label("Linkage output: peak |velocity| of the slider", "m/s"),
-    P + "joint_force.max": Label("Linkage: peak joint force", "N"),
-    P + "min_contact_force": Label("Contact force with the linkage, along the follower's path: minimum", "N"),
-    P + "max_contact_force": Label("Contact force with the linkage, along the follower's path: maximum", "N"),
-    P + "max_normal_force": Label("Contact force with the linkage, along the common normal: maximum", "N"),
+                                zero_below=P + "linkage_torque.max", over="cycle", better="lower"),
+    P + "mean_power": Label("Camshaft with the linkage: mean power", "W", zero_below=P + "peak_power",
+                            over="time_mean", better="lower"),
+    P + "peak_power": Label("Camshaft with the linkage: peak power |T omega|", "W", over="max_abs", better="lower"),
+    P + "output_stroke": Label("Linkage output: stroke of the slider", "m", "mm", over="range", better="none"),
+    P + "output_velocity.max": Label("Linkage output: peak |velocity| of the slider", "m/s", over="max_abs",
+                                     better="lower"),
+    P + "joint_force.max": Label("Linkage: peak joint force", "N", over="max", better="lower"),
+    P + "min_contact_force": Label("Contact force with the linkage, along the follower's path: minimum", "N",
+                                   over="min", better="higher"),
+    P + "max_contact_force": Label("Contact force with the linkage, along the follower's path: maximum", "N",
+                                   over="max", better="lower"),
+    P + "max_normal_force": Label("Contact force with the linkage, along the common normal: maximum", "N", over="max",
+                                  better="lower"),
     P + "jump_speed": Label("Follower jump with the linkage: lowest cam speed at which contact is lost", "rad/s",
-                            "rpm"),
-    P + "jump_speed_ratio": Label("Follower jump speed with the linkage / running speed", ""),
+                            "rpm", over="cycle", better="higher"),
+    P + "jump_speed_ratio": Label("Follower jump speed with the linkage / running speed", "", over="cycle",
+                                  better="higher"),
     P + "spring_rate_needed": Label("Return spring with the linkage: least rate at the spring's preload", "N/m",
-                                    "N/mm"),
-    P + "spring_preload_needed": Label("Return spring with the linkage: least preload at the spring's rate", "N"),
+                                    "N/mm", over="cycle", better="lower"),
+    P + "spring_preload_needed": Label("Return spring with the linkage: least preload at the spring's rate", "N",
+                                       over="cycle", better="lower"),
 }
 
 #: an output that turns (not a slider): its swing and angular velocity under the same keys
-TURNING = {P + "output_stroke": Label("Linkage output: swing of the output body", "rad", "deg"),
-           P + "output_velocity.max": Label("Linkage output: peak |angular velocity| of the output body", "rad/s")}
+TURNING = {P + "output_stroke": Label("Linkage output: swing of the output body", "rad", "deg", over="range",
+                                      better="none"),
+           P + "output_velocity.max": Label("Linkage output: peak |angular velocity| of the output body", "rad/s",
+                                            over="max_abs", better="lower")}
 
 SUMMARY = tuple(P + k for k in ("output_stroke", "follower_load.max", "linkage_torque.max",
                                 "camshaft_torque.max", "mean_power", "joint_force.max", "min_contact_force",
@@ -79,7 +92,7 @@ SUMMARY = tuple(P + k for k in ("output_stroke", "follower_load.max", "linkage_t
 
 
 @dataclass(frozen=True)
-class FollowerLinkageResult(ShaftContribution):
+class FollowerLinkageResult(ShaftContribution, ShownInNotebook):
     """What the stage computed (SI), for the report, the Python API and ``[flywheel]``.
 
     cam : the cam's own result; load : the linkage's kinetostatics and its load on the follower and the camshaft;

@@ -22,6 +22,7 @@ from ..dynamics.contributions import ShaftContribution
 from ..dynamics.equivalent import EquivalentMachine
 from ..dynamics.tables import PeriodicCurve
 from ..errors import ProblemFileError
+from ..notebook import ShownInNotebook
 from ..pipeline import Capability, Outcome, StageContext, no_step
 from ..results.labels import Label
 from .dynamics import cam_forces, cam_machine
@@ -37,7 +38,7 @@ def _rename(text: str) -> str:
 
 
 @dataclass(frozen=True)
-class ShaftCamResult(CamResult, ShaftContribution):
+class ShaftCamResult(CamResult, ShaftContribution, ShownInNotebook):
     """A cam's result on the crank shaft, at ``phase`` [rad] (cam angle = crank angle + phase): its reduced
     quantities add to the linkage's machine for ``[flywheel]``."""
 
@@ -134,7 +135,7 @@ def _shaft_labels() -> dict[str, Label]:
     """The cam's own results under the ``shaft_cam.`` prefix, declared once for the catalogue."""
 
     return {_rename(k): Label(f"Shaft cam: {lab.text}", lab.unit, lab.display,
-                              None if lab.zero_below is None else _rename(lab.zero_below))
+                              None if lab.zero_below is None else _rename(lab.zero_below), lab.over, lab.better)
             for k, lab in LABELS.items()}
 
 
@@ -145,8 +146,10 @@ CAPABILITY = Capability(
     step="cam on the crank shaft",
     kinds=("mechanism",),
     labels={**_shaft_labels(),
-            "shaft_cam.combined_peak_torque": Label("Shaft: peak driving torque, linkage + cam", "N*m"),
-            "shaft_cam.linkage_peak_torque": Label("Shaft: peak driving torque of the linkage alone", "N*m")},
+            "shaft_cam.combined_peak_torque": Label("Shaft: peak driving torque, linkage + cam", "N*m",
+                                                    over="max_abs", better="lower"),
+            "shaft_cam.linkage_peak_torque": Label("Shaft: peak driving torque of the linkage alone", "N*m",
+                                                   over="max_abs", better="lower")},
     report="machdyn.report.cams:shaft_sections",
     check=check,
     result_type=ShaftCamResult,

@@ -25,43 +25,54 @@ from .strokes import FIGURES, Stroke, strokes
 
 #: result key -> (text, SI unit for a translating follower, display) ; oscillating followers' lengths are angles
 _FIXED = {
-    "cam.speed": Label("Cam speed", "rad/s", "rpm"),
-    "cam.max_pressure_angle": Label("Pressure angle: largest |phi| over the turn", "rad", "deg"),
-    "cam.pressure_angle_limit": Label("Pressure angle: limit", "rad", "deg"),
-    "cam.min_pitch_curvature_radius": Label("Pitch curve: smallest convex radius of curvature", "m", "mm"),
-    "cam.min_surface_curvature_radius": Label("Cam surface: smallest convex radius of curvature", "m", "mm"),
-    "cam.min_base_radius_pressure": Label("Smallest base circle radius meeting the pressure-angle limit", "m", "mm"),
+    "cam.speed": Label("Cam speed", "rad/s", "rpm", over="scalar", better="none"),
+    "cam.max_pressure_angle": Label("Pressure angle: largest |phi| over the turn", "rad", "deg", over="max_abs",
+                                    better="lower"),
+    "cam.pressure_angle_limit": Label("Pressure angle: limit", "rad", "deg", over="scalar", better="none"),
+    "cam.min_pitch_curvature_radius": Label("Pitch curve: smallest convex radius of curvature", "m", "mm", over="min",
+                                            better="higher"),
+    "cam.min_surface_curvature_radius": Label("Cam surface: smallest convex radius of curvature", "m", "mm",
+                                              over="min", better="higher"),
+    "cam.min_base_radius_pressure": Label("Smallest base circle radius meeting the pressure-angle limit", "m", "mm",
+                                          over="scalar", better="lower"),
     "cam.min_base_radius_curvature": Label("Smallest base circle radius meeting the curvature limit (roller: convex "
                                            "pitch radius >= curvature factor x roller radius; flat face: no cusp)",
-                                           "m", "mm"),
-    "cam.base_radius": Label("Base circle radius", "m", "mm"),
-    "cam.face_width": Label("Flat face: width needed (contact range + margins)", "m", "mm"),
-    "cam.spring_preload": Label("Return spring: preload", "N"),
-    "cam.spring_rate": Label("Return spring: rate", "N/m", "N/mm"),
-    "cam.jump_speed": Label("Follower jump: lowest cam speed at which contact is lost", "rad/s", "rpm"),
-    "cam.jump_speed_ratio": Label("Follower jump speed / running speed", ""),
-    "cam.min_contact_force": Label("Contact force along the follower's path: minimum", "N"),
-    "cam.max_contact_force": Label("Contact force along the follower's path: maximum", "N"),
-    "cam.max_normal_force": Label("Contact force along the common normal: maximum", "N"),
-    "cam.peak_torque": Label("Camshaft torque: peak |T|", "N*m"),
-    "cam.rms_torque": Label("Camshaft torque: RMS over the turn", "N*m"),
+                                           "m", "mm", over="scalar", better="lower"),
+    "cam.base_radius": Label("Base circle radius", "m", "mm", over="scalar", better="lower"),
+    "cam.face_width": Label("Flat face: width needed (contact range + margins)", "m", "mm", over="scalar",
+                            better="lower"),
+    "cam.spring_preload": Label("Return spring: preload", "N", over="scalar", better="lower"),
+    "cam.spring_rate": Label("Return spring: rate", "N/m", "N/mm", over="scalar", better="lower"),
+    "cam.jump_speed": Label("Follower jump: lowest cam speed at which contact is lost", "rad/s", "rpm", over="cycle",
+                            better="higher"),
+    "cam.jump_speed_ratio": Label("Follower jump speed / running speed", "", over="cycle", better="higher"),
+    "cam.min_contact_force": Label("Contact force along the follower's path: minimum", "N", over="min",
+                                   better="higher"),
+    "cam.max_contact_force": Label("Contact force along the follower's path: maximum", "N", over="max", better="lower"),
+    "cam.max_normal_force": Label("Contact force along the common normal: maximum", "N", over="max", better="lower"),
+    "cam.peak_torque": Label("Camshaft torque: peak |T|", "N*m", over="max_abs", better="lower"),
+    "cam.rms_torque": Label("Camshaft torque: RMS over the turn", "N*m", over="time_rms", better="lower"),
     "cam.work_per_cycle": Label("Camshaft torque: work per turn (the damper's loss)", "J",
-                                zero_below="cam.peak_torque"),
-    "cam.mean_power": Label("Camshaft: mean power", "W", zero_below="cam.peak_power"),
-    "cam.peak_power": Label("Camshaft: peak power |T omega|", "W"),
-    "cam.max_reduced_inertia": Label("Reduced inertia at the camshaft: largest", "kg*m^2"),
-    "cam.simulated_max_separation": Label("Simulated follower: largest lift-off from the cam", "m", "mm"),
-    "cam.jumps": Label("Jumps of velocity or acceleration in the program", ""),
+                                zero_below="cam.peak_torque", over="cycle", better="lower"),
+    "cam.mean_power": Label("Camshaft: mean power", "W", zero_below="cam.peak_power", over="time_mean", better="lower"),
+    "cam.peak_power": Label("Camshaft: peak power |T omega|", "W", over="max_abs", better="lower"),
+    "cam.max_reduced_inertia": Label("Reduced inertia at the camshaft: largest", "kg*m^2", over="max", better="lower"),
+    "cam.simulated_max_separation": Label("Simulated follower: largest lift-off from the cam", "m", "mm", over="max",
+                                          better="lower"),
+    "cam.jumps": Label("Jumps of velocity or acceleration in the program", "", over="count", better="lower"),
 }
 
-_MOTION_LABELS = {  # key -> (text, translating unit/display, oscillating unit/display)
-    "cam.stroke": ("Follower stroke", ("m", "mm"), ("rad", "deg")),
-    "cam.max_velocity": ("Follower velocity: peak |v|", ("m/s", None), ("rad/s", None)),
-    "cam.max_acceleration": ("Follower acceleration: peak |a|", ("m/s^2", None), ("rad/s^2", None)),
-    "cam.max_jerk": ("Follower jerk: peak |j|", ("m/s^3", None), ("rad/s^3", None)),
+#: key -> (text, translating unit/display, oscillating unit/display, reduction, better)
+_MOTION_LABELS = {
+    "cam.stroke": ("Follower stroke", ("m", "mm"), ("rad", "deg"), "range", "none"),
+    "cam.max_velocity": ("Follower velocity: peak |v|", ("m/s", None), ("rad/s", None), "max_abs", "lower"),
+    "cam.max_acceleration": ("Follower acceleration: peak |a|", ("m/s^2", None), ("rad/s^2", None), "max_abs",
+                             "lower"),
+    "cam.max_jerk": ("Follower jerk: peak |j|", ("m/s^3", None), ("rad/s^3", None), "max_abs", "lower"),
 }
 
-LABELS: dict[str, Label] = {**_FIXED, **{k: Label(t, u[0], u[1]) for k, (t, u, _) in _MOTION_LABELS.items()}}
+LABELS: dict[str, Label] = {**_FIXED, **{k: Label(t, u[0], u[1], over=over, better=better)
+                                         for k, (t, u, _, over, better) in _MOTION_LABELS.items()}}
 
 SUMMARY = ("cam.stroke", "cam.max_velocity", "cam.max_acceleration", "cam.max_pressure_angle",
            "cam.pressure_angle_limit", "cam.min_pitch_curvature_radius", "cam.min_surface_curvature_radius",
@@ -317,7 +328,8 @@ def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
                               f"{'mrad' if osc else 'mm'} at the running speed")
     labels = {}
     if osc:
-        labels = {k: Label(t, u[0], u[1]) for k, (t, _, u) in _MOTION_LABELS.items()}
+        labels = {k: Label(t, u[0], u[1], over=over, better=better)
+                  for k, (t, _, u, over, better) in _MOTION_LABELS.items()}
     each = strokes(model.program, model.follower, speed, sized, spring, model.arm)
     for stroke in each:
         values |= {stroke.key(name): value for name, value in stroke.figures.items()}
@@ -336,8 +348,10 @@ def stroke_labels(each: tuple[Stroke, ...], osc: bool) -> dict[str, Label]:
         for name in stroke.figures:
             text, translating, oscillating = FIGURES[name]
             unit = oscillating if osc else translating
+            smallest = name.startswith("min_")
             out[stroke.key(name)] = Label(f"Segment {stroke.number} ({stroke.motion}): {text}", unit,
-                                          DISPLAY.get(unit))
+                                          DISPLAY.get(unit), over="min" if smallest else "max_abs",
+                                          better="higher" if smallest else "lower")
     return out
 
 

@@ -204,13 +204,15 @@ def analyse(problem: Any, shafts: Any, step: Step) -> Outcome:
 
 
 LABELS = {
-    "hoist.motor_torque": Label("Motor torque to accelerate the train", "N*m"),
-    "hoist.steady_torque": Label("Motor torque at steady speed", "N*m"),
-    "hoist.motor_acceleration": Label("Motor's angular acceleration", "rad/s^2"),
-    "hoist.equivalent_inertia": Label("Inertia referred to the motor (loss-free)", "kg*m^2"),
-    "hoist.load_torque": Label("Load and friction torque referred to the motor (loss-free)", "N*m"),
-    "hoist.loss_torque": Label("Torque the stages lose", "N*m"),
-    "hoist.power": Label("Motor power at motor_speed", "W", "kW"),
+    "hoist.motor_torque": Label("Motor torque to accelerate the train", "N*m", over="scalar", better="lower"),
+    "hoist.steady_torque": Label("Motor torque at steady speed", "N*m", over="scalar", better="lower"),
+    "hoist.motor_acceleration": Label("Motor's angular acceleration", "rad/s^2", over="scalar", better="higher"),
+    "hoist.equivalent_inertia": Label("Inertia referred to the motor (loss-free)", "kg*m^2", over="scalar",
+                                      better="lower"),
+    "hoist.load_torque": Label("Load and friction torque referred to the motor (loss-free)", "N*m", over="scalar",
+                               better="lower"),
+    "hoist.loss_torque": Label("Torque the stages lose", "N*m", over="scalar", better="lower"),
+    "hoist.power": Label("Motor power at motor_speed", "W", "kW", over="scalar", better="lower"),
 }
 
 KIND = ProblemKind(

@@ -16,6 +16,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..linkage import model as _model
+from ..notebook import ShownInNotebook
 from .bearings import life_exponent, plain_bearing_pv
 from .fatigue import amplitude_and_mean, fatigue_safety, reversed_equivalent, sn_line
 from .population import rolling_bearing_life
@@ -104,7 +105,7 @@ CRITERION_NAMES = {"goodman": "modified Goodman", "soderberg": "Soderberg", "ger
 
 
 @dataclass(frozen=True)
-class PartsResult:
+class PartsResult(ShownInNotebook):
     """Every check, and the per-position series the report draws (crank angle [rad], loads, stresses)."""
 
     checks: tuple[PartCheck, ...]

@@ -270,7 +270,7 @@ def population(problem: Any, forces: Any) -> dict[str, Any] | None:
     return found
 
 
-LABELS = {"parts.utilisation.max": Label("Parts: largest utilisation of any check", "")}
+LABELS = {"parts.utilisation.max": Label("Parts: largest utilisation of any check", "", over="scalar", better="lower")}
 
 CAPABILITY = Capability(
     table="parts",

@@ -15,6 +15,7 @@ from ..dynamics.equivalent import equivalent_machine
 from ..dynamics.stage import FlywheelRun
 from ..errors import InputError, ProblemFileError
 from ..linkage import analyse, crank_angles
+from ..notebook import ShownInNotebook
 from ..pipeline import Capability, Outcome, StageContext
 from ..problem.build import build_mechanism
 from ..results.labels import Label
@@ -35,7 +36,7 @@ RPM = 30.0 / np.pi
 
 
 @dataclass(frozen=True)
-class DriveTrainRun:
+class DriveTrainRun(ShownInNotebook):
     """What ``[drivetrain]`` computed: the train, the crank-side inertia, the shaft torques over the cycle
     (shafts first), the clutch engagement (at the clutch shaft), the worst stop and every stop computed."""
 
@@ -464,49 +465,66 @@ def _brake_scalars(done: DriveTrainRun, table: DriveTrainSpec) -> tuple[dict[str
 
 
 LABELS = {
-    "drivetrain.ratio": Label("Drive train: motor speed / crank speed", ""),
-    "drivetrain.efficiency": Label("Drive train: efficiency", ""),
-    "drivetrain.reflected_inertia": Label("Drive train: shaft inertias reflected to the crank", "kg*m^2"),
-    "clutch.slip_time": Label("Clutch: slip time of an engagement", "s"),
-    "clutch.energy": Label("Clutch: energy dissipated per engagement", "J"),
-    "clutch.crank_speed_after": Label("Clutch: crank speed when the slip ends", "rad/s", "rpm"),
-    "clutch.speed_drop": Label("Clutch: relative speed drop of the driving side (fraction)", ""),
-    "clutch.heat_power": Label("Clutch: mean heat power at the stroke rate", "W"),
-    "clutch.torque": Label("Clutch: slip torque on its shaft", "N*m"),
+    "drivetrain.ratio": Label("Drive train: motor speed / crank speed", "", over="scalar", better="none"),
+    "drivetrain.efficiency": Label("Drive train: efficiency", "", over="scalar", better="higher"),
+    "drivetrain.reflected_inertia": Label("Drive train: shaft inertias reflected to the crank", "kg*m^2",
+                                          over="scalar", better="none"),
+    "clutch.slip_time": Label("Clutch: slip time of an engagement", "s", over="scalar", better="lower"),
+    "clutch.energy": Label("Clutch: energy dissipated per engagement", "J", over="scalar", better="lower"),
+    "clutch.crank_speed_after": Label("Clutch: crank speed when the slip ends", "rad/s", "rpm", over="scalar",
+                                      better="higher"),
+    "clutch.speed_drop": Label("Clutch: relative speed drop of the driving side (fraction)", "", over="scalar",
+                               better="lower"),
+    "clutch.heat_power": Label("Clutch: mean heat power at the stroke rate", "W", over="scalar", better="lower"),
+    "clutch.torque": Label("Clutch: slip torque on its shaft", "N*m", over="scalar", better="none"),
     "clutch.driven_acceleration": Label("Clutch: driven side's acceleration while the clutch slips (at the clutch "
-                                        "shaft)", "rad/s^2"),
+                                        "shaft)", "rad/s^2", over="scalar", better="none"),
     "clutch.driving_deceleration": Label("Clutch: driving side's deceleration while the clutch slips (at the "
-                                         "clutch shaft)", "rad/s^2"),
-    "clutch.axial_force": Label("Clutch: axial force on the friction faces", "N"),
-    "clutch.max_pressure": Label("Clutch: largest pressure on the friction faces", "Pa", "MPa"),
-    "clutch.engagement_speed": Label("Clutch: speed at which the centrifugal shoes touch the drum", "rad/s", "rpm"),
-    "brake.torque": Label("Brake: braking torque on its shaft", "N*m"),
-    "brake.lever_force": Label("Brake: actuating force at the lever (or on each shoe or pad)", "N"),
-    "brake.torque_reverse": Label("Brake: braking torque with the drum turning the other way", "N*m"),
-    "brake.max_pressure": Label("Brake: largest lining pressure of the self-energising shoe", "Pa", "MPa"),
-    "brake.stop_energy": Label("Brake: energy turned into heat by the worst stop", "J"),
-    "brake.temperature_rise": Label("Brake: temperature rise of the drum per stop", "K"),
-    "brake.temperature_rise_steady": Label("Brake: largest temperature rise of the drum after many stops", "K"),
-    "brake.stop_time": Label("Brake: stopping time, worst application angle", "s"),
-    "brake.stop_angle": Label("Brake: stopping angle of the crank, worst application angle", "rad", "deg"),
+                                         "clutch shaft)", "rad/s^2", over="scalar", better="none"),
+    "clutch.axial_force": Label("Clutch: axial force on the friction faces", "N", over="scalar", better="lower"),
+    "clutch.max_pressure": Label("Clutch: largest pressure on the friction faces", "Pa", "MPa", over="scalar",
+                                 better="lower"),
+    "clutch.engagement_speed": Label("Clutch: speed at which the centrifugal shoes touch the drum", "rad/s", "rpm",
+                                     over="scalar", better="none"),
+    "brake.torque": Label("Brake: braking torque on its shaft", "N*m", over="scalar", better="higher"),
+    "brake.lever_force": Label("Brake: actuating force at the lever (or on each shoe or pad)", "N", over="scalar",
+                               better="lower"),
+    "brake.torque_reverse": Label("Brake: braking torque with the drum turning the other way", "N*m", over="scalar",
+                                  better="higher"),
+    "brake.max_pressure": Label("Brake: largest lining pressure of the self-energising shoe", "Pa", "MPa",
+                                over="scalar", better="lower"),
+    "brake.stop_energy": Label("Brake: energy turned into heat by the worst stop", "J", over="scalar", better="lower"),
+    "brake.temperature_rise": Label("Brake: temperature rise of the drum per stop", "K", over="scalar", better="lower"),
+    "brake.temperature_rise_steady": Label("Brake: largest temperature rise of the drum after many stops", "K",
+                                           over="scalar", better="lower"),
+    "brake.stop_time": Label("Brake: stopping time, worst application angle", "s", over="scalar", better="lower"),
+    "brake.stop_angle": Label("Brake: stopping angle of the crank, worst application angle", "rad", "deg",
+                              over="scalar", better="lower"),
     "single_stroke.brake_angle": Label("Single stroke: crank angle where the clutch opens and the brake closes",
-                                       "rad", "deg"),
+                                       "rad", "deg", over="scalar", better="none"),
     "single_stroke.overrun": Label("Single stroke: crank at rest past the start angle (negative: short of it)",
-                                   "rad", "deg"),
-    "single_stroke.slip_time": Label("Single stroke: clutch slip time", "s"),
-    "single_stroke.stroke_time": Label("Single stroke: time from clutch in to the crank at rest", "s"),
-    "single_stroke.stop_time": Label("Single stroke: stopping time after the brake closes", "s"),
-    "single_stroke.stop_angle": Label("Single stroke: stopping angle after the brake closes", "rad", "deg"),
-    "single_stroke.clutch_energy": Label("Single stroke: energy dissipated in the clutch", "J"),
-    "single_stroke.brake_energy": Label("Single stroke: energy dissipated in the brake", "J"),
+                                   "rad", "deg", over="scalar", better="target"),
+    "single_stroke.slip_time": Label("Single stroke: clutch slip time", "s", over="scalar", better="lower"),
+    "single_stroke.stroke_time": Label("Single stroke: time from clutch in to the crank at rest", "s", over="scalar",
+                                       better="lower"),
+    "single_stroke.stop_time": Label("Single stroke: stopping time after the brake closes", "s", over="scalar",
+                                     better="lower"),
+    "single_stroke.stop_angle": Label("Single stroke: stopping angle after the brake closes", "rad", "deg",
+                                      over="scalar", better="lower"),
+    "single_stroke.clutch_energy": Label("Single stroke: energy dissipated in the clutch", "J", over="scalar",
+                                         better="lower"),
+    "single_stroke.brake_energy": Label("Single stroke: energy dissipated in the brake", "J", over="scalar",
+                                        better="lower"),
     "single_stroke.speed_drop": Label("Single stroke: largest speed drop of the flywheel side, relative to its "
-                                      "speed between strokes", ""),
+                                      "speed between strokes", "", over="scalar", better="lower"),
     "single_stroke.recovery_time": Label("Single stroke: time for the motor to bring the flywheel back after the "
-                                         "stop", "s"),
-    "single_stroke.strokes_per_minute": Label("Single stroke: most strokes a minute the drive can make", ""),
+                                         "stop", "s", over="scalar", better="lower"),
+    "single_stroke.strokes_per_minute": Label("Single stroke: most strokes a minute the drive can make", "",
+                                              over="scalar", better="higher"),
     "single_stroke.motor_rms_torque": Label("Single stroke: RMS of the motor's torque (at the crank) over a period "
-                                            "of strokes at the rate asked for", "N*m"),
-    "single_stroke.motor_load": Label("Single stroke: motor's RMS torque / its rated S1 torque", ""),
+                                            "of strokes at the rate asked for", "N*m", over="time_rms", better="lower"),
+    "single_stroke.motor_load": Label("Single stroke: motor's RMS torque / its rated S1 torque", "", over="scalar",
+                                      better="lower"),
 }
 
 CAPABILITY = Capability(

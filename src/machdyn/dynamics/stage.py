@@ -14,6 +14,7 @@ import numpy as np
 from pydantic import Field, model_validator
 
 from ..errors import InputError, ProblemFileError
+from ..notebook import ShownInNotebook
 from ..pipeline import Capability, Outcome, StageContext
 from ..problem.fields import (
     AngularVelocity,
@@ -142,46 +143,64 @@ class FlywheelTable(Spec):
 
 
 LABELS = {
-    "flywheel.inertia": Label("Flywheel: moment of inertia, referred to the crank", "kg*m^2"),
-    "flywheel.own_inertia": Label("Flywheel: moment of inertia about its own shaft", "kg*m^2"),
-    "flywheel.shaft_speed_ratio": Label("Flywheel: its shaft's speed / crank speed", ""),
+    "flywheel.inertia": Label("Flywheel: moment of inertia, referred to the crank", "kg*m^2", over="scalar",
+                              better="lower"),
+    "flywheel.own_inertia": Label("Flywheel: moment of inertia about its own shaft", "kg*m^2", over="scalar",
+                                  better="lower"),
+    "flywheel.shaft_speed_ratio": Label("Flywheel: its shaft's speed / crank speed", "", over="scalar", better="none"),
     "flywheel.line_inertia": Label("Drive line: shaft inertias referred to the crank (motor rotor included), "
-                                   "besides the flywheel", "kg*m^2"),
-    "flywheel.inertia_exact": Label("Flywheel sized by the energy-mass (Wittenbauer) method", "kg*m^2"),
-    "flywheel.inertia_classic": Label("Flywheel sized by ΔE/(ω²δ) less the mean reduced inertia", "kg*m^2"),
-    "flywheel.method_difference": Label("Flywheel: classic / exact − 1", ""),
-    "flywheel.inertia_constant_torque": Label("Flywheel sized for a constant-torque drive", "kg*m^2"),
-    "flywheel.inertia_for_motor": Label("Flywheel sized for the chosen motor's torque-speed curve", "kg*m^2"),
+                                   "besides the flywheel", "kg*m^2", over="scalar", better="none"),
+    "flywheel.inertia_exact": Label("Flywheel sized by the energy-mass (Wittenbauer) method", "kg*m^2", over="scalar",
+                                    better="lower"),
+    "flywheel.inertia_classic": Label("Flywheel sized by ΔE/(ω²δ) less the mean reduced inertia", "kg*m^2",
+                                      over="scalar", better="lower"),
+    "flywheel.method_difference": Label("Flywheel: classic / exact − 1", "", over="scalar", better="none"),
+    "flywheel.inertia_constant_torque": Label("Flywheel sized for a constant-torque drive", "kg*m^2", over="scalar",
+                                              better="lower"),
+    "flywheel.inertia_for_motor": Label("Flywheel sized for the chosen motor's torque-speed curve", "kg*m^2",
+                                        over="scalar", better="lower"),
     "flywheel.motor_slip_saving": Label("Flywheel: saving by sizing for the motor's slip (1 − motor / constant "
-                                        "torque)", ""),
-    "flywheel.sizing_energy_fluctuation": Label("Flywheel sizing: maximum fluctuation of energy ΔE", "J"),
-    "flywheel.target_delta": Label("Coefficient of speed fluctuation: target", ""),
-    "flywheel.delta": Label("Coefficient of speed fluctuation: simulated", ""),
-    "flywheel.mean_speed": Label("Crank speed: (max + min)/2, steady state", "rad/s", "rpm"),
-    "flywheel.min_speed": Label("Crank speed: minimum, steady state", "rad/s", "rpm"),
-    "flywheel.max_speed": Label("Crank speed: maximum, steady state", "rad/s", "rpm"),
-    "flywheel.peak_drive_torque": Label("Drive torque at the crank: peak", "N*m"),
-    "flywheel.rms_drive_torque": Label("Drive torque at the crank: RMS over time", "N*m"),
-    "flywheel.energy_per_cycle": Label("Drive: energy per cycle", "J"),
-    "flywheel.mean_power": Label("Drive: mean power", "W"),
-    "flywheel.time_to_steady": Label("Start-up: time to steady running (within 1 % of the speed)", "s"),
-    "flywheel.diameter": Label("Flywheel: outer diameter", "m", "mm"),
-    "flywheel.width": Label("Flywheel: width", "m", "mm"),
-    "flywheel.mass": Label("Flywheel: mass", "kg"),
-    "flywheel.rim_speed": Label("Flywheel: rim speed at the highest speed", "m/s"),
-    "flywheel.rim_speed_limit": Label("Flywheel: rim speed limit", "m/s"),
-    "flywheel.motor_rated_power": Label("Motor: rated power", "W", "kW"),
-    "flywheel.motor_breakdown_torque": Label("Motor: breakdown torque at the crank", "N*m"),
-    "flywheel.gear_ratio": Label("Motor: gear ratio (motor / crank speed)", ""),
-    "flywheel.motor_rms_load": Label("Motor: RMS torque over the cycle / rated torque (duty S1)", ""),
-    "flywheel.motor_duty_load": Label("Motor: equivalent torque of its duty (S1, S3 or S6) / rated torque", ""),
+                                        "torque)", "", over="scalar", better="higher"),
+    "flywheel.sizing_energy_fluctuation": Label("Flywheel sizing: maximum fluctuation of energy ΔE", "J",
+                                                over="cycle", better="lower"),
+    "flywheel.target_delta": Label("Coefficient of speed fluctuation: target", "", over="scalar", better="none"),
+    "flywheel.delta": Label("Coefficient of speed fluctuation: simulated", "", over="cycle", better="lower"),
+    "flywheel.mean_speed": Label("Crank speed: (max + min)/2, steady state", "rad/s", "rpm", over="cycle",
+                                 better="none"),
+    "flywheel.min_speed": Label("Crank speed: minimum, steady state", "rad/s", "rpm", over="min", better="none"),
+    "flywheel.max_speed": Label("Crank speed: maximum, steady state", "rad/s", "rpm", over="max", better="none"),
+    "flywheel.peak_drive_torque": Label("Drive torque at the crank: peak", "N*m", over="max_abs", better="lower"),
+    "flywheel.rms_drive_torque": Label("Drive torque at the crank: RMS over time", "N*m", over="time_rms",
+                                       better="lower"),
+    "flywheel.energy_per_cycle": Label("Drive: energy per cycle", "J", over="cycle", better="lower"),
+    "flywheel.mean_power": Label("Drive: mean power", "W", over="time_mean", better="lower"),
+    "flywheel.time_to_steady": Label("Start-up: time to steady running (within 1 % of the speed)", "s", over="scalar",
+                                     better="lower"),
+    "flywheel.diameter": Label("Flywheel: outer diameter", "m", "mm", over="scalar", better="lower"),
+    "flywheel.width": Label("Flywheel: width", "m", "mm", over="scalar", better="lower"),
+    "flywheel.mass": Label("Flywheel: mass", "kg", over="scalar", better="lower"),
+    "flywheel.rim_speed": Label("Flywheel: rim speed at the highest speed", "m/s", over="max", better="lower"),
+    "flywheel.rim_speed_limit": Label("Flywheel: rim speed limit", "m/s", over="scalar", better="none"),
+    "flywheel.motor_rated_power": Label("Motor: rated power", "W", "kW", over="scalar", better="lower"),
+    "flywheel.motor_breakdown_torque": Label("Motor: breakdown torque at the crank", "N*m", over="scalar",
+                                             better="none"),
+    "flywheel.gear_ratio": Label("Motor: gear ratio (motor / crank speed)", "", over="scalar", better="none"),
+    "flywheel.motor_rms_load": Label("Motor: RMS torque over the cycle / rated torque (duty S1)", "", over="time_rms",
+                                     better="lower"),
+    "flywheel.motor_duty_load": Label("Motor: equivalent torque of its duty (S1, S3 or S6) / rated torque", "",
+                                      over="scalar", better="lower"),
     "flywheel.motor_duty_rated_torque": Label("Motor: torque it may carry while loaded in its duty, at the crank",
-                                              "N*m"),
-    "flywheel.motor_start_rotor_loss": Label("Motor: rotor loss of one start (run-up with the flywheel)", "J"),
-    "flywheel.motor_starts_per_hour": Label("Motor: starts per hour it stands (by the rotor heat of a start)", ""),
-    "flywheel.torque_peak_constant_speed": Label("Driving torque into the linkage: peak at constant speed", "N*m"),
-    "flywheel.torque_peak_real_speed": Label("Driving torque into the linkage: peak at the real speed", "N*m"),
-    "flywheel.joint_force_change": Label("Largest change of a joint's peak force at the real speed", ""),
+                                              "N*m", over="scalar", better="none"),
+    "flywheel.motor_start_rotor_loss": Label("Motor: rotor loss of one start (run-up with the flywheel)", "J",
+                                             over="scalar", better="lower"),
+    "flywheel.motor_starts_per_hour": Label("Motor: starts per hour it stands (by the rotor heat of a start)", "",
+                                            over="scalar", better="higher"),
+    "flywheel.torque_peak_constant_speed": Label("Driving torque into the linkage: peak at constant speed", "N*m",
+                                                 over="max_abs", better="lower"),
+    "flywheel.torque_peak_real_speed": Label("Driving torque into the linkage: peak at the real speed", "N*m",
+                                             over="max_abs", better="lower"),
+    "flywheel.joint_force_change": Label("Largest change of a joint's peak force at the real speed", "",
+                                         over="scalar", better="lower"),
 }
 
 SUMMARY = ("flywheel.inertia", "flywheel.own_inertia", "flywheel.shaft_speed_ratio", "flywheel.line_inertia",
@@ -426,7 +445,7 @@ def _cycle_columns(r) -> dict[str, tuple[Any, str]]:
 
 
 @dataclass(frozen=True)
-class FlywheelRun:
+class FlywheelRun(ShownInNotebook):
     """Everything the ``[flywheel]`` stage computed (SI), for the report and the Python API."""
 
     table: Any

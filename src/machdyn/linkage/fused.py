@@ -34,6 +34,7 @@ from .fused_source import KERNEL_BODY_FIELDS, SUMMARY_FIELDS, Generated, generat
 from .model import joints
 from .motion import DyadReport, Kinematics, SlideMotion, kinematics_result
 from .reactions import Forces, Joint, Reaction
+from .reductions import compiled_streams
 from .refs import GROUND, column, full
 from .state import BodyState
 
@@ -42,9 +43,11 @@ _FORMS: dict[str, Any] = {}
 
 
 def _forms() -> dict[str, Any]:
-    """The dyad forms compiled for scalars, under the names the kernels call them by (``F_rrr_motion`` ...)."""
+    """The dyad forms compiled for scalars, under the names the kernels call them by (``F_rrr_motion`` ...), and
+    the streaming reductions of :mod:`.reductions` (``RS_max_abs`` ...)."""
     if not _FORMS:
         _FORMS.update({f"F_{name}": form for name, form in vars(scalar_forms()).items()})
+        _FORMS.update(compiled_streams())
     return _FORMS
 _NO_ROWS = np.zeros((1, 1))  # the per-position load table of a mechanism without such loads (never read)
 

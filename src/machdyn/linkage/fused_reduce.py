@@ -17,10 +17,13 @@ import math
 
 import numba
 
+from .force_gain import crank_force_gain
 from .reductions import worst_of
 
 #: The worst transmission angle of :mod:`.reductions`, the same code compiled for the kernels' scalars.
 _worst_of = numba.njit(cache=True, error_model="numpy", nogil=True)(worst_of)
+#: The compactor's crank force gain of :mod:`.force_gain`, the same code compiled for the kernels' scalars.
+_crank_force_gain = numba.njit(cache=True, error_model="numpy", nogil=True)(crank_force_gain)
 
 #: |normalised determinant| below which a position is dead (machdyn.linkage.kinematics.DEAD_TOL).
 DEAD_TOL = 1e-6
@@ -133,8 +136,9 @@ def _transmission(x, ok, acos, m, out, col):
 @numba.njit(cache=True, error_model="numpy", nogil=True)
 def _plate(c, s, ok, PH, m, out, col):
     """The compactor plate's largest angle to the horizontal gamma = |wrap(theta)| (at the position of its
-    smallest cos: |theta| decreases with cos theta) and the smallest k1 = 1/|cos(theta - phi)| over the
-    pressing window PH[2] (seed 003 eq 1, eq 10), theta = atan2(s, c) as the NumPy engine's body angle."""
+    smallest cos: |theta| decreases with cos theta) and the smallest |k1| (:func:`.force_gain.crank_force_gain`
+    of theta - phi) over the pressing window PH[2] (seed 003 eq 1, eq 10), theta = atan2(s, c) as the NumPy
+    engine's body angle."""
     low = math.inf
     at = -1
     k1 = math.inf
@@ -146,7 +150,7 @@ def _plate(c, s, ok, PH, m, out, col):
         if PH[2, j] > 0.0:
             window = True
             if ok[j] > 0.5:
-                v = 1.0 / abs(math.cos(math.atan2(s[j], c[j]) - PH[0, j]))
+                v = abs(_crank_force_gain(math.atan2(s[j], c[j]) - PH[0, j]))
                 if v < k1:
                     k1 = v
     out[col] = abs(_pymod(math.atan2(s[at], c[at]) + math.pi, TWO_PI) - math.pi) if at >= 0 else -math.inf

@@ -13,6 +13,7 @@ No numba here: the text is compiled by :mod:`machdyn.linkage.fused`.
 from __future__ import annotations
 
 import hashlib
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -22,6 +23,7 @@ from .fused_dyads import EMITTERS
 from .fused_generator import Generator
 from .loads import window
 from .model import joints, output_bodies
+from .reductions import STREAMS, streams_version
 from .refs import GROUND, split_ref
 
 #: The fields of a body state, in the order of the series output.
@@ -61,8 +63,8 @@ class Generated:
         return self.texts[mode]
 
     def key(self, mode: str) -> str:
-        """The kernel's name: a hash of its text and of the dyad forms it calls."""
-        return hashlib.sha1((forms_version() + self.source(mode)).encode()).hexdigest()[:16]
+        """The kernel's name: a hash of its text and of the dyad forms and reductions it calls."""
+        return hashlib.sha1((forms_version() + streams_version() + self.source(mode)).encode()).hexdigest()[:16]
 
 
 # ---------------------------------------------------------------------------------------------- the kernel
@@ -278,23 +280,37 @@ def summary_rows(g: Generated, base: int) -> tuple[list[str], list[str]]:
     return scratch, stores
 
 
+#: How the kernel reduces each per-design force summary after "assembled" and "regular" (the order of
+#: :data:`SUMMARY_FIELDS`): the name of its reduction in :data:`.reductions.STREAMS` (the reductions of the NumPy
+#: path, one position at a time) and the value it reduces at position j; then every joint's largest force,
+#: "max_magnitude" of its squared force row.
+SUMMARY_REDUCTIONS: tuple[tuple[str, str, str], ...] = (
+    ("max_driving_torque", "max_abs", "torque"),
+    ("rms_driving_torque", "time_rms", "torque"),
+    ("mean_input_power", "time_mean", "torque * Wi[j]"),
+    ("max_shaking_force", "max_magnitude", "B_fx[j] * B_fx[j] + B_fy[j] * B_fy[j]"),
+    ("max_shaking_moment", "max_abs", "B_fm[j] - (zx * B_fy[j] - zy * B_fx[j])"),
+)
+assert tuple(f for f, _, _ in SUMMARY_REDUCTIONS) == SUMMARY_FIELDS[2:]
+
+
+def _start(how: str) -> str:
+    start = STREAMS[how].start
+    return "-math.inf" if start == -math.inf else repr(start)
+
+
 def summary_reduction(g: Generated) -> str:
-    """The per-design reduction of the summary rows into OUT[i] (:data:`SUMMARY_FIELDS`, then the joints)."""
-    n_joints = len(g.joints)
-    init = [f"jm{j} = 0.0" for j in range(n_joints)]
-    reduce = []
-    for j in range(n_joints):  # squared magnitudes: one square root per design
-        reduce += [f"if B_j{j}[j] > jm{j}:", f"    jm{j} = B_j{j}[j]"]
-    joint_out = [f"OUT[i, {len(SUMMARY_FIELDS) + j}] = math.sqrt(jm{j}) + bad" for j in range(n_joints)]
+    """The per-design reduction of the summary rows into OUT[i] (:data:`SUMMARY_FIELDS`, then the joints), each
+    by its stream of :data:`SUMMARY_REDUCTIONS` (compiled from :mod:`.reductions`, inlined)."""
+    reduced = [(how, value) for _, how, value in SUMMARY_REDUCTIONS]
+    reduced += [("max_magnitude", f"B_j{j}[j]") for j in range(len(g.joints))]  # squared: one root per design
+    init = [f"a{k} = {_start(how)}" for k, (how, _) in enumerate(reduced)]
+    steps = [f"a{k} = RS_{how}(a{k}, {value}, wt)" for k, (how, value) in enumerate(reduced)]
+    finish = [f"OUT[i, {2 + k}] = RF_{how}(a{k}, s_wsum) + bad" for k, (how, _) in enumerate(reduced)]
     return f"""
         s_asm = True
         s_reg = True
-        s_tmax = 0.0
-        s_t2 = 0.0
-        s_pw = 0.0
         s_wsum = 0.0
-        s_fmax = 0.0
-        s_mmax = 0.0
 {indent(init, 2)}
         for j in range(m):
             s_asm = s_asm and B_ok[j] > 0.5
@@ -302,28 +318,12 @@ def summary_reduction(g: Generated) -> str:
             torque = B_t[j]
             if not math.isfinite(torque):
                 s_reg = False
-            at = abs(torque)
-            if at > s_tmax:
-                s_tmax = at
             wt = DW[j] / abs(Wi[j]) if weighted else DW[j]
             s_wsum += wt
-            s_t2 += torque * torque * wt
-            s_pw += torque * Wi[j] * wt
-            sf = B_fx[j] * B_fx[j] + B_fy[j] * B_fy[j]
-            if sf > s_fmax:
-                s_fmax = sf
-            sm = abs(B_fm[j] - (zx * B_fy[j] - zy * B_fx[j]))
-            if sm > s_mmax:
-                s_mmax = sm
-{indent(reduce, 3)}
+{indent(steps, 3)}
         ok = s_asm and s_reg
         bad = 0.0 if ok else math.nan
         OUT[i, 0] = 1.0 if s_asm else 0.0
         OUT[i, 1] = 1.0 if ok else 0.0
-        OUT[i, 2] = s_tmax + bad
-        OUT[i, 3] = math.sqrt(s_t2 / s_wsum) + bad if s_wsum > 0.0 else math.nan
-        OUT[i, 4] = s_pw / s_wsum + bad if s_wsum > 0.0 else math.nan
-        OUT[i, 5] = math.sqrt(s_fmax) + bad
-        OUT[i, 6] = s_mmax + bad
-{indent(joint_out, 2)}
+{indent(finish, 2)}
 """

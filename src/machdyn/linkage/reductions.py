@@ -3,9 +3,10 @@
 A result of a linkage is a series (the driving torque, a joint's force, a transmission angle, for one design
 over the crank positions, or for N designs x M positions) and one of the reductions below, taken along the last
 axis. The run's results (:mod:`machdyn.results.linkage`), the engine's design sweep (:mod:`.sweep`), the
-population evaluator (:mod:`machdyn.results.population`) and the compiled population kernels (:mod:`.fused_reduce`,
-which compiles :func:`worst_of` with numba) all reduce through this module; the catalogue of results names each
-reduction by its key in :data:`REDUCTIONS`.
+population evaluator (:mod:`machdyn.results.population`) and the compiled kernels (:mod:`.fused_reduce`, which
+compiles :func:`worst_of` with numba, and the force summaries of :mod:`.fused_source`, which call the streaming
+forms :data:`STREAMS` compiled from this module) all reduce through this module; the catalogue of results names
+each reduction by its key in :data:`REDUCTIONS`.
 
 Positions where a design does not assemble are NaN and are left out of the extremes; a design with no value
 at any position gives NaN (not numpy's warning). Means and RMS are over time, not crank angle
@@ -14,10 +15,12 @@ at any position gives NaN (not numpy's warning). Means and RMS are over time, no
 
 from __future__ import annotations
 
+import hashlib
 import math
 import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -138,8 +141,102 @@ REDUCTIONS: dict[str, Reduction] = {
     "harmonic_phase": Reduction("phase of the n-th harmonic over one turn"),
     "cycle": Reduction("a figure of the whole cycle"),
     "count": Reduction("a count over the cycle"),
-    "value": Reduction("one value per design (no reduction)"),
+    "scalar": Reduction("a single figure per design, not a series over the positions"),
 }
+
+
+# ------------------------------------------------------------------------ the same reductions, one position at a time
+
+
+def _keep_larger(acc: float, value: float, weight: float) -> float:
+    return value if value > acc else acc  # a NaN value never wins, as numpy.nanmax leaves it out
+
+
+def _keep_larger_magnitude(acc: float, value: float, weight: float) -> float:
+    size = abs(value)
+    return size if size > acc else acc
+
+
+def _add_weighted(acc: float, value: float, weight: float) -> float:
+    return acc + value * weight
+
+
+def _add_weighted_square(acc: float, value: float, weight: float) -> float:
+    return acc + value * value * weight
+
+
+def _as_is(acc: float, total: float) -> float:
+    return acc
+
+
+def _weighted_mean(acc: float, total: float) -> float:
+    return acc / total if total > 0.0 else math.nan
+
+
+def _weighted_rms(acc: float, total: float) -> float:
+    return math.sqrt(acc / total) if total > 0.0 else math.nan
+
+
+def _root(acc: float, total: float) -> float:
+    return math.sqrt(acc)
+
+
+@dataclass(frozen=True)
+class Stream:
+    """A reduction taken one crank position at a time, for a compiled kernel that never holds the series:
+    ``start`` the accumulator before the first position, ``step(acc, value, weight)`` it after one more
+    position whose ``value`` stands for ``weight`` of the time (:func:`.averages.time_weights` up to a common
+    factor), ``finish(acc, total)`` the result from the accumulator and the sum of the weights. Plain float
+    arithmetic: the population kernels compile these very functions with numba (:func:`compiled_streams`), and
+    a test holds each to its array form of :data:`REDUCTIONS` to 1e-12."""
+
+    start: float
+    step: Callable[[float, float, float], float]
+    finish: Callable[[float, float], float]
+
+
+#: The reductions of :data:`REDUCTIONS` the compiled population kernels take, one position at a time, by the
+#: same names; "max_magnitude" is "max" of a vector series' magnitude fed as its square (one square root per
+#: design instead of one per position: the root is monotonic, so the largest square's root is the largest
+#: magnitude).
+STREAMS: dict[str, Stream] = {
+    "max": Stream(-math.inf, _keep_larger, _as_is),
+    "max_abs": Stream(0.0, _keep_larger_magnitude, _as_is),
+    "time_mean": Stream(0.0, _add_weighted, _weighted_mean),
+    "time_rms": Stream(0.0, _add_weighted_square, _weighted_rms),
+    "max_magnitude": Stream(0.0, _keep_larger, _root),
+}
+
+
+def streamed(values: Any, how: str, weights: Any) -> float:
+    """One series ``values`` reduced by the stream ``how`` of :data:`STREAMS` in plain Python, position by
+    position with the time ``weights`` of each (what a compiled kernel does for one design)."""
+    stream = STREAMS[how]
+    acc, total = stream.start, 0.0
+    for value, weight in zip(np.asarray(values, dtype=float).tolist(), np.asarray(weights, dtype=float).tolist(),
+                             strict=True):
+        acc = stream.step(acc, value, weight)
+        total += weight
+    return stream.finish(acc, total)
+
+
+def compiled_streams() -> dict[str, Any]:
+    """The functions of :data:`STREAMS` compiled by numba, inlined into the kernels that call them, under the
+    names the generated code calls them by (``RS_<name>`` steps, ``RF_<name>`` finishes). numba is imported
+    here only."""
+    import numba
+
+    jit = numba.njit(inline="always", error_model="numpy", nogil=True)
+    out: dict[str, Any] = {}
+    for name, stream in STREAMS.items():
+        out[f"RS_{name}"] = jit(stream.step)
+        out[f"RF_{name}"] = jit(stream.finish)
+    return out
+
+
+def streams_version() -> str:
+    """A hash of this module's text: a compiled kernel that inlined the streams is valid for this text only."""
+    return hashlib.sha1(Path(__file__).read_bytes()).hexdigest()[:16]
 
 
 def reduce(values: Any, how: str, kin: Any = None) -> np.ndarray:

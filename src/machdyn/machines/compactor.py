@@ -26,6 +26,7 @@ from ..constants import DOWNWARD_GRAVITY
 from ..errors import AssemblyError, InputError, check_finite, check_positive
 from ..linkage import energy, four_bar, kinematics
 from ..linkage.extremes import refine_extreme
+from ..linkage.force_gain import crank_force_gain
 from ..linkage.model import PointForce
 
 __all__ = [
@@ -215,11 +216,8 @@ def line_angle_printed(m1, m2):
 
 
 def force_gain_crank(alpha):
-    """Seed 003 force gain k1 = 1 / cos α (eq 1 and Fig. 3b).
-
-    Exact meaning (repro 003.3): by virtual work, a crank force P tangential at A (P = driving torque / r)
-    balances a force P / cos α **normal to the plate at A** (V_A · n_plate = r ω1 cos α). It is not
-    the force along the plate (that would be P / sin α).
+    """Seed 003 force gain k1 = 1 / cos α (eq 1 and Fig. 3b), with the angle checked finite: the engine's
+    :func:`machdyn.linkage.force_gain.crank_force_gain`, where its meaning is given (repro 003.3).
 
     Parameters
     ----------
@@ -237,7 +235,7 @@ def force_gain_crank(alpha):
     2.0
     """
     check_finite("angle alpha", alpha, "rad")
-    return 1.0 / np.cos(alpha)
+    return crank_force_gain(alpha)
 
 
 def force_gain_lever(l, a):

@@ -8,8 +8,9 @@ from typing import Any
 import numpy as np
 from markupsafe import escape
 
+from ..results.labels import display_factor
 from ..studies.optimisation.study import show_value
-from .html import _render, figures_html, format_value, rows_html
+from .html import _render, figures_html, format_value, pretty_unit, rows_html
 from .spaces import optimum_beside_nominal, pareto_space
 
 
@@ -67,9 +68,10 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
                                "objectives.", (6.0, 4.2), lambda fig: plot_pareto(result, fig.subplots()),
                                margins=(0.9, 0.2, 0.55, 0.3)))
     rows = []
-    for name, lo, hi, x, unit in zip(result.names, result.lower, result.upper, result.x, result.units, strict=True):
-        show = show_value(unit)
-        rows.append([name, show(lo), show(hi), show(x)])
+    for name, lo, hi, x, unit, shown in zip(result.names, result.lower, result.upper, result.x, result.units,
+                                            result.display_units, strict=True):
+        factor = display_factor(unit, shown)  # in the unit the file gave the variable in
+        rows.append([name, *(f"{format_value(v * factor)} {pretty_unit(shown)}".rstrip() for v in (lo, hi, x))])
     table = rows_html(rows, ["variable", "lower", "upper", "best design"])
     res_rows = []
     for o in result.objectives:

@@ -34,7 +34,8 @@ def sections(outcome: Any) -> list[tuple[str, str]]:
                  sweep_section(plan.parameter, plan.display_unit, plan.values_display, run.columns, run.units,
                                panels=shown, intro=intro))]
     return [(f"Design sweep of {plan.parameter}",
-             sweep_space(run) + sweep_section(plan.parameter, plan.display_unit, plan.values_display, run.columns,
+             # str(): Markup + str would escape the plots and the table that follow the scatter
+             str(sweep_space(run)) + sweep_section(plan.parameter, plan.display_unit, plan.values_display, run.columns,
                                               run.units))]
 
 

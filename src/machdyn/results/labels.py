@@ -20,12 +20,21 @@ class Label:
 
     ``zero_below`` names a result whose magnitude sets the round-off scale of this one: a value smaller than
     1e-9 of it vanishes in exact arithmetic (the mean torque over a loss-free cycle) and is shown as 0.
+
+    A capability declares its results with two more fields, which the catalogue of results
+    (:mod:`machdyn.results.catalogue`) reads: ``over``, how the result reduces a series over the crank positions
+    (a name of :data:`machdyn.linkage.reductions.REDUCTIONS`: "max_abs", "time_rms", "cycle", ... or "scalar" for
+    a figure that is no series' reduction), and ``better``, which way a design is better by it ("lower",
+    "higher", "target" for nearest a value the designer sets, "none", or "true" for a yes/no check). Both are ""
+    on a label made at run time, whose result the catalogue declares by its pattern.
     """
 
     text: str
     unit: str = ""
     display: str | None = None
     zero_below: str | None = None
+    over: str = ""
+    better: str = ""
 
     @property
     def shown_unit(self) -> str:

@@ -43,6 +43,7 @@ from ..errors import InputError
 from ..linkage import analyse, kinematics, sweep
 from ..linkage.diagnostics import full_turn_stroke, time_ratio
 from ..linkage.engines import available, check_engine
+from ..linkage.force_gain import crank_force_gain
 from ..linkage.fused_population import run_population
 from ..linkage.fused_source import SUMMARY_FIELDS
 from ..linkage.grashof import grashof_margin, grashof_type
@@ -470,7 +471,7 @@ def _compactor_results(mech, kin, phi, ok, shape) -> dict[str, np.ndarray]:
     cols = np.flatnonzero(np.broadcast_to(np.asarray(window(phi, active), dtype=float), phi.shape) > 0)
     # k1 only where the plate presses (the window's crank angles): alpha = theta2 - phi.
     alpha = theta2[:, cols] - np.broadcast_to(kin.body(mech.crank.body).angle, shape)[:, cols]
-    k1 = 1.0 / np.abs(np.cos(alpha))
+    k1 = np.abs(crank_force_gain(alpha))
     k1_min = np.where(ok[:, cols], k1, np.inf).min(axis=1) if cols.size else np.full(shape[0], np.nan)
     return {
         "compactor.plate_angle.max": np.where(ok, gamma, -np.inf).max(axis=1),

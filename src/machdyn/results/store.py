@@ -6,6 +6,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
+from ..notebook import ShownInNotebook
 from .catalogue import label_for
 from .labels import Label, display_factor
 
@@ -19,7 +20,7 @@ def _scaled(value: Any, factor: float) -> Any:
 
 
 @dataclass(frozen=True)
-class Results:
+class Results(ShownInNotebook):
     """Every scalar result of a run in SI: ``values[key]`` (a float, or one value per design variant) and the
     :class:`~machdyn.results.labels.Label` of each key (text, SI unit, display unit)."""
 

@@ -8,6 +8,7 @@ from typing import Any
 
 import numpy as np
 
+from ..notebook import ShownInNotebook
 from .store import Results
 
 
@@ -22,7 +23,7 @@ class SummaryRow:
 
 
 @dataclass(frozen=True)
-class Summary:
+class Summary(ShownInNotebook):
     """The summary table of a run (its heading and rows)."""
 
     title: str

@@ -11,6 +11,7 @@ from typing import Any
 from pydantic import Field
 
 from ..errors import InputError, ProblemFileError
+from ..notebook import ShownInNotebook
 from ..pipeline import Capability, Outcome, StageContext
 from ..problem.fields import Angle, PositiveMass
 from ..problem.schema import Name, Spec
@@ -48,7 +49,7 @@ class FieldRecordsSpec(Spec):
 
 
 @dataclass(frozen=True)
-class RecordBalance:
+class RecordBalance(ShownInNotebook):
     """The runs read from the records and the balance computed from them."""
 
     original: RunRecord
@@ -153,7 +154,7 @@ CAPABILITY = Capability(
     step="field balancing from records",
     kinds=("shaft_line",),
     labels={"shaft.records.speed": Label("Field balancing from records: shaft speed of the original run", "rad/s",
-                                         "rpm")},
+                                         "rpm", over="scalar", better="none")},
     report="machdyn.report.shafts:record_sections",
     check=check,
     result_type=RecordBalance,

@@ -186,8 +186,9 @@ class SweepSpec(BaseModel):
 
     @property
     def goal(self) -> str:
-        """The per-design result that ranks the designs (lowest is best): ``objective`` (its catalogue key) or
-        the peak driving torque."""
+        """The per-design result that ranks the designs, best first by its declared better direction
+        (:func:`machdyn.results.catalogue.better_of`): ``objective`` (its catalogue key) or the peak driving
+        torque."""
         return canonical(self.objective) if self.objective else DEFAULT_OBJECTIVE
 
     @property

@@ -18,21 +18,22 @@ from ..errors import InputError
 from ..pipeline import Outcome, ProblemKind, Step
 from ..results.labels import Label
 from .files import problem_text
-from .rank import QUANTITIES
+from .rank import QUANTITIES, REDUCTION_OF
 from .schema import SynthesisProblem, problems
 from .slotted_task import outcome as slotted_outcome
 from .task import synthesise
 
 LABELS: dict[str, Label] = {
-    "synthesis.candidates": Label("Candidates synthesised"),
-    "synthesis.defect_free": Label("Candidates free of defects"),
-    "synthesis.best.crank": Label("Best: crank length", "m", "mm"),
-    "synthesis.best.coupler": Label("Best: coupler (rod) length", "m", "mm"),
-    "synthesis.best.rocker": Label("Best: rocker length", "m", "mm"),
-    "synthesis.best.ground": Label("Best: ground length", "m", "mm"),
-    "synthesis.best.offset": Label("Best: slider offset", "m", "mm"),
-    **{f"synthesis.best.{k}": Label(f"Best: {text[0].lower()}{text[1:]}", unit) for k, (text, unit, _) in
-       QUANTITIES.items() if k != "error"},
+    "synthesis.candidates": Label("Candidates synthesised", over="count", better="higher"),
+    "synthesis.defect_free": Label("Candidates free of defects", over="count", better="higher"),
+    "synthesis.best.crank": Label("Best: crank length", "m", "mm", over="scalar", better="none"),
+    "synthesis.best.coupler": Label("Best: coupler (rod) length", "m", "mm", over="scalar", better="none"),
+    "synthesis.best.rocker": Label("Best: rocker length", "m", "mm", over="scalar", better="none"),
+    "synthesis.best.ground": Label("Best: ground length", "m", "mm", over="scalar", better="none"),
+    "synthesis.best.offset": Label("Best: slider offset", "m", "mm", over="scalar", better="none"),
+    **{f"synthesis.best.{k}": Label(f"Best: {text[0].lower()}{text[1:]}", unit, over=REDUCTION_OF[k],
+                                    better="higher" if larger else "lower")
+       for k, (text, unit, larger) in QUANTITIES.items() if k != "error"},
 }
 
 

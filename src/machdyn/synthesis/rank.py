@@ -65,6 +65,14 @@ QUANTITIES: dict[str, tuple[str, str, bool]] = {
     "error": ("Kinematic error at the positions", "", False),
 }
 
+#: How each rankable quantity reduces its series over the positions (a name of
+#: :data:`machdyn.linkage.reductions.REDUCTIONS`): the catalogue's, "scalar" for the flywheel and the error.
+REDUCTION_OF: dict[str, str] = {
+    **{name: find(key)[0].over_positions for name, key in AS_RESULTS.items()},  # type: ignore[index]
+    "flywheel_inertia": "scalar",
+    "error": "max_abs",
+}
+
 CHUNK_POSITIONS = 1 << 17
 
 

@@ -52,18 +52,26 @@ def dq_motor(spec: MotorSpec, drive: Any) -> InductionMachine:
 
 
 MOTOR_LABELS = {
-    "transient.motor_peak_torque": Label("Transient motor: peak electromagnetic torque (motor shaft)", "N*m"),
-    "transient.motor_peak_current": Label("Transient motor: peak stator phase current (amplitude)", "A"),
+    "transient.motor_peak_torque": Label("Transient motor: peak electromagnetic torque (motor shaft)", "N*m",
+                                         over="max_abs", better="lower"),
+    "transient.motor_peak_current": Label("Transient motor: peak stator phase current (amplitude)", "A",
+                                          over="max_abs", better="lower"),
     "transient.motor_breakdown_torque": Label("Transient motor: breakdown torque of its steady state "
-                                              "(motor shaft)", "N*m"),
+                                              "(motor shaft)", "N*m", over="scalar", better="higher"),
     "transient.motor_starting_torque": Label("Transient motor: starting torque of its steady state (motor shaft)",
-                                             "N*m"),
-    "transient.motor_electrical_input": Label("Transient motor: electrical energy into the stator", "J"),
-    "transient.motor_copper_loss": Label("Transient motor: copper loss (stator and rotor)", "J"),
-    "transient.motor_switching_loss": Label("Transient motor: magnetic energy lost at the switch-off", "J"),
-    "transient.motor_magnetic_energy_change": Label("Transient motor: change of the magnetic energy", "J"),
-    "transient.motor_gear_loss": Label("Transient motor: loss in the gear to the crank", "J"),
-    "transient.motor_energy_error": Label("Transient motor: electrical energy balance error (relative)", ""),
+                                             "N*m", over="scalar", better="higher"),
+    "transient.motor_electrical_input": Label("Transient motor: electrical energy into the stator", "J",
+                                              over="scalar", better="lower"),
+    "transient.motor_copper_loss": Label("Transient motor: copper loss (stator and rotor)", "J",
+                                         over="scalar", better="lower"),
+    "transient.motor_switching_loss": Label("Transient motor: magnetic energy lost at the switch-off", "J",
+                                            over="scalar", better="lower"),
+    "transient.motor_magnetic_energy_change": Label("Transient motor: change of the magnetic energy", "J",
+                                                    over="scalar", better="none"),
+    "transient.motor_gear_loss": Label("Transient motor: loss in the gear to the crank", "J",
+                                       over="scalar", better="lower"),
+    "transient.motor_energy_error": Label("Transient motor: electrical energy balance error (relative)", "",
+                                          over="scalar", better="lower"),
 }
 
 MOTOR_SUMMARY = ("transient.motor_peak_torque", "transient.motor_peak_current", "transient.motor_energy_error")

@@ -227,7 +227,8 @@ def outcome_of(r: ShaftTransientRun) -> Outcome:
     for m, f in zip(run.model.frame.mounts, run.mount_force, strict=True):
         key = f"transient.mount.{m.name}.peak_force"
         values[key] = float(np.abs(f).max())
-        labels[key] = Label(f"Transient: largest dynamic force of mount {m.name}", "N")
+        labels[key] = Label(f"Transient: largest dynamic force of mount {m.name}", "N", over="max_abs",
+                            better="lower")
     if math.isfinite(r.free_speed):
         values["transient.free_speed"] = r.free_speed
         if run.scenario.prescribed is None and r.table.start_speed == 0.0:

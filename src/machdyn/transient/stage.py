@@ -17,6 +17,7 @@ from ..dynamics.drives import ConstantSpeed
 from ..dynamics.simulate import balance_speed
 from ..dynamics.stage import FlywheelRun
 from ..errors import InputError, ProblemFileError
+from ..notebook import ShownInNotebook
 from ..pipeline import Capability, Outcome, StageContext
 from ..problem.fields import Angle, AngularAcceleration, AngularVelocity, Point, Time, Torque
 from ..problem.schema import Name, Spec
@@ -111,30 +112,42 @@ class TransientTable(Spec):
 
 
 LABELS = {
-    "transient.final_speed": Label("Transient: crank speed at the end (mean over the last turn)", "rad/s", "rpm"),
-    "transient.free_speed": Label("Transient: speed the drive holds on a rigid frame", "rad/s", "rpm"),
-    "transient.captured": Label("Transient: drive captured by a frame resonance (1 = yes, Sommerfeld effect)", ""),
-    "transient.peak_amplitude": Label("Transient: largest frame displacement at the point", "m", "mm"),
-    "transient.peak_mount_force": Label("Transient: largest dynamic mount force", "N"),
+    "transient.final_speed": Label("Transient: crank speed at the end (mean over the last turn)", "rad/s", "rpm",
+                                   over="cycle", better="none"),
+    "transient.free_speed": Label("Transient: speed the drive holds on a rigid frame", "rad/s", "rpm", over="cycle",
+                                  better="none"),
+    "transient.captured": Label("Transient: drive captured by a frame resonance (1 = yes, Sommerfeld effect)", "",
+                                over="scalar", better="lower"),
+    "transient.peak_amplitude": Label("Transient: largest frame displacement at the point", "m", "mm", over="max_abs",
+                                      better="lower"),
+    "transient.peak_mount_force": Label("Transient: largest dynamic mount force", "N", over="max_abs", better="lower"),
     "transient.peak_rotation": Label("Transient: largest rotation of the frame (six degrees of freedom)", "rad",
-                                     "mrad"),
+                                     "mrad", over="max_abs", better="lower"),
     "transient.passage_peak_amplitude": Label("Transient: largest displacement in a resonance passage", "m",
-                                              "mm"),
-    "transient.passage_peak_mount_force": Label("Transient: largest mount force in a resonance passage", "N"),
-    "transient.passage_time": Label("Transient: time spent within the band of the frame's modes", "s"),
+                                              "mm", over="max_abs", better="lower"),
+    "transient.passage_peak_mount_force": Label("Transient: largest mount force in a resonance passage", "N",
+                                                over="max_abs", better="lower"),
+    "transient.passage_time": Label("Transient: time spent within the band of the frame's modes", "s", over="scalar",
+                                    better="lower"),
     "transient.steady_amplitude": Label("Transient: displacement at the point over the last turn under the motor",
-                                        "m", "mm"),
-    "transient.time_to_speed": Label("Transient: time to 95 % of the speed the drive holds on a rigid frame", "s"),
-    "transient.stop_time": Label("Transient: time at which the crank comes to rest", "s"),
-    "transient.motor_work": Label("Transient: work of the drive", "J"),
-    "transient.load_work": Label("Transient: work done on the process loads and dampers of the mechanism", "J"),
-    "transient.mount_dissipation": Label("Transient: energy dissipated in the mounts", "J"),
-    "transient.brake_dissipation": Label("Transient: energy dissipated in the brake", "J"),
-    "transient.energy_change": Label("Transient: change of kinetic plus potential energy", "J"),
-    "transient.energy_error": Label("Transient: energy balance error (relative)", ""),
-    "transient.evaluations": Label("Transient: evaluations of the equations of motion", ""),
+                                        "m", "mm", over="range", better="lower"),
+    "transient.time_to_speed": Label("Transient: time to 95 % of the speed the drive holds on a rigid frame", "s",
+                                     over="scalar", better="lower"),
+    "transient.stop_time": Label("Transient: time at which the crank comes to rest", "s", over="scalar", better="none"),
+    "transient.motor_work": Label("Transient: work of the drive", "J", over="scalar", better="none"),
+    "transient.load_work": Label("Transient: work done on the process loads and dampers of the mechanism", "J",
+                                 over="scalar", better="none"),
+    "transient.mount_dissipation": Label("Transient: energy dissipated in the mounts", "J", over="scalar",
+                                         better="none"),
+    "transient.brake_dissipation": Label("Transient: energy dissipated in the brake", "J", over="scalar",
+                                         better="none"),
+    "transient.energy_change": Label("Transient: change of kinetic plus potential energy", "J", over="scalar",
+                                     better="none"),
+    "transient.energy_error": Label("Transient: energy balance error (relative)", "", over="scalar", better="lower"),
+    "transient.evaluations": Label("Transient: evaluations of the equations of motion", "", over="count",
+                                   better="none"),
     "transient.phase_difference": Label("Transient: phase of the crank less the twin's over the last turn "
-                                        "(synchronised exciters)", "rad", "deg"),
+                                        "(synchronised exciters)", "rad", "deg", over="cycle", better="none"),
     **MOTOR_LABELS,
     **TORSION_LABELS,
 }
@@ -146,7 +159,7 @@ SUMMARY = ("transient.final_speed", "transient.captured", "transient.phase_diffe
 
 
 @dataclass(frozen=True)
-class TransientRun:
+class TransientRun(ShownInNotebook):
     """Everything the ``[transient]`` stage computed (SI), for the report and the Python API."""
 
     table: Any

@@ -20,11 +20,13 @@ TORSION_TOLERANCE = 1e-6
 
 TORSION_LABELS = {
     "transient.shaft_peak_torque": Label("Transient: largest torque through a stiff stage (at its output shaft)",
-                                         "N*m"),
+                                         "N*m", over="max_abs", better="lower"),
     "transient.torsion_natural_frequency": Label("Transient: natural frequency of the drive line's two inertias "
-                                                 "(one stiff stage)", "Hz"),
-    "transient.shaft_damper_loss": Label("Transient: energy dissipated in the stiff stages' dampers", "J"),
-    "transient.shaft_energy_error": Label("Transient: drive line energy balance error (relative)", ""),
+                                                 "(one stiff stage)", "Hz", over="scalar", better="none"),
+    "transient.shaft_damper_loss": Label("Transient: energy dissipated in the stiff stages' dampers", "J",
+                                         over="scalar", better="none"),
+    "transient.shaft_energy_error": Label("Transient: drive line energy balance error (relative)", "",
+                                          over="scalar", better="lower"),
 }
 
 TORSION_SUMMARY = ("transient.shaft_peak_torque", "transient.torsion_natural_frequency")
@@ -46,7 +48,8 @@ def torsion_scalars(torsion: TorsionRun, crank_inertia: float) -> dict[str, floa
 def torsion_labels(torsion: TorsionRun) -> dict[str, Label]:
     """The labels of the per-stage keys made at run time."""
     return {f"transient.stage_{stage + 1}.peak_torque":
-            Label(f"Transient: peak torque through stage {stage + 1} ({name}), at its output shaft", "N*m")
+            Label(f"Transient: peak torque through stage {stage + 1} ({name}), at its output shaft", "N*m",
+                  over="max_abs", better="lower")
             for stage, name in zip(torsion.line.stages, torsion.line.names, strict=True)}
 
 

@@ -21,6 +21,7 @@ from ..constants import DOWNWARD_GRAVITY
 from ..errors import InputError
 from ..linkage import analyse
 from ..linkage.model import PointMass, Spring
+from ..notebook import ShownInNotebook
 from .frame import Frame, Mount, rope, rubber_mount, tyre
 from .modes import Modes, modes
 from .orders import band_order_warnings
@@ -86,7 +87,7 @@ def with_variant(mechanism, variant):
 
 
 @dataclass(frozen=True)
-class FrameStudy:
+class FrameStudy(ShownInNotebook):
     """Frame, modes, responses before (the analysed mechanism) and after (the variant, or None), the named
     ``points``, the measuring ``direction`` [rad] (None: vector), the ``band`` [Hz], RMS ``comparison``s of
     acceleration and velocity, and the predicted ``severity`` per point (before, after)."""
@@ -164,7 +165,7 @@ def _banded_compare(before, after, points, quantity, direction, band) -> Compari
 
 
 @dataclass(frozen=True)
-class SignalStudy:
+class SignalStudy(ShownInNotebook):
     """Measured records analysed and judged: ``before`` (and ``after``) analyses, the severity of each channel,
     the reduction per channel [%] and the predicted RMS velocity [m/s] at channels named like frame points.
 

@@ -1,7 +1,8 @@
 """What an exploration keeps in memory however many designs it has: counts, the best designs and a bounded
 uniform sample of the regular designs, merged partition by partition.
 
-The best designs are the ``best`` regular designs with the lowest objective (ties broken by design number); the
+The best designs are the ``best`` regular designs best by the objective's declared direction (the lowest of a
+result of which less is better, the highest of one of which more is; ties broken by design number); the
 sample is the ``sample`` regular designs with the lowest random keys, each design's key drawn from its
 partition's own generator (seeded with the partition index), so the sample is uniform without replacement and
 the same whatever the order in which partitions finish or are read back from disk (a resumed run gives the same
@@ -13,6 +14,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+
+from ...results.catalogue import as_cost
 
 BEST = 20
 SAMPLE = 2000
@@ -30,11 +33,12 @@ def _concat(a: dict[str, np.ndarray], b: dict[str, np.ndarray]) -> dict[str, np.
     return {k: np.concatenate([a[k], b[k]]) for k in a}
 
 
-def _lowest(columns: dict[str, np.ndarray], key: str, count: int) -> dict[str, np.ndarray]:
-    """The ``count`` rows with the lowest ``key`` (ties by design number), in that order."""
+def _lowest(columns: dict[str, np.ndarray], key: str, count: int, better: str = "lower") -> dict[str, np.ndarray]:
+    """The ``count`` rows best by ``key`` (the lowest, or the highest when ``better`` is "higher"; ties by design
+    number), in that order."""
     if not columns:
         return {}
-    order = np.lexsort((columns["design"], columns[key]))[:count]
+    order = np.lexsort((columns["design"], as_cost(columns[key], better)))[:count]
     return _take(columns, order)
 
 
@@ -44,6 +48,8 @@ class Digest:
     ``_key`` column) of the designs seen so far."""
 
     objective: str
+    #: the objective's declared better direction (:data:`machdyn.results.catalogue.BETTER`)
+    better: str = "lower"
     designs: int = 0
     assembled: int = 0
     regular: int = 0
@@ -61,7 +67,7 @@ class Digest:
         rows = np.flatnonzero(regular)
         feasible = _take(columns, rows)
         keys = np.random.default_rng([seed, index, 1]).random(columns["design"].size)[rows]
-        self.best = _lowest(_concat(self.best, feasible), self.objective, self.best_size)
+        self.best = _lowest(_concat(self.best, feasible), self.objective, self.best_size, self.better)
         self.sample = _lowest(_concat(self.sample, {**feasible, "_key": keys}), "_key", self.sample_size)
 
     def sample_in_design_order(self) -> dict[str, np.ndarray]:

@@ -26,6 +26,8 @@ from rich.progress import BarColumn, MofNCompleteColumn, TextColumn, TimeRemaini
 from rich.progress import Progress as RichProgress
 
 from ...errors import InputError, OperationalError
+from ...kinds import catalogue
+from ...results.catalogue import better_of
 from .digest import Digest
 from .evaluate import ExplorePlan, evaluate_partition
 from .sampling import partition_designs
@@ -211,7 +213,7 @@ def run_partitions(
     stops the run; the partitions written stay and a later run resumes from them)."""
     started = time.perf_counter()
     space = plan.space
-    digest = Digest(plan.objective)
+    digest = Digest(plan.objective, better_of(plan.objective, catalogue()))
     have: set[int] = set()
     done = 0
     for index in sorted(store.done()):

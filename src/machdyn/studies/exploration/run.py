@@ -24,6 +24,7 @@ import numpy as np
 
 from ...errors import ProblemFileError
 from ...linkage.sweep import DEFAULT_CHUNK_POSITIONS
+from ...notebook import ShownInNotebook
 from ...problem.build import build_mechanism, crank_angles
 from ...problem.errors import did_you_mean
 from ...reading import read_problem
@@ -82,7 +83,7 @@ def column_units(plan: ExplorePlan, columns: list[str]) -> dict[str, tuple[str, 
 
 
 @dataclass(frozen=True)
-class Exploration:
+class Exploration(ShownInNotebook):
     """An explored design space: the plan, the Parquet folder holding every design (``store``), the digest
     (counts, best designs, a bounded sample of the regular designs), partitions computed now and reused from
     disk, the seconds it took and where it ran, and the (SI unit, label) of every column."""

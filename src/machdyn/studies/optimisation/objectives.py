@@ -15,7 +15,7 @@ import numpy as np
 
 from ...errors import ProblemFileError
 from ...problem.fields import FieldError, Unit, to_si
-from ...results.catalogue import canonical
+from ...results.catalogue import Quantity, against, better_of, canonical
 from ...results.names import did_you_mean_result, results_to_choose
 from .schema import ObjectiveSpec
 
@@ -46,6 +46,25 @@ class Objective:
         if self.sense == "target":
             return f"bring {self.result} to {self.target:g} {self.unit}".rstrip()
         return f"{self.sense} {self.result}"
+
+
+def direction_advice(specs: list[ObjectiveSpec], entries: tuple[Quantity, ...]) -> list[str]:
+    """A warning for each objective whose sense works against its result's declared better direction (the
+    catalogue ``entries``, :func:`machdyn.kinds.catalogue`): minimising a result of which more is better, or
+    maximising one of which less is. The objective is kept as written: a designer may mean it (the worst case)."""
+    out = []
+    for i, spec in enumerate(specs):
+        if spec.target is not None:
+            continue
+        key = canonical(spec.result)
+        sense = SENSES[spec.sense]
+        better = better_of(key, entries)
+        if against(sense, better):
+            other = "maximise" if sense == "minimise" else "minimise"
+            out.append(f"optimise.objectives[{i}]: sense = \"{sense}\" on {key}, whose better direction is "
+                       f"{better} (docs/results.md): the search looks for the design that is worst by it; write "
+                       f"sense = \"{other}\" if the best was meant.")
+    return out
 
 
 def unknown_result(name: str, names: list[str]) -> str:

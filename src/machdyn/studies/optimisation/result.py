@@ -8,6 +8,7 @@ from typing import Any
 import numpy as np
 
 from ...errors import InputError
+from ...notebook import ShownInNotebook
 
 
 class NoFeasibleDesign(InputError):
@@ -28,7 +29,7 @@ class History:
 
 
 @dataclass(frozen=True)
-class OptimiseResult:
+class OptimiseResult(ShownInNotebook):
     """What :func:`machdyn.studies.optimisation.optimise` found.
 
     ``x`` the best design's variables (SI, in the order of ``names``); ``results`` its per-design results

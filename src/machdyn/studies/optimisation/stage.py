@@ -17,6 +17,7 @@ from ...results.catalogue import find, label
 from ...results.labels import Label
 from ..views import analysed, design_problem
 from .evaluate import result_unit
+from .objectives import direction_advice
 from .pareto import spacing
 from .result import NoFeasibleDesign, OptimiseResult
 from .schema import OptimiseSpec
@@ -27,16 +28,21 @@ STATUS_KEYS = ("assembled", "regular", "assembled_fraction", "dead_point", "bran
                "poor_transmission")
 
 LABELS = {
-    "optimise.evaluations": Label("Optimisation: designs evaluated"),
-    "optimise.generations": Label("Optimisation: generations"),
-    "optimise.designs_per_second": Label("Optimisation: designs evaluated per second", "1/s"),
-    "optimise.converged": Label("Optimisation: converged (1 yes, 0 no)"),
-    "optimise.verified": Label("Optimisation: best design verified feasible (1 yes, 0 no)"),
-    "optimise.front_size": Label("Optimisation: designs on the Pareto front"),
-    "optimise.front_spacing": Label("Optimisation: spacing of the Pareto front (Schott; 0 = evenly spread)"),
-    "optimise.front_hypervolume": Label("Optimisation: hypervolume of the final front (normalised)"),
-    "optimise.feasible": Label("Optimisation: a feasible design was found (1 yes, 0 no)"),
-    "optimise.improved": Label("Optimisation: better than the design as given (1 yes, 0 no)"),
+    "optimise.evaluations": Label("Optimisation: designs evaluated", over="count", better="none"),
+    "optimise.generations": Label("Optimisation: generations", over="count", better="none"),
+    "optimise.designs_per_second": Label("Optimisation: designs evaluated per second", "1/s", over="scalar",
+                                         better="higher"),
+    "optimise.converged": Label("Optimisation: converged (1 yes, 0 no)", over="scalar", better="true"),
+    "optimise.verified": Label("Optimisation: best design verified feasible (1 yes, 0 no)", over="scalar",
+                               better="true"),
+    "optimise.front_size": Label("Optimisation: designs on the Pareto front", over="count", better="none"),
+    "optimise.front_spacing": Label("Optimisation: spacing of the Pareto front (Schott; 0 = evenly spread)",
+                                    over="scalar", better="lower"),
+    "optimise.front_hypervolume": Label("Optimisation: hypervolume of the final front (normalised)", over="scalar",
+                                        better="higher"),
+    "optimise.feasible": Label("Optimisation: a feasible design was found (1 yes, 0 no)", over="scalar", better="true"),
+    "optimise.improved": Label("Optimisation: better than the design as given (1 yes, 0 no)", over="scalar",
+                               better="true"),
 }
 
 
@@ -165,6 +171,7 @@ CAPABILITY = Capability(
     kinds=("mechanism", "shaft_line", "cam"),
     check=check,
     result_type=OptimiseResult,
+    advise=lambda problem, table: direction_advice(table.objectives, catalogue()),
 )
 
 

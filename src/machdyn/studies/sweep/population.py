@@ -11,6 +11,7 @@ import numpy as np
 from ...errors import ProblemFileError
 from ...limits import held_values_error
 from ...linkage import stack_designs
+from ...notebook import ShownInNotebook
 from ...pipeline import Outcome, StageContext
 from ...pipelines.linkage_run import crank_range
 from ...problem.build import build_mechanism, crank_angles, harmonics_of
@@ -28,17 +29,18 @@ RANKED = ("driving_torque.max_abs", "frame_force.max")
 
 LABELS = {
     "sweep.regular": Label("Sweep: each design regular (assembles, no dead point, branch change, near dead point "
-                           "or poor transmission)"),
-    "sweep.status": Label("Sweep: status of each design (regular or its first fault)"),
-    "sweep.designs": Label("Sweep: designs"),
-    "sweep.regular_count": Label("Sweep: regular designs"),
-    **{f"sweep.count.{fault.replace(' ', '_')}": Label(f"Sweep: designs whose first fault is: {fault}")
+                           "or poor transmission)", over="scalar", better="none"),
+    "sweep.status": Label("Sweep: status of each design (regular or its first fault)", over="scalar", better="none"),
+    "sweep.designs": Label("Sweep: designs", over="count", better="none"),
+    "sweep.regular_count": Label("Sweep: regular designs", over="count", better="higher"),
+    **{f"sweep.count.{fault.replace(' ', '_')}": Label(f"Sweep: designs whose first fault is: {fault}",
+                                                       over="count", better="lower")
        for _flag, fault in FAULTS},
 }
 
 
 @dataclass(frozen=True)
-class SweepRun:
+class SweepRun(ShownInNotebook):
     """A sweep's plan (parameter, values) and the per-design columns (catalogue keys, SI; the status columns
     ``assembled``, ``regular``, ``status``... among them)."""
 

@@ -21,8 +21,8 @@ from . import population as one_quantity
 from . import runs as sweep_runs
 
 LABELS = dict(one_quantity.LABELS) | {
-    "sweep.assembled_count": Label("Sweep: designs that assemble at every crank angle"),
-    "sweep.best": Label("Sweep: best design number"),
+    "sweep.assembled_count": Label("Sweep: designs that assemble at every crank angle", over="count", better="higher"),
+    "sweep.best": Label("Sweep: best design number", over="scalar", better="none"),
 }
 
 
