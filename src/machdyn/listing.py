@@ -25,8 +25,9 @@ from .results.labels import Label
 
 @dataclass(frozen=True)
 class Listed:
-    """One key of a run: its ``key``, the ``unit`` it is shown in, its ``meaning`` (the label) and the
-    ``better`` direction ("lower", "higher", "" for none)."""
+    """One key of a run: its ``key``, its ``unit`` (the SI unit of results.json, with the unit the summary shows
+    it in where that differs: ``rad (deg)``), its ``meaning`` (the label) and the ``better`` direction ("lower",
+    "higher", "" for none)."""
 
     key: str
     unit: str
@@ -52,7 +53,8 @@ def listed(labels: Mapping[str, Label]) -> list[Listed]:
     for key, lab in labels.items():
         quantity = _quantity(key)
         better = quantity.better if quantity is not None and quantity.better != "true" else ""
-        out.append(Listed(key, lab.shown_unit or "", lab.text, better))
+        unit = lab.unit if lab.shown_unit == lab.unit else f"{lab.unit or '–'} ({lab.shown_unit})"
+        out.append(Listed(key, unit, lab.text, better))
     return out
 
 
