@@ -122,6 +122,9 @@ class Capability:
         cycle (:func:`machdyn.linkage.kinetostatics` of a mechanism of N designs), None where it cannot stand in
         for a run of each design (the studies then run each design). Imported only by a study that asks for
         the table's results (:func:`machdyn.kinds.population_form`).
+    result_keys : ``(problem) -> {key: SI unit}``, the results a run of the table reports whose keys are made from
+        the file's own names (``parts.bearing.O.rating_life``), as for :class:`ProblemKind`: a study accepts only
+        these of the table's patterns. None: the patterns alone.
     """
 
     table: str
@@ -136,6 +139,7 @@ class Capability:
     after: tuple[str, ...] = ()
     result_type: type | tuple[type, ...] | None = None
     population: str | None = None
+    result_keys: Callable[[Any], Mapping[str, str]] | None = None
 
 
 @dataclass(frozen=True)
