@@ -1,5 +1,5 @@
 """The fuzz's seed set: every fault an adversarial pass found, run through ``machdyn check`` and ``machdyn run``
-before the generated files (this module's tests are collected first in tests/fuzz/).
+before the generated files (this module sorts, and so runs, before test_fuzz_problem_files.py).
 
 Each seed is a reproduction of :mod:`reproductions` (the same text its own regression test checks in words), with
 the folder it runs in where that is part of the fault (a planted list of outputs, a folder that looks like an
