@@ -1,6 +1,7 @@
 """Problem files that reproduce faults an adversarial pass found, written once: each fault's own test imports its
-file from here to check what check and run say, and the fuzz's seed set (tests/fuzz/test_fuzz_known_faults.py) runs every
-one of them through check and run before the generated files. Import as ``from reproductions import feeder_with``.
+file from here to check what check and run say, and the fuzz's seed set (tests/fuzz/test_fuzz_known_faults.py)
+runs every one of them through check and run before the generated files. Import as
+``from reproductions import feeder_with``.
 
 Each is a shipped example with the smallest change that shows the fault.
 """
