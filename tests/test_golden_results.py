@@ -1,9 +1,11 @@
 """Every shipped example's results.json matches the recorded one, value by value, to 1e-12 relative.
 
-The recorded files in ``tests/golden/`` were written by the analysis before the results stage was restructured;
-a result may since be stored in another unit of the same dimension (the conveyor now keeps SI), so values are
-compared after conversion with pint. A result renamed since is found under its new key through the one
-documented mapping, :func:`machdyn.results.catalogue.canonical` (``shaking_force.max`` is now ``frame_force.max``,
+The recorded files in ``tests/golden/`` were written by the analysis before the results stage was restructured,
+each value in its display unit then (mm, deg, rpm, kW); since results.json became SI throughout they hold the
+same recorded values converted once to SI with pint (not recomputed), and say ``"units": "SI"``. A result whose
+unit differs between the recording and a run (none today) is still compared after conversion with pint. A result
+renamed since is found under its new key through the one documented mapping,
+:func:`machdyn.results.catalogue.canonical` (``shaking_force.max`` is now ``frame_force.max``,
 ``sweep.max_driving_torque`` is ``sweep.driving_torque.max_abs``). New results may be added; none may disappear
 or change.
 """
@@ -70,9 +72,12 @@ def _more_extreme(old: float, new: float, how: str) -> bool:
 
 @pytest.mark.parametrize("golden", GOLDEN, ids=lambda p: p.name.split(".")[0])
 def test_results_json_unchanged(golden: Path) -> None:
-    recorded = json.loads(golden.read_text(encoding="utf-8"))["scalars"]
+    recording = json.loads(golden.read_text(encoding="utf-8"))
+    recorded = recording["scalars"]
     example = ROOT / "examples" / (golden.name.split(".")[0] + ".toml")
-    now = run_problem(example).results_json()["scalars"]
+    written = run_problem(example).results_json()
+    assert recording["units"] == written["units"] == "SI"
+    now = written["scalars"]
     missing = sorted(k for k in recorded if canonical(k) not in now)
     assert not missing, f"results no longer reported: {missing}"
     changed = []

@@ -25,10 +25,10 @@ from .results.labels import Label
 
 @dataclass(frozen=True)
 class Listed:
-    """One key of a run: its ``key``, the ``unit`` it is shown in, its ``meaning`` (the label), the ``better``
-    direction ("lower", "higher", "target", "true" for a yes/no check, "" for none) and its ``reduction`` over the
-    crank positions (a name of :data:`machdyn.linkage.reductions.REDUCTIONS`, "" for a key the catalogue does not
-    know)."""
+    """One key of a run: its ``key``, its ``unit`` (the SI unit of results.json, with the unit the summary shows
+    it in where that differs: ``rad (deg)``), its ``meaning`` (the label), the ``better`` direction ("lower",
+    "higher", "target", "true" for a yes/no check, "" for none) and its ``reduction`` over the crank positions (a
+    name of :data:`machdyn.linkage.reductions.REDUCTIONS`, "" for a key the catalogue does not know)."""
 
     key: str
     unit: str
@@ -56,7 +56,8 @@ def listed(labels: Mapping[str, Label]) -> list[Listed]:
         quantity = _quantity(key)
         better = quantity.better if quantity is not None and quantity.better != "none" else ""
         reduction = quantity.over_positions if quantity is not None else ""
-        out.append(Listed(key, lab.shown_unit or "", lab.text, better, reduction))
+        unit = lab.unit if lab.shown_unit == lab.unit else f"{lab.unit or '–'} ({lab.shown_unit})"
+        out.append(Listed(key, unit, lab.text, better, reduction))
     return out
 
 

@@ -124,6 +124,9 @@ class Capability:
         the table's results (:func:`machdyn.kinds.population_form`).
     advise : ``(problem, table) -> [warning, ...]``: advice on a valid table (an objective against its result's
         declared better direction), said by ``check`` and by ``run`` alike.
+    result_keys : ``(problem) -> {key: SI unit}``, the results a run of the table reports whose keys are made from
+        the file's own names (``parts.bearing.O.rating_life``), as for :class:`ProblemKind`: a study accepts only
+        these of the table's patterns. None: the patterns alone.
     """
 
     table: str
@@ -139,6 +142,7 @@ class Capability:
     result_type: type | tuple[type, ...] | None = None
     population: str | None = None
     advise: Callable[[Any, Any], list[str]] | None = None
+    result_keys: Callable[[Any], Mapping[str, str]] | None = None
 
 
 @dataclass(frozen=True)

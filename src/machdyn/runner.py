@@ -35,6 +35,7 @@ from .pipeline import Outcome, StageContext, Step, import_object, no_step
 from .problem.dumper import dump_problem
 from .reading import LoadedProblem, load_problem, read_problem
 from .results import Results, Summary, collect, summarise
+from .results.store import UNITS as RESULT_UNITS
 
 __all__ = ["RunResult", "check_problem", "load_problem", "read_problem", "run_problem"]
 
@@ -89,7 +90,8 @@ class RunResult(ShownInNotebook):
 
     @property
     def scalars(self) -> dict[str, dict[str, Any]]:
-        """Every scalar as ``{key: {"value", "unit"}}`` in display units (the ``scalars`` of results.json)."""
+        """Every scalar as ``{key: {"value", "unit"}}`` in SI, with ``"shown"`` in the display unit where that
+        differs (the ``scalars`` of results.json)."""
         return self.results.as_json()
 
     @property
@@ -122,20 +124,21 @@ class RunResult(ShownInNotebook):
         return self.summary.frame()
 
     def scalars_frame(self):
-        """Every scalar as a DataFrame with columns quantity, value, unit (display units)."""
+        """Every scalar as a DataFrame with columns quantity, value, unit (SI, as in results.json)."""
         import pandas as pd
 
         return pd.DataFrame([(k, v["value"], v["unit"]) for k, v in self.scalars.items()],
                             columns=["quantity", "value", "unit"])
 
     def results_json(self) -> dict[str, Any]:
-        """The content of results.json: the problem's name and kind, every scalar with its unit, the warnings
-        and the failed design checks; after an optimisation, ``designs`` says which keys are of the design as
-        given and which of the best design."""
+        """The content of results.json: the problem's name and kind, ``"units": "SI"``, every scalar in SI with
+        its unit (and as shown, where shown otherwise), the warnings and the failed design checks; after an
+        optimisation, ``designs`` says which keys are of the design as given and which of the best design."""
         data = {
             "machdyn_version": __version__,
             "problem": self.title,
             "kind": self.kind,
+            "units": RESULT_UNITS,
             "scalars": self.scalars,
             "warnings": list(self.warnings),
             "failed_checks": list(self.failed_checks),

@@ -43,8 +43,9 @@ def test_the_feeder_cam_runs_with_its_results_series_dxf_and_report(tmp_path):
                 "cam.spring_rate", "cam.jump_speed", "cam.min_contact_force", "cam.peak_torque",
                 "cam.work_per_cycle", "cam.simulated_max_separation"):
         assert key in scalars, key
-    assert scalars["cam.jump_speed"]["unit"] == "rpm"
-    assert scalars["cam.jump_speed"]["value"] == pytest.approx(250.0, rel=1e-4)  # 200 rpm x (1 + 0.25)
+    assert scalars["cam.jump_speed"]["unit"] == "rad/s" and scalars["cam.jump_speed"]["shown"]["unit"] == "rpm"
+    assert scalars["cam.jump_speed"]["value"] == pytest.approx(250.0 * np.pi / 30, rel=1e-4)  # 200 rpm x 1.25
+    assert scalars["cam.jump_speed"]["shown"]["value"] == pytest.approx(250.0, rel=1e-4)
     assert scalars["cam.min_contact_force"]["value"] > 0
     # the work of the camshaft torque over a turn is the damper's loss, c omega * integral v^2 dtheta
     svaj = pd.read_csv(out / "cam_svaj.csv")
@@ -147,11 +148,11 @@ def test_the_flat_faced_valve_cam_sizes_its_spring_and_checks_its_face(tmp_path)
     result = runner.invoke(app, ["run", str(valve), "--out", str(out), "-q"])
     assert result.exit_code == 0, result.output
     scalars = json.loads((out / "results.json").read_text())["scalars"]
-    assert scalars["cam.jump_speed"]["value"] == pytest.approx(3600.0, rel=1e-4)  # 3000 rpm x 1.2
+    assert scalars["cam.jump_speed"]["value"] == pytest.approx(3600.0 * np.pi / 30, rel=1e-4)  # 3000 rpm x 1.2
     assert scalars["cam.max_pressure_angle"]["value"] == 0.0
     svaj = pd.read_csv(out / "cam_svaj.csv")
     span = float(svaj["v [m/rad]"].max() - svaj["v [m/rad]"].min())
-    assert scalars["cam.face_width"]["value"] == pytest.approx((span + 0.002) * 1e3, rel=1e-9)
+    assert scalars["cam.face_width"]["value"] == pytest.approx(span + 0.002, rel=1e-9)  # m
     narrow = tmp_path / "narrow.toml"
     narrow.write_text(valve.read_text().replace('face_width = "30 mm"', 'face_width = "16 mm"'))
     failed = runner.invoke(app, ["run", str(narrow), "--out", str(tmp_path / "o2"), "-q"])
@@ -202,9 +203,10 @@ def test_an_oscillating_follower_reports_angles_and_its_pressure_limit(tmp_path)
     assert result.exit_code == 3, result.output
     assert "exceeds the limit 35 deg" in result.output
     scalars = json.loads((out / "results.json").read_text())["scalars"]
-    assert scalars["cam.stroke"] == {"value": pytest.approx(15.0), "unit": "deg"}
-    bigger = scalars["cam.min_base_radius_pressure"]["value"]  # mm
-    path.write_text(OSCILLATING.replace('base_radius = "40 mm"', f'base_radius = "{bigger * 1.001:.6f} mm"'))
+    assert scalars["cam.stroke"] == {"value": pytest.approx(np.radians(15.0)), "unit": "rad",
+                                     "shown": {"value": pytest.approx(15.0), "unit": "deg"}}
+    bigger = scalars["cam.min_base_radius_pressure"]["value"]  # m
+    path.write_text(OSCILLATING.replace('base_radius = "40 mm"', f'base_radius = "{bigger * 1.001:.9f} m"'))
     again = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "o2"), "-q"])
     assert again.exit_code == 0, again.output
     forces = pd.read_csv(tmp_path / "o2" / "cam_forces.csv")

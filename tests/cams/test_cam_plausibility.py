@@ -3,8 +3,6 @@ turn fails a design check (exit 3), instead of results like a 3.9e15 N contact f
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 import pytest
 from typer.testing import CliRunner
@@ -13,18 +11,12 @@ from machdyn.cams.checks import BURST_RIM_SPEED, rim_speed_failure
 from machdyn.cams.followers import MAX_CAM_SIZE, Follower
 from machdyn.cli import app
 from machdyn.errors import InputError
-
-ROOT = Path(__file__).resolve().parents[2]
-FEEDER = ROOT / "examples" / "feeder_cam.toml"
-
-
-def _kinematic(text: str) -> str:
-    return text[:text.index("[cam.dynamics]")] + text[text.index("[cam.output]"):]
+from reproductions import example, fast_cam, huge_base_radius, kinematic
 
 
 def test_a_base_circle_of_1e9_m_is_refused_by_check_and_run(tmp_path):
     bad = tmp_path / "huge.toml"
-    bad.write_text(_kinematic(FEEDER.read_text().replace('base_radius = "45 mm"', 'base_radius = "1e9 m"')))
+    bad.write_text(huge_base_radius())
     runner = CliRunner()
     check = runner.invoke(app, ["check", str(bad)])
     run = runner.invoke(app, ["run", str(bad), "--out", str(tmp_path / "o"), "-q"])
@@ -36,12 +28,12 @@ def test_a_base_circle_of_1e9_m_is_refused_by_check_and_run(tmp_path):
 
 def test_a_cam_at_1e9_rpm_fails_its_rim_speed_check(tmp_path):
     bad = tmp_path / "fast.toml"
-    bad.write_text(_kinematic(FEEDER.read_text().replace('speed = "200 rpm"', 'speed = "1e9 rpm"')))
+    bad.write_text(fast_cam())
     result = CliRunner().invoke(app, ["run", str(bad), "--out", str(tmp_path / "o"), "-q"])
     assert result.exit_code == 3, result.output
     assert "rim runs at" in result.output and "bursts above about 556 m/s" in result.output
     ok = tmp_path / "ok.toml"
-    ok.write_text(_kinematic(FEEDER.read_text()))
+    ok.write_text(kinematic(example("feeder_cam")))
     assert "rim runs" not in CliRunner().invoke(app, ["run", str(ok), "--out", str(tmp_path / "p"), "-q"]).output
 
 

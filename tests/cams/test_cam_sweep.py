@@ -144,8 +144,8 @@ def test_the_command_line_runs_the_example_and_writes_the_table(tmp_path):
     assert list(table["regular"]) == [True] * 9
     assert list(table["status"])[3:] == ["regular"] * 6 and table["status"][0].startswith("failed check")
     scalars = json.loads((out / "results.json").read_text())["scalars"]
-    assert scalars["sweep.cam.max_pressure_angle"]["unit"] == "deg"
-    np.testing.assert_allclose(scalars["sweep.cam.max_pressure_angle"]["value"],
+    assert scalars["sweep.cam.max_pressure_angle"]["unit"] == "rad"  # results.json is SI; the CSV shows degrees
+    np.testing.assert_allclose(np.degrees(scalars["sweep.cam.max_pressure_angle"]["value"]),
                                table["cam.max_pressure_angle [deg]"], rtol=1e-9)
     assert "Design sweep of cam.base_radius" in (out / "report.html").read_text()
 

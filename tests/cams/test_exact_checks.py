@@ -4,8 +4,6 @@ two samples fails, an undercut cam fails at 16 positions as at 720, and the exac
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 import pytest
 from typer.testing import CliRunner
@@ -16,25 +14,16 @@ from machdyn.cams.followers import Follower
 from machdyn.cams.profile import cam_angles, profile
 from machdyn.cams.program import Segment, program
 from machdyn.cli import app
+from reproductions import feeder_with, steep_rise
 
-ROOT = Path(__file__).resolve().parents[2]
-FEEDER = ROOT / "examples" / "feeder_cam.toml"
 D = np.radians
-
-
-def _feeder_with(rise: str, dwell: str, positions: int, roller: str = "12 mm") -> str:
-    text = FEEDER.read_text().replace('angle = "110 deg"', f'angle = "{rise}"', 1)
-    text = text.replace('angle = "70 deg"', f'angle = "{dwell}"', 1).replace("positions = 720",
-                                                                          f"positions = {positions}")
-    text = text.replace('roller_radius = "12 mm"', f'roller_radius = "{roller}"')
-    return text[:text.index("[cam.dynamics]")] + text[text.index("[cam.output]"):]  # kinematics only: quick
 
 
 def test_a_rise_between_two_samples_fails_its_pressure_angle(tmp_path):
     """30 mm over 0.3 deg, sampled every 0.5 deg: the sampled profile never sees the rise (24 deg), the exact
     check does (cycloidal: v peaks at 2 h / beta, tan phi ~ 2 h / (beta d) ~ 90 deg)."""
     bad = tmp_path / "steep.toml"
-    bad.write_text(_feeder_with("0.3 deg", "179.7 deg", 720))
+    bad.write_text(steep_rise())
     result = CliRunner().invoke(app, ["run", str(bad), "--out", str(tmp_path / "o")])
     assert result.exit_code == 3, result.output
     assert "pressure angle 89." in result.output and "exceeds the limit 30 deg" in result.output
@@ -64,7 +53,7 @@ def test_an_undercut_cam_fails_at_16_positions_as_at_720():
 
 def test_the_command_line_reports_the_undercut_at_16_positions(tmp_path):
     bad = tmp_path / "undercut.toml"
-    bad.write_text(_feeder_with("40 deg", "140 deg", 16, roller="30 mm").replace(
+    bad.write_text(feeder_with("40 deg", "140 deg", 16, roller="30 mm").replace(
         'pressure_angle_limit = "30 deg"', 'pressure_angle_limit = "60 deg"'))
     result = CliRunner().invoke(app, ["run", str(bad), "--out", str(tmp_path / "o"), "-q"])
     assert result.exit_code == 3, result.output

@@ -262,7 +262,7 @@ def test_the_example_runs_from_the_command_line(tmp_path):
     for key in ("follower_linkage.camshaft_torque.max", "follower_linkage.output_stroke", "follower_linkage.jump_speed",
                 "follower_linkage.joint_force.max", "follower_linkage.follower_load.max"):
         assert key in scalars, key
-    stroke = scalars["follower_linkage.output_stroke"]["value"] / 1e3  # shown in mm
+    stroke = scalars["follower_linkage.output_stroke"]["value"]  # m
     assert scalars["follower_linkage.mean_power"]["value"] == pytest.approx(150.0 * stroke * 2.0, rel=1e-4)
     assert scalars["flywheel.mean_power"]["value"] == pytest.approx(
         scalars["follower_linkage.mean_power"]["value"], rel=0.01)
@@ -280,11 +280,12 @@ def test_an_output_that_turns_reports_its_swing_in_degrees(tmp_path):
     result = runner.invoke(app, ["run", str(path), "--out", str(out), "-q"])
     assert result.exit_code == 0, result.output
     swing = json.loads((out / "results.json").read_text())["scalars"]["follower_linkage.output_stroke"]
-    assert swing["unit"] == "deg"
+    assert swing["unit"] == "rad" and swing["shown"]["unit"] == "deg"
     problem, model, mech, phi = _setup()
     angle = _load(problem, model, mech, phi).forces.kinematics.body("rod").angle
-    assert swing["value"] == pytest.approx(np.degrees(np.ptp(np.unwrap(angle))), rel=1e-9)
-    assert 0.0 < swing["value"] < 20.0  # less than the arm's swing: the rod stays nearly along the guide
+    assert swing["value"] == pytest.approx(np.ptp(np.unwrap(angle)), rel=1e-9)
+    assert swing["shown"]["value"] == pytest.approx(np.degrees(swing["value"]), rel=1e-12)
+    assert 0.0 < swing["shown"]["value"] < 20.0  # less than the arm's swing: the rod stays nearly along the guide
 
 
 def test_a_spring_too_weak_for_the_linkage_fails_the_design_with_exit_3(tmp_path):

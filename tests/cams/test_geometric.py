@@ -9,6 +9,7 @@ import pytest
 
 from machdyn.cams.geometric import circular_arc_flat, tangent_roller
 from machdyn.errors import InputError
+from problem_texts import circular_arc_cam
 
 R1, R2, H = 0.02, 0.005, 0.012
 OMEGA = 50.0
@@ -58,55 +59,13 @@ def test_bad_shapes_are_refused():
         tangent_roller(R1, R2, H, 0.0, [3.0])
 
 
-ARC = """
-[meta]
-name = "circular arc cam"
-
-[cam]
-speed = "300 rpm"
-base_radius = "20 mm"
-positions = 3600
-
-[cam.follower]
-contact = "{contact}"
-
-[[cam.segments]]
-motion = "rise"
-angle = "{angle} deg"
-lift = "12 mm"
-law = "circular_arc"
-nose_radius = "5 mm"
-flank_radius = "90 mm"
-
-[[cam.segments]]
-motion = "return"
-angle = "{angle} deg"
-lift = "12 mm"
-law = "circular_arc"
-nose_radius = "5 mm"
-flank_radius = "90 mm"
-
-[[cam.segments]]
-motion = "dwell"
-angle = "{dwell} deg"
-"""
-
-
-def _arc_file(contact="flat", angle=None):
-    from machdyn.cams.geometric import rise_angle
-
-    alpha = np.degrees(rise_angle("circular_arc", 0.02, 0.005, 0.012, 0.09))
-    a = alpha if angle is None else angle
-    return ARC.format(contact=contact, angle=repr(float(a)), dwell=repr(float(360.0 - 2 * a)))
-
-
 def test_a_circular_arc_cam_file_gives_back_its_own_contour():
     """Two methods: the follower's motion from the contour's closed form, then the cam's profile from that motion
     by the cam module's own envelope (knowing nothing of the contour): its radius of curvature is the flank's
     90 mm on the flank, the nose's 5 mm on the nose and the base circle's 20 mm on the dwell."""
     from machdyn.runner import run_problem
 
-    run = run_problem(_arc_file())
+    run = run_problem(circular_arc_cam())
     cam = run.outcomes["cam"].results.model
     rho = cam.profile.surface_curvature_radius
     phi = circular_arc_flat(0.02, 0.005, 0.012, 0.09, [0.0]).phi
@@ -130,7 +89,7 @@ def test_check_and_run_refuse_a_contour_that_does_not_fit(contact, angle, field,
     from machdyn.cli import app
 
     path = tmp_path / "bad.toml"
-    path.write_text(_arc_file(contact, angle), encoding="utf-8")
+    path.write_text(circular_arc_cam(contact, angle), encoding="utf-8")
     runner = CliRunner()
     checked = runner.invoke(app, ["check", str(path)])
     ran = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "out"), "--quiet"])

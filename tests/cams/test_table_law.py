@@ -12,6 +12,7 @@ from machdyn.cams.program import Segment, program
 from machdyn.cams.table_law import table_law
 from machdyn.cli import app
 from machdyn.runner import run_problem
+from problem_texts import table_cam
 
 POINTS = ((0.2, 0.06), (0.45, 0.4), (0.7, 0.85))
 
@@ -62,45 +63,10 @@ def test_a_program_with_a_table_rise_has_no_jumps():
     assert np.allclose(s, [0.0, 0.03 * 0.4, 0.03], atol=1e-12)
 
 
-CAM = """
-[meta]
-name = "table cam"
-
-[cam]
-speed = "200 rpm"
-base_radius = "45 mm"
-
-[cam.follower]
-contact = "roller"
-roller_radius = "12 mm"
-
-[[cam.segments]]
-motion = "rise"
-angle = "120 deg"
-lift = "25 mm"
-law = "table"
-{points}
-
-[[cam.segments]]
-motion = "dwell"
-angle = "60 deg"
-
-[[cam.segments]]
-motion = "return"
-angle = "120 deg"
-lift = "25 mm"
-law = "poly345"
-
-[[cam.segments]]
-motion = "dwell"
-angle = "60 deg"
-"""
-
-
 def test_the_problem_file_runs_with_a_table_law():
-    run = run_problem(CAM.format(points="points = [[0.2, 0.06], [0.45, 0.4], [0.7, 0.85]]"))
+    run = run_problem(table_cam("points = [[0.2, 0.06], [0.45, 0.4], [0.7, 0.85]]"))
     s = run.scalars
-    assert s["cam.stroke"]["value"] == pytest.approx(25.0, rel=1e-9) and s["cam.jumps"]["value"] == 0
+    assert s["cam.stroke"]["value"] == pytest.approx(0.025, rel=1e-9) and s["cam.jumps"]["value"] == 0
     # the largest follower speed: the table rise's peak y' or the 3-4-5 return's 15/8, each h omega / beta
     omega, h, beta = 200 * np.pi / 30, 0.025, np.radians(120)
     peak_table = float(np.max(np.abs(table_law(POINTS)(np.linspace(0, 1, 20001))[1])))
@@ -111,7 +77,7 @@ def test_the_problem_file_runs_with_a_table_law():
 @pytest.mark.parametrize("points", ["points = []", "points = [[0.5, 0.5], [0.4, 0.7]]", "points = [[1.2, 0.5]]"])
 def test_check_and_run_refuse_bad_points(points, tmp_path):
     path = tmp_path / "bad.toml"
-    path.write_text(CAM.format(points=points), encoding="utf-8")
+    path.write_text(table_cam(points), encoding="utf-8")
     runner = CliRunner()
     checked = runner.invoke(app, ["check", str(path)])
     ran = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "out"), "--quiet"])

@@ -45,8 +45,9 @@ def test_every_example_runs_from_the_command_line(example, tmp_path):
     assert "quantity" in proc.stdout and "unit" in proc.stdout
     results = json.loads((out / "results.json").read_text())
     assert results["scalars"], "results.json holds the scalar results"
-    for entry in results["scalars"].values():
-        assert set(entry) == {"value", "unit"}
+    assert results["units"] == "SI"
+    for entry in results["scalars"].values():  # SI, and as shown where the summary shows another unit
+        assert set(entry) in ({"value", "unit"}, {"value", "unit", "shown"})
     html = (out / "report.html").read_text()
     assert html.lstrip().lower().startswith("<!doctype html")
     assert "<script src" not in html and "<link" not in html  # self-contained

@@ -1,6 +1,7 @@
 """The conveyor's problem kind plugged into the registry (``machdyn.conveyor.kind:KIND``), end to end."""
 
 import json
+import math
 from pathlib import Path
 
 import pytest
@@ -20,15 +21,19 @@ def conveyor_kind(monkeypatch):
     kinds.kind.cache_clear()
 
 
-def test_registered_kind_writes_display_units_and_exits_0(conveyor_kind, tmp_path):
+def test_registered_kind_writes_si_with_the_display_units_beside_and_exits_0(conveyor_kind, tmp_path):
     result = CliRunner().invoke(app, ["run", str(ROOT / "examples" / "iodized_salt_conveyor.toml"), "--out",
                                       str(tmp_path)])
     assert result.exit_code == 0, result.output
     scalars = json.loads((tmp_path / "results.json").read_text())["scalars"]
-    assert scalars["shaft_power"]["unit"] == "kW"
-    assert scalars["shaft_power"]["value"] == pytest.approx(1.1229322346201107, rel=1e-12)
-    assert scalars["diameter"] == {"value": pytest.approx(200.0), "unit": "mm"}
-    assert scalars["speed"]["unit"] == "rpm" and scalars["speed"]["value"] == pytest.approx(100.62305898749054)
+    assert scalars["shaft_power"]["unit"] == "W" and scalars["shaft_power"]["shown"]["unit"] == "kW"
+    assert scalars["shaft_power"]["value"] == pytest.approx(1122.9322346201107, rel=1e-12)
+    assert scalars["shaft_power"]["shown"]["value"] == pytest.approx(1.1229322346201107, rel=1e-12)
+    assert scalars["diameter"] == {"value": pytest.approx(0.2), "unit": "m",
+                                   "shown": {"value": pytest.approx(200.0), "unit": "mm"}}
+    assert scalars["speed"]["unit"] == "rad/s"
+    assert scalars["speed"]["value"] == pytest.approx(100.62305898749054 * math.pi / 30, rel=1e-12)
+    assert scalars["speed"]["shown"] == {"value": pytest.approx(100.62305898749054, rel=1e-12), "unit": "rpm"}
 
 
 def test_registered_kind_check_agrees_with_run(conveyor_kind, tmp_path):

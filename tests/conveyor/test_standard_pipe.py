@@ -64,7 +64,7 @@ def test_a_screw_without_its_pipe_takes_the_standard_pipe_and_says_so(tmp_path):
     assert "taken from CEMA 350's standard screw conveyor components" in flat
     assert "10 in screw's 2½ in pipe, outer diameter 73.0 mm" in flat
     scalars = json.loads((tmp_path / "o" / "results.json").read_text())["scalars"]
-    assert scalars["pipe_outer_diameter"]["value"] == pytest.approx(73.025)
+    assert scalars["pipe_outer_diameter"]["value"] == pytest.approx(0.073025)  # m: 2.875 in
 
 
 def test_a_screw_beyond_the_table_without_its_pipe_is_refused_by_check_and_run(tmp_path):

@@ -3,81 +3,45 @@ for minutes: each is now classified the same way by both, with a message naming 
 
 from __future__ import annotations
 
-import re
-
 import pytest
 
-from .helpers import EXAMPLES, check_and_run
+from reproductions import (
+    compactor_derived,
+    empty_speed_fractions,
+    example,
+    press_with_brake,
+    replaced,
+    stalling_compactor,
+    synthesis,
+    tiny_cam_segments,
+)
 
-
-def _example(name: str) -> str:
-    return (EXAMPLES / f"{name}.toml").read_text(encoding="utf-8")
-
-
-def _replaced(text: str, old: str, new: str) -> str:
-    assert old in text, old
-    return text.replace(old, new, 1)
-
-
-def _press_with_brake(overhauling_torque: str) -> str:
-    """The crank press of the drive-train example with only its drive train and brake, and a torque on the crank
-    that drives it (an overhauling load)."""
-    text = _example("crank_press_drive")
-    text = text[: text.index("[flywheel]")] + text[text.index("[drivetrain]"):]
-    text = text[: text.index("[drivetrain.clutch]")] + text[text.index("[drivetrain.brake]"):]
-    text = text[: text.index("[drivetrain.single_stroke]")]
-    return _replaced(text, "[drive]", f'[[loads.torques]]\nname = "overhauling"\nbody = "crank"\n'
-                                      f'torque = "{overhauling_torque}"\n\n[drive]')
-
-
-def _synthesis(function: str, x_range: str) -> str:
-    text = _replaced(_example("synthesis_function_log10"), 'function = "log10"', f'function = "{function}"')
-    return _replaced(text, "x_range = [1.0, 2.0]", f"x_range = {x_range}")
-
-
-def _compactor_derived(formula: str) -> str:
-    text = _replaced(_example("compactor_optimise"), '"loads.forces[0].fy" = "2000 * 0.1 / l"',
-                     f'"loads.forces[0].fy" = "{formula}"')
-    return text
-
-
-TINY_SEGMENTS = '''
-[[cam.segments]]
-motion = "rise"
-angle = "1e-300 deg"
-lift = "1 mm"
-
-[[cam.segments]]
-motion = "return"
-angle = "1e-300 deg"
-lift = "1 mm"
-
-[cam.checks]'''
+from .helpers import check_and_run
 
 REFUSED = [
     ("empty_conveyor_speed_fractions",
-     lambda: re.sub(r"speed_fractions = \[.*\]", "speed_fractions = []", _example("conveyor_best_design")),
+     empty_speed_fractions,
      "screw_conveyor.optimise.speed_fractions: must have at least 1 item"),
-    ("derived_formula_divides_by_zero", lambda: _compactor_derived("2000 * 0.1 / (l - l)"),
+    ("derived_formula_divides_by_zero", lambda: compactor_derived("2000 * 0.1 / (l - l)"),
      "optimise.derived.loads.forces[0].fy: '2000 * 0.1 / (l - l)' is not finite anywhere"),
-    ("derived_formula_overflows", lambda: _compactor_derived("*".join(["1e12"] * 30) + " * l"),
+    ("derived_formula_overflows", lambda: compactor_derived("*".join(["1e12"] * 30) + " * l"),
      "optimise.derived.loads.forces[0].fy: "),
     ("derived_length_negative_everywhere",
-     lambda: _replaced(_example("compactor_optimise"), '"mechanism.ground.length" = "hypot(l, h)"',
-                       '"mechanism.ground.length" = "l - 1"'),
+     lambda: replaced(example("compactor_optimise"), '"mechanism.ground.length" = "hypot(l, h)"',
+                      '"mechanism.ground.length" = "l - 1"'),
      "optimise.derived.mechanism.ground.length: 'l - 1' must be >0"),
-    ("cam_segment_of_1e-300_deg", lambda: _replaced(_example("feeder_cam"), "\n[cam.checks]", TINY_SEGMENTS),
+    ("cam_segment_of_1e-300_deg", tiny_cam_segments,
      "cam.segments[4].angle must be at least 0.001 deg"),
-    ("synthesis_reciprocal_across_zero", lambda: _synthesis("reciprocal", "[-1.0, 2.0]"),
+    ("synthesis_reciprocal_across_zero", lambda: synthesis("reciprocal", "[-1.0, 2.0]"),
      "synthesis.x_range: the function reciprocal must be defined and finite over its whole range: "
      "reciprocal(x) = 1/x is undefined at x = 0"),
-    ("synthesis_nan_range", lambda: _synthesis("log10", "[nan, 2.0]"),
+    ("synthesis_nan_range", lambda: synthesis("log10", "[nan, 2.0]"),
      "synthesis.x_range: the function log10 must be defined and finite over its whole range: the range must be "
      "finite"),
-    ("synthesis_tan_across_its_pole", lambda: _synthesis("tan", "[1.0, 2.0]"),
+    ("synthesis_tan_across_its_pole", lambda: synthesis("tan", "[1.0, 2.0]"),
      "tan(x) is undefined at x = 1.5708"),
-    ("synthesis_exp_overflows", lambda: _synthesis("exp", "[1.0, 800.0]"), "exp(x) is not finite at x = 710"),
-    ("brake_weaker_than_an_overhauling_load", lambda: _press_with_brake("2000 N*m"),
+    ("synthesis_exp_overflows", lambda: synthesis("exp", "[1.0, 800.0]"), "exp(x) is not finite at x = 710"),
+    ("brake_weaker_than_an_overhauling_load", lambda: press_with_brake("2000 N*m"),
      "drivetrain.brake.torque: the brake's 1200 N*m at the crank does not exceed the mean driving moment of the "
      "loads over a turn"),
 ]
@@ -96,8 +60,8 @@ def test_check_refuses_what_run_refuses_naming_the_field(tmp_path, make, message
 def test_a_brake_just_stronger_than_the_overhauling_load_stops_the_press(tmp_path):
     """1150 N*m driving against the brake's 1200 N*m: the balance holds, the stop is integrated, and at about a
     third of a turn it fails the brake's 30 deg limit (exit 3)."""
-    text = _replaced(_press_with_brake("1150 N*m"), "positions = 360", "positions = 90")
-    text = _replaced(text, 'shaft = "flywheel shaft"\nmax_angle', 'shaft = "flywheel shaft"\nat = ["0 deg"]\nmax_angle')
+    text = replaced(press_with_brake("1150 N*m"), "positions = 360", "positions = 90")
+    text = replaced(text, 'shaft = "flywheel shaft"\nmax_angle', 'shaft = "flywheel shaft"\nat = ["0 deg"]\nmax_angle')
     check, run = check_and_run(tmp_path, text)
     assert check.code == 0 and run.code == 3, (check, run)
     assert "brake: the crank overruns" in run.stderr
@@ -106,11 +70,7 @@ def test_a_brake_just_stronger_than_the_overhauling_load_stops_the_press(tmp_pat
 def test_a_motor_that_stalls_against_a_damper_is_a_failed_check_not_bad_input(tmp_path):
     """The compactor's 0.75 kW motor against a 200 N*m*s/rad damper stalls in the cycle: a design that fails
     (exit 3, the figures said), as for a drive too small for its load, since check cannot know it."""
-    text = _replaced(_example("compactor_flywheel"), 'coefficient = "0.5 N*m*s/rad"', 'coefficient = "200 N*m*s/rad"')
-    text = _replaced(text, 'kind = "select"              # an induction motor from the IEC 60072-1 ratings',
-                     'kind = "induction"\nrated_power = "0.75 kW"\nrated_speed = "1440 rpm"')
-    text = _replaced(text, "[flywheel.motor]", "start_up = false\n\n[flywheel.motor]")
-    check, run = check_and_run(tmp_path, text)
+    check, run = check_and_run(tmp_path, stalling_compactor())
     assert check.code == 0 and run.code == 3, (check, run)
     assert "The machine stalls: its speed falls to zero" in run.stderr and "breakdown torque" in run.stderr
     assert (tmp_path / "out" / "report.html").is_file()
@@ -118,18 +78,18 @@ def test_a_motor_that_stalls_against_a_damper_is_a_failed_check_not_bad_input(tm
 
 def _single_stroke_press(extra: str = "", overhauling: str | None = None) -> str:
     """The drive-train press without its parts, at 90 positions, with ``extra`` after its single-stroke table."""
-    text = _example("crank_press_drive")
+    text = example("crank_press_drive")
     text = text[: text.index("[[parts.bearings]]")] + extra
-    text = _replaced(text, "positions = 360", "positions = 90")
-    text = _replaced(text, "[flywheel.motor]", "start_up = false\n\n[flywheel.motor]")
+    text = replaced(text, "positions = 360", "positions = 90")
+    text = replaced(text, "[flywheel.motor]", "start_up = false\n\n[flywheel.motor]")
     if overhauling is not None:
-        text = _replaced(text, "[flywheel]\n", f'[[loads.torques]]\nname = "overhauling"\nbody = "crank"\n'
+        text = replaced(text, "[flywheel]\n", f'[[loads.torques]]\nname = "overhauling"\nbody = "crank"\n'
                                                f'torque = "{overhauling}"\n\n[flywheel]\n')
     return text
 
 
 def test_a_brake_angle_outside_the_single_stroke_is_refused_by_check_and_run(tmp_path):
-    text = _replaced(_single_stroke_press(), 'start = "90 deg"', 'start = "90 deg"\nbrake_at = "45 deg"')
+    text = replaced(_single_stroke_press(), 'start = "90 deg"', 'start = "90 deg"\nbrake_at = "45 deg"')
     check, run = check_and_run(tmp_path, text)
     assert (check.code, run.code) == (2, 2), (check, run)
     assert "single_stroke.brake_at must lie within the stroke" in check.stderr
@@ -141,7 +101,7 @@ def test_a_single_stroke_the_brake_cannot_end_is_a_failed_check(tmp_path):
     check of a valid file (exit 3), not bad input after check said OK."""
     text = _single_stroke_press(overhauling="1150 N*m")
     text = text[: text.index("[flywheel]")] + text[text.index("[drivetrain]"):]
-    text = _replaced(text, "strokes_per_minute = 20", "strokes_per_minute = 20\nmotor_torque = \"100 N*m\"")
+    text = replaced(text, "strokes_per_minute = 20", "strokes_per_minute = 20\nmotor_torque = \"100 N*m\"")
     check, run = check_and_run(tmp_path, text)
     assert check.code == 0 and run.code == 3, (check, run)
     assert "single stroke: The brake torque 1200 N*m (at the crank) cannot stop the crank within half a turn" \

@@ -76,16 +76,16 @@ def test_a_centrifugal_clutch_and_internal_shoes_through_the_command_line(tmp_pa
     shaft_speed = 40 * math.pi / 30 * 8.0  # the clutch's shaft turns 8 times as fast as the crank
     clutch = clutches.centrifugal_clutch(0.3, 4, 8.0, 0.2, 0.22, 200.0, shaft_speed)
     assert scalars["clutch.torque"] == pytest.approx(clutch.torque, rel=1e-9)
-    assert scalars["clutch.engagement_speed"] == pytest.approx(clutch.engagement_speed * 30 / math.pi, rel=1e-9)
+    assert scalars["clutch.engagement_speed"] == pytest.approx(clutch.engagement_speed, rel=1e-9)  # rad/s
     moments = brakes.shoe_moments(0.32, 0.15, 0.032, 0.0, math.radians(126), 0.123)
     force = 0.3e6 * (moments.normal - moments.friction) / 0.1
     assert scalars["brake.lever_force"] == pytest.approx(force, rel=1e-9)
-    assert scalars["brake.max_pressure"] == pytest.approx(0.3, rel=1e-9)  # MPa
+    assert scalars["brake.max_pressure"] == pytest.approx(0.3e6, rel=1e-9)  # Pa
     assert scalars["brake.torque"] == pytest.approx(
         brakes.internal_shoe_brake(0.32, force, 0.15, 0.032, 0.0, math.radians(126), 0.123, 0.1).torque, rel=1e-9)
     # the worst stop's energy is the brake's work at the crank: T_b·(gear ratio)·stop angle
     assert scalars["brake.stop_energy"] == pytest.approx(
-        scalars["brake.torque"] * 8.0 * math.radians(scalars["brake.stop_angle"]), rel=1e-9)
+        scalars["brake.torque"] * 8.0 * scalars["brake.stop_angle"], rel=1e-9)  # the angle in rad
     assert scalars["brake.temperature_rise"] == pytest.approx(scalars["brake.stop_energy"] / (12 * 460), rel=1e-9)
     assert scalars["brake.temperature_rise_steady"] > scalars["brake.temperature_rise"]
     assert scalars["clutch.driven_acceleration"] > 0 and scalars["clutch.driving_deceleration"] > 0

@@ -108,7 +108,7 @@ def test_the_problem_file_runs_and_reports(tmp_path):
     out = run.outcomes["hoist"]
     res = out.results.result
     assert res.cage_acceleration["cage"] == pytest.approx(0.8, rel=1e-12)
-    assert run.scalars["hoist.cage.rope_tension"]["value"] == pytest.approx(1500 * (G + 0.8) / 1e3, rel=1e-12)
+    assert run.scalars["hoist.cage.rope_tension"]["value"] == pytest.approx(1500 * (G + 0.8), rel=1e-12)  # N
     html = sections(out)[0][1]
     assert "<svg" in html and "stages' loss" in html
     assert np.isclose(sum(res.shaft_demand.values()) + res.loss_torque, res.motor_torque)

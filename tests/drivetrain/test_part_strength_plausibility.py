@@ -3,22 +3,18 @@ check and run alike (it used to give a fatigue safety factor and exit 0)."""
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 from typer.testing import CliRunner
 
 from machdyn.cli import app
 from machdyn.drivetrain.strength import goodman_safety
 from machdyn.errors import InputError
-
-ROOT = Path(__file__).resolve().parents[2]
-DRIVE = ROOT / "examples" / "crank_press_drive.toml"
+from reproductions import swapped_strengths
 
 
 def test_an_ultimate_strength_below_the_endurance_limit_is_refused(tmp_path):
     bad = tmp_path / "swapped.toml"
-    bad.write_text(DRIVE.read_text().replace('ultimate_strength = "600 MPa"', 'ultimate_strength = "120 MPa"'))
+    bad.write_text(swapped_strengths())
     runner = CliRunner()
     check = runner.invoke(app, ["check", str(bad)])
     run = runner.invoke(app, ["run", str(bad), "--out", str(tmp_path / "o"), "-q"])

@@ -25,6 +25,9 @@ from typer.testing import CliRunner
 from machdyn.cli import EXIT_BAD_INPUT, EXIT_INTERNAL, app
 from machdyn.errors import MachdynError
 from machdyn.runner import run_problem
+from problem_texts import circular_arc_cam, table_cam
+from reproductions import example as example_text
+from reproductions import replaced
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
@@ -336,4 +339,79 @@ def test_fuzzed_capability_tables_check_agrees_with_run(tmp_path):
                 failures.append(f"{where}: a traceback")
     print(f"fuzz of the capability tables: {counts}")  # noqa: T201 - the counts are part of the suite's output
     assert counts["mutants"] >= len(TABLE_BASES) * TABLE_CASES
+    assert not failures, f"{len(failures)} of {counts['mutants']} mutants failed:\n" + "\n".join(failures[:25])
+
+
+# ------------------------------------------------------------------------------ the newer tables, one by one
+
+
+def _light_press() -> str:
+    """The press with its clutch and brake from their geometry, its gear's teeth and its pinion shaft, without the
+    flywheel, the single stroke and the parts (whose runs take seconds), at 90 positions."""
+    text = example_text("press_brake_clutch")
+    text = text[: text.index("[drivetrain.single_stroke]")]
+    text = text[: text.index("[flywheel]")] + text[text.index("[drivetrain]"):]
+    return replaced(text, "positions = 360", "positions = 90")
+
+
+#: table -> the problem text whose table is mutated: the tables added since the capability tables above
+NEWER_TABLES: dict[tuple, Any] = {
+    ("transient",): lambda: example_text("rotary_screen_start_stop"),
+    ("hoist",): lambda: example_text("hoist_mine_cage"),
+    ("drivetrain", "clutch", "geometry"): _light_press,
+    ("drivetrain", "brake", "geometry"): _light_press,
+    ("drivetrain", "shafts", 0): _light_press,
+    ("drivetrain", "stages", 1, "teeth"): _light_press,
+    ("synthesis",): lambda: example_text("synthesis_shaper_slotted_lever"),
+    ("cam", "segments", 0): lambda: table_cam("points = [[0.2, 0.06], [0.45, 0.4], [0.7, 0.85]]"),
+    ("cam", "segments", 1): lambda: circular_arc_cam().replace("positions = 3600", "positions = 720"),
+}
+NEWER_CASES = 3  # mutants per table: one key deleted, two changed
+
+
+def _analysed(file: Path) -> tuple[int, str]:
+    """The exit code ``machdyn run`` gives ``file`` (2 bad input, 1 a failed analysis, 4 an internal error), from
+    a run that writes nothing; and what it said."""
+    try:
+        run_problem(file)
+    except MachdynError as exc:
+        return (EXIT_BAD_INPUT if isinstance(exc, ValueError) else 1), str(exc)
+    except Exception as exc:  # noqa: BLE001 - any other exception is the internal error the fuzz looks for
+        return EXIT_INTERNAL, f"{type(exc).__name__}: {exc}"
+    return 0, ""
+
+
+def test_fuzzed_newer_tables_check_agrees_with_run(tmp_path):
+    """Mutants of the tables added since ([transient], [hoist], a clutch's and a brake's geometry, a shaft's design
+    check, a gear stage's teeth, a slotted-lever synthesis, a table cam's and a contour cam's segment): check and
+    run refuse the same files (exit 2), a file check accepts never ends in bad input or an internal error, and
+    neither prints a traceback."""
+    rng = random.Random(SEED + 2)
+    runner = CliRunner()
+    counts = {"mutants": 0, "refused by both": 0, "accepted by both": 0}
+    failures: list[str] = []
+    for within, make in NEWER_TABLES.items():
+        data = tomllib.loads(make())
+        for i, (kind, content, path) in enumerate(mutants(data, to_toml(data), rng, NEWER_CASES, within)):
+            folder = tmp_path / f"{'_'.join(map(str, within))}{i}"
+            folder.mkdir()
+            file = _write(folder, content)
+            where = f"[{'.'.join(map(str, within))}] {kind} {' <-> '.join('.'.join(map(str, p)) for p in path)}"
+            checked = runner.invoke(app, ["check", str(file)])
+            counts["mutants"] += 1
+            if checked.exit_code == 0:  # analysed without writing the report, as most valid mutants above
+                code, said = _analysed(file)
+            else:
+                ran = runner.invoke(app, ["run", str(file), "--out", str(folder / "out"), "--quiet"])
+                code, said = ran.exit_code, ran.output
+            if checked.exit_code == EXIT_BAD_INPUT and code == EXIT_BAD_INPUT:
+                counts["refused by both"] += 1
+            elif checked.exit_code == 0 and code not in (EXIT_BAD_INPUT, EXIT_INTERNAL):
+                counts["accepted by both"] += 1
+            else:
+                failures.append(f"{where}: check {checked.exit_code}, run {code}: {said[-300:]}")
+            if "Traceback" in checked.output + said:
+                failures.append(f"{where}: a traceback")
+    print(f"fuzz of the newer tables: {counts}")  # noqa: T201 - the counts are part of the suite's output
+    assert counts["mutants"] == len(NEWER_TABLES) * NEWER_CASES
     assert not failures, f"{len(failures)} of {counts['mutants']} mutants failed:\n" + "\n".join(failures[:25])

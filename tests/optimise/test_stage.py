@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import csv
 import json
+import math
 
 from typer.testing import CliRunner
 
@@ -22,9 +23,11 @@ def test_compactor_example_runs_end_to_end(tmp_path):
     assert res.exit_code == 0, res.output
     scalars = json.loads((out / "results.json").read_text(encoding="utf-8"))["scalars"]
     assert scalars["optimise.verified"]["value"] == 1.0
-    assert scalars["optimise.best.compactor.plate_angle.max"]["unit"] == "deg"
-    assert scalars["optimise.best.compactor.plate_angle.max"]["value"] <= 20.0 * (1 + 1e-9)
-    assert scalars["optimise.best.variable.r"]["unit"] == "mm"
+    assert scalars["optimise.best.compactor.plate_angle.max"]["unit"] == "rad"
+    assert scalars["optimise.best.compactor.plate_angle.max"]["value"] <= math.radians(20.0) * (1 + 1e-9)
+    assert scalars["optimise.best.compactor.plate_angle.max"]["shown"]["unit"] == "deg"
+    assert scalars["optimise.best.variable.r"]["unit"] == "m"
+    assert scalars["optimise.best.variable.r"]["shown"]["unit"] == "mm"  # as the file writes it
     with open(out / "optimise_history.csv", encoding="utf-8") as f:
         rows = list(csv.DictReader(f))
     assert len(rows) == scalars["optimise.generations"]["value"]

@@ -206,8 +206,10 @@ def test_cli_explores_writes_parquet_and_the_design_space_section(tmp_path):
     assert best[0].startswith("design,mechanism.crank.length [m],mechanism.coupler.length [m],drive.speed [rad/s]")
     scalars = json.loads((out / "results.json").read_text())["scalars"]
     assert scalars["sweep.designs"]["value"] == 64
-    assert scalars["sweep.best.drive.speed"]["unit"] == "rpm"
-    assert 60.0 <= scalars["sweep.best.drive.speed"]["value"] <= 120.0
+    best = scalars["sweep.best.drive.speed"]
+    assert best["unit"] == "rad/s" and best["shown"]["unit"] == "rpm"  # shown in the unit the file wrote
+    assert 60.0 * math.pi / 30 <= best["value"] <= 120.0 * math.pi / 30
+    assert best["shown"]["value"] == pytest.approx(best["value"] * 30 / math.pi, rel=1e-12)
     html = (out / "report.html").read_text()
     assert "Design space of mechanism.crank.length, mechanism.coupler.length, drive.speed" in html
     assert "Best designs" in html

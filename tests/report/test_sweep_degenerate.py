@@ -28,7 +28,7 @@ def test_a_design_near_its_dead_point_is_flagged_not_regular():
     assert scalars["sweep.status"]["value"] == ["regular", "regular", "poor transmission", "does not assemble"]
     assert scalars["sweep.regular"]["value"] == [True, True, False, False]
     worst = scalars["sweep.transmission_angle.worst"]["value"]
-    assert 10.0 < worst[1] < 40.0 and np.isnan(worst[2])  # in deg; no results for a degenerate design
+    assert np.radians(10.0) < worst[1] < np.radians(40.0) and np.isnan(worst[2])  # no results for a degenerate one
     assert scalars["sweep.grashof.margin"]["value"][2] < 0 < scalars["sweep.grashof.margin"]["value"][3]
     assert scalars["sweep.regular_count"]["value"] == 2.0
     counts = {k.removeprefix("sweep.count."): v["value"] for k, v in scalars.items() if k.startswith("sweep.count.")}

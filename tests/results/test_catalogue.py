@@ -1,6 +1,7 @@
 """A walk of the catalogue of results: every key a run of a shipped example writes is declared in it, every
 declared quantity is written by some example, and every per-design quantity of a mechanism can be named as a
-``[sweep]`` column and objective and as an ``[optimise]`` objective, and comes out as the run computes it."""
+``[sweep]`` column and objective and as an ``[optimise]`` objective, and comes out as the run computes it; every
+value results.json holds is in SI."""
 
 from __future__ import annotations
 
@@ -24,6 +25,7 @@ from machdyn.results.catalogue import (
 )
 from machdyn.results.population import evaluate_population, result_names
 from machdyn.runner import run_problem
+from machdyn.units import ureg
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
@@ -32,9 +34,43 @@ MECHANISMS = ("four_bar", "slider_crank", "double_tamper_balance", "compactor_op
 
 
 @pytest.fixture(scope="module")
-def written() -> dict[str, set[str]]:
+def runs() -> dict[str, dict]:
+    """The results.json of each shipped example's run."""
+    return {p.stem: run_problem(p).results_json() for p in EXAMPLES}
+
+
+@pytest.fixture(scope="module")
+def written(runs) -> dict[str, set[str]]:
     """The result keys each shipped example's run writes to results.json."""
-    return {p.stem: set(run_problem(p).results_json()["scalars"]) for p in EXAMPLES}
+    return {name: set(data["scalars"]) for name, data in runs.items()}
+
+
+def _si_factor(unit: str) -> float:
+    """The factor from ``unit`` to its coherent SI base units: 1 for m, N*m, rad/s, Pa; 1e-3 for mm."""
+    return float(ureg.Quantity(1.0, unit or "dimensionless").to_base_units().magnitude)
+
+
+def test_every_value_of_results_json_is_in_si_and_shown_only_beside_it(runs):
+    """results.json says it is SI and holds every value in a coherent SI unit (a factor of 1 to the base units);
+    a key shown in another unit gives that value beside the SI one, converted by that unit's factor."""
+    not_si, wrong_shown, shown_units = [], [], set()
+    for name, data in runs.items():
+        assert data["units"] == "SI"
+        for key, entry in data["scalars"].items():
+            if abs(_si_factor(entry["unit"]) - 1.0) > 1e-12:
+                not_si.append(f"{name}: {key} in {entry['unit']}")
+            shown = entry.get("shown")
+            if shown is None or entry["value"] is None or isinstance(entry["value"], str | bool):
+                continue
+            shown_units.add(shown["unit"])
+            factor = float(ureg.Quantity(1.0, entry["unit"] or "dimensionless").to(shown["unit"]).magnitude)
+            si = np.asarray(entry["value"], dtype=float)
+            if not np.allclose(si * factor, np.asarray(shown["value"], dtype=float), rtol=1e-12, atol=0.0,
+                               equal_nan=True):
+                wrong_shown.append(f"{name}: {key}")
+    assert not not_si, not_si
+    assert not wrong_shown, wrong_shown
+    assert {"deg", "mm", "rpm"} <= shown_units  # the display units are there, beside the SI values
 
 
 def test_every_key_a_run_writes_is_in_the_catalogue(written):

@@ -15,12 +15,19 @@ from machdyn.reading import load_problem
 from machdyn.results.catalogue import canonical, find
 from machdyn.results.names import nearest, results_to_choose
 from machdyn.runner import check_problem
+from reproductions import (
+    PARTS,
+    SHAFT_LINE,
+    SHAFT_OPTIMISE,
+    parts_column,
+    parts_objective,
+    shaft_column,
+    shaft_objective,
+)
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
-SHAFT = (EXAMPLES / "shaft_inline_four_phases_optimise.toml").read_text(encoding="utf-8")
-OPTIMISE = SHAFT[SHAFT.index("[optimise]"):]
-LINE = SHAFT[: SHAFT.index("[optimise]")]
+LINE, OPTIMISE = SHAFT_LINE, SHAFT_OPTIMISE
 
 
 def _refused(text: str) -> list[tuple[str, str]]:
@@ -31,14 +38,12 @@ def _refused(text: str) -> list[tuple[str, str]]:
 
 @pytest.mark.parametrize("key", ["shaft.bearing.frnt.peak", "shaft.frame.point.nowhere.rms_velocity"])
 def test_a_typo_under_a_shaft_lines_named_keys_is_refused_in_a_sweep_column(key):
-    text = LINE + f'[sweep]\nparameter = "cylinders[1].phase"\nvalues = ["90 deg", "180 deg"]\ncolumns = ["{key}"]\n'
-    [(path, message)] = _refused(text)
+    [(path, message)] = _refused(shaft_column(key))
     assert path == "sweep.columns[0]" and f"'{key}' is not a result of this shaft-line file" in message
 
 
 def test_a_typo_under_a_shaft_lines_bearings_is_refused_in_an_objective_with_the_bearings_listed():
-    text = LINE + OPTIMISE.replace('result = "shaft.engine.primary_couple"', 'result = "shaft.bearing.frnt.peak"')
-    [(path, message)] = _refused(text)
+    [(path, message)] = _refused(shaft_objective("shaft.bearing.frnt.peak"))
     assert path == "optimise.objectives[0].result"
     assert "did you mean 'shaft.bearing.front.peak'?" in message and "angles" not in message
     assert ("results of shaft.bearing.*: shaft.bearing.centre.peak, shaft.bearing.front.peak, "
@@ -126,3 +131,43 @@ def test_an_infeasible_shaft_line_search_speaks_of_runs_not_of_crank_angles():
     [failed] = [c for c in result.failed_checks if c.startswith("No design within the bounds")]
     assert "builds and runs, reporting every result named" in failed and "the closest design ran" in failed
     assert "angles" not in failed and "shaft.engine.gross_force <= 1 N: violated" in failed
+
+
+@pytest.mark.parametrize(("key", "meant"), [
+    ("parts.bearing.Q.rating_life", "parts.bearing.O.rating_life"),      # a bearing the file does not declare
+    ("parts.bearing.A.peak_presure", "parts.bearing.A.peak_pressure"),   # a figure misspelt
+    ("parts.pin.D.peak_shear_stress", "parts.pin.B.peak_shear_stress"),  # a joint with no pin
+    ("parts.bearing.A.mean_pv", "parts.bearing.A.peak_pressure"),        # a figure the bearing has no limit for
+])
+@pytest.mark.parametrize(("study", "path"), [(parts_column, "sweep.columns[0]"),
+                                             (parts_objective, "optimise.objectives[0].result")])
+def test_a_part_the_file_does_not_declare_is_refused_by_check_and_run_alike(key, meant, study, path):
+    """The parts' keys are made from the file's own names; a key of a part (or a figure) the file does not declare
+    is refused with the nearest of the file's parts and its family listed, by check and by run in the same words."""
+    text = study(key)
+    [(where, message)] = _refused(text)
+    assert where == path and f"'{key}'" in message and f"did you mean '{meant}'?" in message
+    assert meant in message.split("(results of parts.")[1]  # the family of the file's parts, listed
+    from machdyn.runner import run_problem
+
+    with pytest.raises(ProblemFileError) as info:
+        run_problem(text)
+    assert info.value.problems == [(where, message)]
+
+
+@pytest.mark.parametrize("study", [parts_column, parts_objective])
+def test_the_parts_the_file_declares_are_results_a_study_may_name(study):
+    for key in ("parts.bearing.O.rating_life", "parts.bearing.A.peak_pressure", "parts.pin.B.peak_shear_stress"):
+        check_problem(study(key))
+
+
+def test_the_parts_keys_are_those_a_run_reports_with_their_units():
+    from machdyn.runner import run_problem
+    from machdyn.studies.per_design import capability_results
+
+    listed = {k: u for k, u in capability_results(load_problem(PARTS)).items() if k.startswith("parts.")}
+    run = run_problem(PARTS).results
+    reported = {k for k in run.values if k.startswith("parts.")}
+    # a link broken in its first cycle reports its peak stress instead; this file has no link
+    assert set(listed) == reported
+    assert all(run.label(k).unit == u for k, u in listed.items())

@@ -14,10 +14,7 @@ from machdyn.cli import app
 from machdyn.errors import InputError
 from machdyn.shafts.field import MAX_CONDITION, Reading, TrialRun, single_plane, two_plane
 from machdyn.shafts.records import read_run
-
-ROOT = Path(__file__).resolve().parents[2]
-RECORDS = ROOT / "examples" / "shaft_field_records.toml"
-FIELD = ROOT / "examples" / "shaft_field_balancing.toml"
+from reproductions import tiny_trial, vibration_reference
 
 
 def _both(path: Path, tmp_path: Path) -> tuple[int, int, str]:
@@ -31,7 +28,7 @@ def test_a_vibration_channel_as_the_phase_reference_is_refused_by_check_and_run(
     """With reference = "drive_end" the records example balanced to 333 g at 158 deg instead of 24 g at 70 deg:
     the channel is a vibration sensor (mm/s), not a keyphasor."""
     bad = tmp_path / "vibration_reference.toml"
-    bad.write_text(RECORDS.read_text().replace('reference = "key"', 'reference = "drive_end"'))
+    bad.write_text(vibration_reference())
     check, run, output = _both(bad, tmp_path)
     assert check == run == 2, output
     assert "field_records.original" in output and "keyphasor or tachometer" in output
@@ -62,11 +59,8 @@ def test_a_reference_in_a_vibration_unit_or_shaped_like_a_vibration_is_refused(t
 
 def test_a_trial_mass_that_hardly_changes_the_readings_is_refused(tmp_path):
     """A trial that changed one reading by 0.0001 mm/s gave a 1.74 t correction with exit 0."""
-    text = FIELD.read_text().replace('{ amplitude = 5.2, phase = "101 deg" }',
-                                     '{ amplitude = 8.6001, phase = "62 deg" }')
-    text = text.replace('{ amplitude = 5.0, phase = "165 deg" }', '{ amplitude = 6.1, phase = "147 deg" }')
     bad = tmp_path / "tiny_trial.toml"
-    bad.write_text(text)
+    bad.write_text(tiny_trial())
     check, run, output = _both(bad, tmp_path)
     assert check == run == 2, output
     assert "field_balancing" in output and "30% in amplitude or 30 deg in phase" in output

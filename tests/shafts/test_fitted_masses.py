@@ -33,16 +33,16 @@ def test_rounded_masses_are_reported_in_grams_and_give_the_residual(tmp_path):
     assert set(fitted) == {"shaft.balance.L.hole5.fitted_mass", "shaft.balance.L.hole6.fitted_mass",
                            "shaft.balance.R.hole2.fitted_mass", "shaft.balance.R.hole3.fitted_mass"}
     for key, v in fitted.items():
-        assert v["unit"] == "g"
-        assert v["value"] == pytest.approx(round(v["value"]), abs=1e-9)  # whole grams
+        assert v["unit"] == "kg" and v["shown"]["unit"] == "g"  # SI, shown in the file's unit
+        assert v["shown"]["value"] == pytest.approx(round(v["shown"]["value"]), abs=1e-9)  # whole grams
         exact = scalars[key.replace("fitted_mass", "mass")]
-        assert exact["unit"] == "g" and abs(v["value"] - exact["value"]) <= 0.5 + 1e-9
+        assert exact["shown"]["unit"] == "g" and abs(v["value"] - exact["value"]) <= 0.5e-3 + 1e-12
     assert "rounded to 1 g" in output  # the summary's label
     assert re.search(r"as fitted in plane L, rounded to 1 g.*hole 5: \d+ g at 180°", report)
     # the residual is the one of the fitted masses, computed here on its own: 8 holes 45 deg apart from 0 deg
     discs = [Mass("d1", 0.040, 0.25, np.radians(0), 0.15), Mass("d2", 0.060, 0.25, np.radians(75), 0.32),
              Mass("d3", 0.045, 0.25, np.radians(200), 0.48), Mass("d4", 0.030, 0.25, np.radians(290), 0.65)]
-    holes = [Mass(k, fitted[k]["value"] * 1e-3, 0.24, np.radians(45 * (int(k.split("hole")[1][0]) - 1)),
+    holes = [Mass(k, fitted[k]["value"], 0.24, np.radians(45 * (int(k.split("hole")[1][0]) - 1)),
                   0.1 if ".L." in k else 0.7) for k in fitted]
     speed = 1480 * np.pi / 30
     after = rotating_loads(discs + holes, speed)

@@ -7,6 +7,7 @@ import csv
 import json
 from pathlib import Path
 
+import numpy as np
 import pytest
 from typer.testing import CliRunner
 
@@ -38,7 +39,7 @@ def test_rotor_example_reports_corrections_grade_and_series(runner, tmp_path):
     result = runner.invoke(app, ["run", str(ROTOR), "--out", str(out), "-q"])
     assert result.exit_code == 0, result.output
     scalars = json.loads((out / "results.json").read_text())["scalars"]
-    assert scalars["shaft.grade.U_per"]["unit"] == "g*mm"
+    assert scalars["shaft.grade.U_per"]["unit"] == "kg*m" and scalars["shaft.grade.U_per"]["shown"]["unit"] == "g*mm"
     assert scalars["shaft.grade.margin"]["value"] > 1.0
     assert {"shaft.balance.L.mass", "shaft.balance.R.angle", "shaft.balance.L.hole6.mass"} <= set(scalars)
     rows = list(csv.reader((out / "shaft_loads.csv").read_text().splitlines()))
@@ -55,7 +56,8 @@ def test_engine_and_field_examples_run(runner, tmp_path):
     orders = list(csv.reader((tmp_path / ENGINE.stem / "shaft_orders.csv").read_text().splitlines()))
     assert len(orders) == 7
     scalars = json.loads((tmp_path / FIELD.stem / "results.json").read_text())["scalars"]
-    assert scalars["shaft.field.drive_end.mass"]["unit"] == "g"
+    assert scalars["shaft.field.drive_end.mass"]["unit"] == "kg"
+    assert scalars["shaft.field.drive_end.mass"]["shown"]["unit"] == "g"  # in the file's unit
 
 
 def test_correction_planes_at_one_position_are_refused(runner, tmp_path):
@@ -124,7 +126,8 @@ def test_engine_on_mounts_reports_modes_and_a_free_frame_is_refused(runner, tmp_
     assert result.exit_code == 0, result.output
     scalars = json.loads((out / "results.json").read_text())["scalars"]
     assert {f"shaft.frame.mode{k}.frequency" for k in range(1, 7)} <= set(scalars)
-    assert scalars["shaft.frame.point.head.rms_velocity"]["unit"] == "mm/s"
+    assert scalars["shaft.frame.point.head.rms_velocity"]["unit"] == "m/s"
+    assert scalars["shaft.frame.point.head.rms_velocity"]["shown"]["unit"] == "mm/s"
     text = ENGINE.read_text()
     start = text.index('[[frame.mounts]]\nname = "axial"')
     free = tmp_path / "free.toml"
@@ -164,7 +167,7 @@ def test_phase_search_finds_the_three_throw_crank_and_writes_it_as_a_problem(run
     assert result.exit_code == 0, result.output
     s = json.loads((out / "results.json").read_text())["scalars"]
     got = sorted([s["shaft.phases.c2.phase"]["value"], s["shaft.phases.c3.phase"]["value"]])
-    assert got == pytest.approx([120.0, 240.0], abs=1e-9)
+    assert got == pytest.approx([np.radians(120.0), np.radians(240.0)], abs=1e-11)
     assert s["shaft.phases.best.primary_force"]["value"] <= 1e-9 * s["shaft.phases.given.primary_force"]["value"]
     again = runner.invoke(app, ["run", str(out / "best_phases.toml"), "--out", str(tmp_path / "again"), "-q"])
     assert again.exit_code == 0, again.output
@@ -213,8 +216,9 @@ def test_published_two_plane_field_readings_through_a_problem_file(runner, tmp_p
     result = runner.invoke(app, ["run", str(path), "--out", str(out), "-q"])
     assert result.exit_code == 0, result.output
     scalars = json.loads((out / "results.json").read_text())["scalars"]
-    assert scalars["shaft.field.plane1.mass"]["unit"] == "g"
-    assert scalars["shaft.field.plane1.mass"]["value"] == pytest.approx(1.979, abs=5e-4)
-    assert scalars["shaft.field.plane2.mass"]["value"] == pytest.approx(1.071, abs=5e-4)
-    assert scalars["shaft.field.plane1.angle"]["value"] == pytest.approx(236.2, abs=0.05)
-    assert scalars["shaft.field.plane2.angle"]["value"] == pytest.approx(121.8, abs=0.05)
+    assert scalars["shaft.field.plane1.mass"]["unit"] == "kg"
+    assert scalars["shaft.field.plane1.mass"]["shown"]["unit"] == "g"
+    assert scalars["shaft.field.plane1.mass"]["value"] == pytest.approx(1.979e-3, abs=5e-7)
+    assert scalars["shaft.field.plane2.mass"]["value"] == pytest.approx(1.071e-3, abs=5e-7)
+    assert scalars["shaft.field.plane1.angle"]["value"] == pytest.approx(np.radians(236.2), abs=np.radians(0.05))
+    assert scalars["shaft.field.plane2.angle"]["value"] == pytest.approx(np.radians(121.8), abs=np.radians(0.05))

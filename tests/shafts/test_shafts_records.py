@@ -47,11 +47,11 @@ def test_the_records_example_recovers_the_unbalance_it_was_made_with(tmp_path):
     result = CliRunner().invoke(app, ["run", str(EXAMPLE), "--out", str(tmp_path / "o"), "-q"])
     assert result.exit_code == 0, result.output
     s = json.loads((tmp_path / "o" / "results.json").read_text())["scalars"]
-    assert s["shaft.records.plane1.mass"]["value"] == pytest.approx(24.0, rel=0.01)
-    assert s["shaft.records.plane1.angle"]["value"] == pytest.approx(70.0, abs=0.5)
-    assert s["shaft.records.plane2.mass"]["value"] == pytest.approx(15.0, rel=0.01)
-    assert s["shaft.records.plane2.angle"]["value"] == pytest.approx(220.0, abs=0.5)
-    assert s["shaft.records.speed"]["value"] == pytest.approx(1485.0, rel=1e-3)
+    assert s["shaft.records.plane1.mass"]["value"] == pytest.approx(24.0e-3, rel=0.01)  # kg
+    assert s["shaft.records.plane1.angle"]["value"] == pytest.approx(np.radians(70.0), abs=np.radians(0.5))
+    assert s["shaft.records.plane2.mass"]["value"] == pytest.approx(15.0e-3, rel=0.01)
+    assert s["shaft.records.plane2.angle"]["value"] == pytest.approx(np.radians(220.0), abs=np.radians(0.5))
+    assert s["shaft.records.speed"]["value"] == pytest.approx(1485.0 * np.pi / 30, rel=1e-3)  # rad/s
     assert "Field balancing from records" in (tmp_path / "o" / "report.html").read_text()
 
 

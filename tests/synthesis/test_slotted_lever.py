@@ -88,7 +88,8 @@ def test_problem_file_runs_and_reports(task, tmp_path):
     run = run_problem(path)
     s = run.scalars
     assert s["synthesis.best.time_ratio"]["value"] == pytest.approx(1.8, rel=1e-9)
-    assert s["synthesis.best.stroke"] == {"value": pytest.approx(300.0, rel=1e-9), "unit": "mm"}
+    assert s["synthesis.best.stroke"] == {"value": pytest.approx(0.3, rel=1e-9), "unit": "m",
+                                          "shown": {"value": pytest.approx(300.0, rel=1e-9), "unit": "mm"}}
     outcome = run.outcomes["synthesis"]
     slots = outcome.series["synthesis_candidates"]["slot_force_per_ram_force"][0]
     assert np.all(np.diff(slots) >= 0.0)  # ranked: smallest slot force first

@@ -27,8 +27,11 @@ def test_cli_run_writes_vibration_results_and_report(tmp_path):
     result = CliRunner().invoke(app, ["run", str(RECORD_EXAMPLE), "--out", str(out)])
     assert result.exit_code == 0, result.output
     scalars = json.loads((out / "results.json").read_text())["scalars"]
-    assert scalars["frame.rms_velocity.before.front"]["unit"] == "mm/s"
-    assert scalars["signals.mean_reduction"]["unit"] == "%"
+    assert scalars["frame.rms_velocity.before.front"]["unit"] == "m/s"
+    assert scalars["frame.rms_velocity.before.front"]["shown"]["unit"] == "mm/s"
+    assert scalars["signals.mean_reduction"]["unit"] == "" and scalars["signals.mean_reduction"]["shown"]["unit"] == "%"
+    assert scalars["signals.mean_reduction"]["shown"]["value"] == pytest.approx(
+        100 * scalars["signals.mean_reduction"]["value"], rel=1e-12)  # a fraction, shown in %
     # The same prediction twice: through the frame table and next to the measured channel (rel 1e-12).
     assert scalars["signals.predicted_velocity_rms.before.front"]["value"] == pytest.approx(
         scalars["frame.rms_velocity.before.front"]["value"], rel=1e-12)

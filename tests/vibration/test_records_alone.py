@@ -55,7 +55,7 @@ def test_signals_file_without_a_machine_is_checked_and_runs(tmp_path):
     # Only the 3x line (15 Hz) is in the default 10-1000 Hz band: RMS = A3 / sqrt 2 (Parseval; the record holds
     # whole periods of both lines, so the ideal band-pass is exact up to the printed digits).
     assert results["scalars"]["signals.velocity_rms.before.bearing"]["value"] == pytest.approx(
-        A3 / math.sqrt(2) * 1e3, rel=1e-6)
+        A3 / math.sqrt(2), rel=1e-6)  # m/s
     report = (tmp_path / "out" / "report.html").read_text()
     assert "Measured vibration" in report and "fan, as found" in report
     assert (tmp_path / "out" / "signals_psd.csv").is_file()

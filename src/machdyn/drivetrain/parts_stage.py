@@ -270,6 +270,31 @@ def population(problem: Any, forces: Any) -> dict[str, Any] | None:
     return found
 
 
+def result_keys(problem: Any) -> dict[str, str]:
+    """{key: SI unit} of the checks a run of ``problem``'s ``[parts]`` reports, one per part and figure, made from
+    the file's own joint and body names (``parts.bearing.O.rating_life``): what a study may name. A link broken in
+    its first cycle reports its ``peak_stress`` instead of its safety factors."""
+    table = problem.parts
+    keys: dict[str, str] = {}
+    for b in table.bearings:
+        key = f"parts.bearing.{b.joint}."
+        if b.kind in ("ball", "roller"):
+            keys[key + "rating_life"] = "s"
+        else:
+            keys |= {key + f: u for f, u, limit in (("peak_pressure", "Pa", b.max_pressure),
+                                                     ("mean_pv", "Pa*m/s", b.max_pv)) if limit is not None}
+    for pin in table.pins:
+        key = f"parts.pin.{pin.joint}."
+        limits = (("peak_shear_stress", pin.allowable_shear), ("peak_bearing_pressure", pin.allowable_pressure))
+        keys |= {key + f: "Pa" for f, limit in limits if limit is not None}
+    for link in table.links:
+        key = f"parts.link.{link.body}."
+        keys |= {key + "fatigue_safety": "", key + "peak_stress": "Pa"}
+        keys |= {key + f: "" for f, given in (("yield_safety", link.yield_strength),
+                                              ("fatigue_damage", link.required_cycles)) if given is not None}
+    return keys
+
+
 LABELS = {"parts.utilisation.max": Label("Parts: largest utilisation of any check", "", over="scalar", better="lower")}
 
 CAPABILITY = Capability(
@@ -284,4 +309,5 @@ CAPABILITY = Capability(
     after=("flywheel",),
     result_type=PartsResult,
     population="machdyn.drivetrain.parts_stage:population",
+    result_keys=result_keys,
 )

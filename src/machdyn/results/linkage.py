@@ -389,7 +389,8 @@ def load_powers(analysis: Any) -> dict[str, tuple[float, float]]:
 
 
 def analysis_scalars(analysis: Any, mechanism: _model.Mechanism | None = None) -> dict[str, dict[str, Any]]:
-    """Every scalar result of an analysis as ``{key: {"value", "unit"}}`` in display units (angles in
-    degrees), as written to results.json; for N design variants each value is a list of N floats."""
+    """Every scalar result of an analysis as ``{key: {"value", "unit"}}`` in SI (``"shown"`` in the display unit
+    where that differs: angles in degrees), as written to results.json; for N design variants each value is a
+    list of N floats."""
     values, units = linkage_scalars(analysis, mechanism)
     return collect(values, LINKAGE_LABELS, units).as_json()

@@ -1,4 +1,8 @@
-"""Results of a run: SI values by key, each with its label and unit, shown in its display unit."""
+"""Results of a run: SI values by key, each with its label and unit, shown in its display unit.
+
+results.json holds every value in SI (:data:`UNITS`); display units belong to the summary, the report and the
+command line's table only.
+"""
 
 from __future__ import annotations
 
@@ -9,6 +13,9 @@ from typing import Any
 from ..notebook import ShownInNotebook
 from .catalogue import label_for
 from .labels import Label, display_factor
+
+#: The unit system of every ``value`` in results.json (its top-level ``"units"``).
+UNITS = "SI"
 
 
 def _scaled(value: Any, factor: float) -> Any:
@@ -43,13 +50,17 @@ class Results(ShownInNotebook):
         return lab.text, _scaled(self.values[key], display_factor(lab.unit, unit)), unit
 
     def as_json(self) -> dict[str, dict[str, Any]]:
-        """``{key: {"value", "unit"}}`` in display units: the ``scalars`` of results.json."""
-        out = {}
-        for key in self.values:
-            _text, value, unit = self.shown(key)
-            out[key] = {"value": value, "unit": unit}
+        """The ``scalars`` of results.json: ``{key: {"value", "unit"}}`` with the value in SI and the SI unit of
+        its label (m, rad, rad/s, N*m, kg ...); a key shown in another unit (mm, deg, rpm) adds ``"shown":
+        {"value", "unit"}``, the value as the summary and the report give it."""
+        out: dict[str, dict[str, Any]] = {}
+        for key, value in self.values.items():
+            entry: dict[str, Any] = {"value": value, "unit": self.labels[key].unit}
+            _text, shown, unit = self.shown(key)
+            if unit != entry["unit"]:
+                entry["shown"] = {"value": shown, "unit": unit}
+            out[key] = entry
         return out
-
 
 def collect(values: Mapping[str, Any], known: Mapping[str, Label], units: Mapping[str, str]) -> Results:
     """Results from SI ``values``, labelled from ``known`` (and patterns), with ``units`` for run-time keys."""

@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import MachdynError
-from ..kinds import KINDS, catalogue, kind
+from ..kinds import CAPABILITIES, KINDS, capability, catalogue, kind
 from ..results.catalogue import find
 
 #: The tables whose results are not a design's: the studies themselves.
@@ -51,21 +51,40 @@ def capability_results(problem: Any) -> dict[str, str]:
         present -= set(KINDS)
     declared = {q.key: q.unit for q in catalogue()
                 if q.producer in present and q.kind == "number" and "<" not in q.key}
+    for table in sorted(present - set(KINDS)):
+        declared |= table_keys(problem, table) or {}
     return declared | (made or {})
+
+
+def table_keys(problem: Any, table: str) -> dict[str, str] | None:
+    """{key: SI unit} of the results the capability ``table`` of ``problem`` makes from the file's names
+    (:attr:`~machdyn.pipeline.Capability.result_keys`: ``parts.bearing.O.rating_life``), None for a table that
+    does not list them."""
+    if table not in CAPABILITIES or getattr(problem, table, None) is None:
+        return None
+    listing = capability(table).result_keys
+    return dict(listing(problem)) if listing is not None else None
 
 
 def unit_of(key: str, problem: Any) -> str | None:
     """The SI unit of a result ``key`` of ``problem`` declared by one of its tables (a pattern's too), or None if
     none declares it. A pattern of a kind that lists the keys it makes from the file's names
     (:attr:`~machdyn.pipeline.ProblemKind.result_keys`) accepts only those: ``shaft.bearing.<typo>.peak`` is no
-    result of a file without that bearing."""
+    result of a file without that bearing; so for a capability's keys made from the file's names
+    (:attr:`~machdyn.pipeline.Capability.result_keys`: ``parts.bearing.<joint>.rating_life`` of a joint the
+    file's ``[parts]`` does not declare)."""
     present = {t for t in _tables(problem) if getattr(problem, t, None) is not None}
     found = find(key, catalogue())
     if found is None or found[0].producer not in present or found[0].kind != "number":
         return None
-    made = made_keys(problem) if found[0].is_pattern else None
-    if made is not None and found[0].producer in KINDS:
-        return made.get(key)
+    if found[0].is_pattern and found[0].producer in KINDS:
+        made = made_keys(problem)
+        if made is not None:
+            return made.get(key)
+    elif found[0].is_pattern:  # a capability's key made from the file's names: a part the file declares
+        made = table_keys(problem, found[0].producer)
+        if made is not None:
+            return made.get(key)
     return found[0].unit
 
 

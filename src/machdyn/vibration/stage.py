@@ -56,9 +56,11 @@ def _frame_values(study: FrameStudy) -> tuple[dict, dict, list[str]]:
                 f"RMS force through {m.name} to the foundation, {label}", "N")
     if study.acceleration is not None:
         for name, r in zip(study.points, study.acceleration.reduction, strict=True):
-            put(f"frame.acceleration_reduction.{name}", r, f"Reduction of RMS acceleration at {name}", "%")
-        put("frame.mean_acceleration_reduction", study.acceleration.mean_reduction,
-            "Reduction of the mean RMS acceleration over the points", "%", show=True)
+            # a fraction, as every result is kept (SI: dimensionless), shown in %
+            put(f"frame.acceleration_reduction.{name}", r / 100.0, f"Reduction of RMS acceleration at {name}", "",
+                "%")
+        put("frame.mean_acceleration_reduction", study.acceleration.mean_reduction / 100.0,
+            "Reduction of the mean RMS acceleration over the points", "", "%", show=True)
     return values, labels, summary
 
 
@@ -151,9 +153,9 @@ def signal_outcome(study: SignalStudy) -> Outcome:
     if study.reduction is not None:
         for name, r in study.reduction.items():
             key = "signals.mean_reduction" if name == "mean" else f"signals.reduction.{name}"
-            values[key] = r
+            values[key] = r / 100.0  # a fraction, shown in %
             labels[key] = Label("Reduction of the mean measured RMS velocity" if name == "mean"
-                                else f"Reduction of measured RMS velocity, {name}", "%")
+                                else f"Reduction of measured RMS velocity, {name}", "", "%")
         summary.append("signals.mean_reduction")
     first = study.before.channels[0]
     psd: dict = {"frequency": (first.frequencies, "Hz")}
