@@ -128,13 +128,13 @@ def test_a_cam_file_may_give_the_angle_of_rise_instead_of_the_flank_radius(tmp_p
     from machdyn.cli import app
     from machdyn.runner import run_problem
 
-    text = _arc_file().replace('flank_radius = "90 mm"\n', "")
+    text = circular_arc_cam().replace('flank_radius = "90 mm"\n', "")
     run = run_problem(text)
-    given = run_problem(_arc_file())
+    given = run_problem(circular_arc_cam())
     solved = run.outcomes["cam"].results.model.program
     assert np.allclose(solved.segments[0].contour, given.outcomes["cam"].results.model.program.segments[0].contour,
                        rtol=1e-9, atol=0.0)
     bad = tmp_path / "bad.toml"
-    bad.write_text(_arc_file(angle=30.0).replace('flank_radius = "90 mm"\n', ""), encoding="utf-8")
+    bad.write_text(circular_arc_cam(angle=30.0).replace('flank_radius = "90 mm"\n', ""), encoding="utf-8")
     checked = CliRunner().invoke(app, ["check", str(bad)])
     assert checked.exit_code == 2 and "cam.segments[0].angle" in checked.stderr and "above" in checked.stderr
