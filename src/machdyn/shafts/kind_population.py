@@ -21,7 +21,7 @@ import numpy as np
 
 from .engine_population import engine_orders_population
 from .model import build
-from .population import two_plane_population, unbalance_arrays
+from .population import grade_population, two_plane_population, unbalance_arrays
 from .rotating import cycle
 
 CYLINDER_FIELDS = ("position", "phase", "axis", "crank", "rod", "reciprocating_mass", "rotating_mass")
@@ -98,7 +98,7 @@ def _two_term(cyl: dict[str, np.ndarray], speed: np.ndarray, reference: np.ndarr
     return out
 
 
-def _wanted(keys: Iterable[str], line: Any) -> dict[str, str] | None:
+def _wanted(keys: Iterable[str], line: Any, grade: Any = None) -> dict[str, str] | None:
     """key -> which figure gives it, or None if some key is outside this form."""
     planes = [p.name for p in line.planes]
     out: dict[str, str] = {}
@@ -113,8 +113,48 @@ def _wanted(keys: Iterable[str], line: Any) -> dict[str, str] | None:
         elif key.startswith("shaft.balance.") and key.split(".")[2:3] and key.split(".")[2] in planes and \
                 key.split(".")[3:] in (["mass"], ["angle"]):
             out[key] = "balance"
+        elif key.startswith("shaft.grade.") and problem_grade_key(key, line, grade):
+            out[key] = "grade"
         else:
             return None
+    return out
+
+
+def problem_grade_key(key: str, line: Any, grade: Any) -> bool:
+    """Whether ``key`` is a result of the file's ``[grade]`` check (its bearing planes' names included)."""
+    if grade is None:
+        return False
+    names = list(grade.bearings or [b.name for b in line.bearings][:2])
+    plain = {"U_per", "achieved_G", "margin"}
+    made = {f"{n}.{what}" for n in names for what in ("allowed", "residual")}
+    return key.removeprefix("shaft.grade.") in plain | made
+
+
+def _grade(spec: Any, line: Any, speed: np.ndarray, mas: dict[str, np.ndarray], fit: dict | None,
+           valid: np.ndarray) -> dict[str, np.ndarray]:
+    """The ISO 21940-11 figures of N rotors (:func:`.population.grade_population`): the line's own masses, with
+    the two fitted corrections for a balanced rotor, judged in the file's two bearing planes (as
+    :func:`.model.analyse` judges one design)."""
+    names = tuple(spec.bearings or [b.name for b in line.bearings][:2])
+    za, zb = (next(b.position for b in line.bearings if b.name == n) for n in names)
+    centre = 0.5 * (za + zb) if spec.centre is None else spec.centre
+    m, r, a, z = mas["mass"], mas["radius"], mas["angle"], mas["position"]
+    if fit is not None:  # the corrections as fitted, at their planes' radii
+        left, right = line.planes
+        extra_m = np.stack([fit["L.mass"], fit["M.mass"]], axis=1)
+        extra_a = np.stack([fit["L.angle"], fit["M.angle"]], axis=1)
+        n = len(speed)
+        m, a = np.concatenate([m, np.where(valid[:, None], extra_m, 0.0)], axis=1), np.concatenate(
+            [a, np.where(valid[:, None], extra_a, 0.0)], axis=1)
+        r = np.concatenate([r, np.tile([left.radius, right.radius], (n, 1))], axis=1)
+        z = np.concatenate([z, np.tile([left.position, right.position], (n, 1))], axis=1)
+    g = grade_population(spec.G, spec.rotor_mass, speed, centre, za, zb, m, r, a, z)
+    out = {"shaft.grade.U_per": g["U_per"], "shaft.grade.achieved_G": g["achieved_G"],
+           "shaft.grade.margin": np.where(np.isfinite(g["margin"]), g["margin"], np.nan)}
+    for name, side in zip(names, ("A", "B"), strict=True):
+        out[f"shaft.grade.{name}.allowed"] = g[f"{side}.allowed"]
+        out[f"shaft.grade.{name}.residual"] = g[f"{side}.residual"]
+    valid &= g["valid"]
     return out
 
 
@@ -124,10 +164,11 @@ def population(problem: Any, values: Mapping[str, Any], keys: Iterable[str]) -> 
     line, problems = build(problem)
     if problems or line is None:
         return None
-    wanted = _wanted(keys, line)
+    wanted = _wanted(keys, line, problem.grade)
     if wanted is None:
         return None
-    if "balance" in wanted.values() and (len(line.planes) != 2 or problem.balance.target != "rotating"
+    fitted = "balance" in wanted.values() or ("grade" in wanted.values() and problem.grade.state == "balanced")
+    if fitted and (len(line.planes) != 2 or problem.balance.target != "rotating"
                                          or problem.balance.resolution is not None or any(line.holes)
                                          or line.reciprocating_share > 0):
         return None  # a single plane, holes, rounding or the first harmonic: each design is run
@@ -168,11 +209,13 @@ def population(problem: Any, values: Mapping[str, Any], keys: Iterable[str]) -> 
         out |= {"shaft.unbalance": np.abs(s0), "shaft.couple_unbalance": np.abs(s1),
                 "shaft.unbalance.gross": np.abs(u).sum(axis=1),
                 "shaft.couple_unbalance.gross": np.abs(u * (z - at["reference"][:, None])).sum(axis=1)}
-    if "balance" in wanted.values():
+    if fitted:
         left, right = line.planes
         fit = two_plane_population(m, r, a, z, left.position, right.position, left.radius, right.radius)
         valid &= fit["valid"]
         for side, plane in (("L", left), ("M", right)):
             out[f"shaft.balance.{plane.name}.mass"] = fit[f"{side}.mass"]
             out[f"shaft.balance.{plane.name}.angle"] = fit[f"{side}.angle"]
+    if "grade" in wanted.values():
+        out |= _grade(problem.grade, line, at["speed"], mas, fit if fitted else None, valid)
     return {k: np.where(valid, np.asarray(out[k], dtype=float), np.nan) for k in wanted}
