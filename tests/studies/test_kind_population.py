@@ -23,6 +23,7 @@ from machdyn.runner import design_results, run_problem
 from machdyn.shafts.kind_population import population as shaft_population
 from machdyn.studies.optimisation import by_runs
 from machdyn.studies.optimisation.study import optimise, setup
+from machdyn.studies.sweep.runs import run_sweep
 
 ROOT = Path(__file__).resolve().parents[2]
 CAM = ROOT / "examples" / "cam_base_circle_optimise.toml"
@@ -158,3 +159,24 @@ def test_a_variable_the_form_cannot_vary_falls_back_to_the_runs_with_a_message()
     results, _costs, _viol = ev(x)
     alone = design_results(ev.space.problem_at(x[0]))
     assert results["cam.max_pressure_angle"][0] == alone["cam.max_pressure_angle"]
+
+
+def test_a_cam_sweep_through_the_population_form_equals_the_variants_runs():
+    """A sweep of the roller radius whose columns the cam's population form gives: its values are those of each
+    variant's own run; a variant the run refuses (a roller follower without a roller) is run whole, so that its
+    status names why."""
+    text = CAM.read_text(encoding="utf-8").split("[optimise]")[0] + """
+[sweep]
+parameter = "cam.follower.roller_radius"
+start = "0 mm"
+stop = "12 mm"
+count = 3
+columns = ["cam.max_pressure_angle", "cam.min_base_radius_pressure"]
+"""
+    problem = load_problem(text)
+    done = run_sweep(problem, design_results)
+    values = {"cam.follower.roller_radius": np.asarray(done.plan.values_si, dtype=float)}
+    keys = list(done.asked)
+    _same({k: done.columns[k] for k in keys}, _runs(problem, values, keys), keys)
+    status = list(done.columns["status"])
+    assert status[1:] == ["regular", "regular"] and status[0].startswith("not built")

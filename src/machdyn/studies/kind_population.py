@@ -5,7 +5,9 @@ design (:mod:`machdyn.studies.per_design`).
 ``[optimise]`` (:mod:`machdyn.studies.optimisation.by_runs`) and ``[sweep]`` (:mod:`machdyn.studies.sweep.runs`)
 ask :func:`kind_population_form` once, with the file's own design, whether the form gives every result they need
 for the paths their designs set: if it does, every population is evaluated by it and the study says so; if not,
-they run each design whole and say why.
+they run each design whole and say why. A sweep runs whole only the variants the form gives no value for (a
+variant that cannot be built, or whose run would fail), so that their status names the reason; with the form, a
+variant's status does not name the design checks its run would fail (a pressure angle over its limit).
 """
 
 from __future__ import annotations
@@ -76,3 +78,17 @@ def kind_population_form(problem: Any, keys: Iterable[str],
         return None, (f"each design run whole: the {name} kind's population form does not give "
                       f"{', '.join(wanted)} for designs that set {varied}")
     return ready, ""
+
+
+def sweep_at_once(problem: Any, parameter: str, values_si: Any, asked: Iterable[str]) -> dict[str, np.ndarray] | None:
+    """The columns ``asked`` of a one-quantity sweep's variants by the kind's population form, (N,) arrays (NaN
+    where a variant must be run whole to learn why it has no value), or None when the form cannot give them; the
+    user is told which."""
+    values = {parameter: np.asarray(values_si, dtype=float)}
+    ready, why = kind_population_form(problem, asked, values)
+    found = ready(values) if ready is not None else None
+    if found is None:
+        tell(f"sweep of {parameter}: {why or 'each design run whole'}")
+        return None
+    tell(f"sweep of {parameter}: " + AT_ONCE.format(count=len(values[parameter]), kind=ready.kind if ready else ""))
+    return found
