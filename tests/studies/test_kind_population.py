@@ -119,7 +119,7 @@ def test_the_optimiser_reaches_the_runs_optimum_with_the_population_form(monkeyp
     off) make the same search and end at the same best design (the force limit relaxed so
     that so short a search finds feasible designs)."""
     text = ENGINE.read_text(encoding="utf-8").replace("population = 12", "population = 5").replace(
-        "generations = 40", "generations = 2").replace('max = "1 N"', 'max = "20 kN"')
+        "generations = 40", "generations = 1").replace('max = "1 N"', 'max = "20 kN"')
     problem = load_problem(text)
     fast = optimise(problem, problem.optimise, design_results)
     assert "population form: " in fast.message and "designs at once" in fast.message

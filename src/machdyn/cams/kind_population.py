@@ -11,8 +11,9 @@ The single-design run judges the largest pressure angle and the smallest radius 
 few Newton steps on d phi/d theta = 0, i.e. N = a (d + s) - v (v - e) = 0 with N' = j (d + s) - a (v - e)
 (the derivative of tan phi = (v - e)/(d + s)), kept between the sample's neighbours, so that it agrees with the
 run to rounding where the largest angle lies inside a smooth piece. The smallest convex radius of curvature is
-refined likewise, by a golden-section search for the largest convex curvature -(G1 x G2)/|G1|^3 between the
-neighbours of its largest sample (the run's :func:`.exact.extremes` does the same search design by design). The
+refined likewise: the largest convex curvature -(G1 x G2)/|G1|^3 where its slope vanishes between the
+neighbours of its largest samples (the run's :func:`.exact.extremes` searches for the same maximum design by
+design). The
 smallest base circle agrees to rounding (both are direct on the same grid).
 
 A design the run refuses is NaN here too: a base radius <= 0, a roller <= 0 (a roller follower), an offset not
@@ -73,9 +74,6 @@ def population(problem: Any, values: Mapping[str, Any], keys: Iterable[str]) -> 
     rb, rr, e = (np.where(valid, a, a[good]) for a in (rb, rr, e))  # designs that fail stand in as a good one
     limit = problem.cam.checks.pressure_angle_limit
     limit = default_pressure_limit(f) if limit is None else float(limit)
-    if f.contact == "roller":  # the run's build refuses a roller that undercuts the drawn profile
-        drawn = analyse_population(model.program, cam_angles(problem.cam.positions), rb, rr, e, 1.0, limit)
-        valid &= ~(drawn.min_pitch_curvature_radius <= rr)
     grid = segment_angles(model.program)
     pop = analyse_population(model.program, grid, rb, rr, e, 1.0, limit)
     rho = pop.min_pitch_curvature_radius
@@ -83,6 +81,11 @@ def population(problem: Any, values: Mapping[str, Any], keys: Iterable[str]) -> 
     sharpest = _sharpest(model.program, grid, rb + rr, e)
     rho = np.where(sharpest > 0, 1.0 / np.where(sharpest > 0, sharpest, 1.0), np.inf)
     rho = np.minimum(pop.min_pitch_curvature_radius, rho)
+    near = np.flatnonzero(valid & (rho <= rr))  # only these may undercut the drawn profile (exact <= drawn)
+    if f.contact == "roller" and near.size:  # the run's build refuses a roller that undercuts the drawn profile
+        drawn = analyse_population(model.program, cam_angles(problem.cam.positions), rb[near], rr[near], e[near],
+                                   1.0, limit)
+        valid[near] &= ~(drawn.min_pitch_curvature_radius <= rr[near])
     found = {"cam.max_pressure_angle": np.maximum(pop.max_pressure_angle, largest),
              "cam.min_pitch_curvature_radius": rho,
              "cam.min_surface_curvature_radius": np.where(np.isfinite(rho), rho - rr, rho),
@@ -112,36 +115,43 @@ def _refined(prog: Any, grid: np.ndarray, phi: np.ndarray, prime: np.ndarray, e:
     return np.max(np.abs(np.arctan2(m.v - e, d + m.s)), axis=1)
 
 
-#: golden-section steps: the bracket of two sample spacings shrinks to 0.618^60 ~ 3e-13 of itself
-GOLDEN_STEPS = 60
+#: Illinois (regula falsi) steps on the curvature's slope: superlinear from a bracket of two sample spacings
+SECANT_STEPS = 30
 
 
-def _curvature(prog: Any, theta: np.ndarray, prime: np.ndarray, e: np.ndarray) -> np.ndarray:
-    """The pitch curve's convex curvature -(G1 x G2)/|G1|^3 [1/m] at ``theta`` (broadcast with the designs)."""
+def _curvature(prog: Any, theta: np.ndarray, prime: np.ndarray, e: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The pitch curve's convex curvature k = -(G1 x G2)/|G1|^3 [1/m] at ``theta`` (broadcast with the designs)
+    and its slope dk/dtheta, from G1' = (v, a), G2' = (2 a, j - v) (the derivatives of the module's G1, G2)."""
     m = prog.svaj(theta)
     d = np.sqrt(prime**2 - e**2)
     g1x, g1y = d + m.s, m.v - e
     g2x, g2y = 2.0 * m.v - e, m.a - d - m.s
-    return -(g1x * g2y - g1y * g2x) / np.hypot(g1x, g1y) ** 3
+    cross = g1x * g2y - g1y * g2x
+    cross1 = m.v * g2y + g1x * (m.j - m.v) - m.a * g2x - g1y * 2.0 * m.a
+    size2 = g1x * g1x + g1y * g1y
+    size3 = size2 * np.sqrt(size2)
+    return -cross / size3, -cross1 / size3 + 3.0 * cross * (g1x * m.v + g1y * m.a) / (size3 * size2)
 
 
 def _sharpest(prog: Any, grid: np.ndarray, prime: np.ndarray, e: np.ndarray) -> np.ndarray:
-    """The largest convex curvature [1/m] of each design's pitch curve: its largest sample on ``grid``, refined by
-    a golden-section search between the sample's neighbours (module docstring)."""
-    sampled = _curvature(prog, grid[None, :], prime[:, None], e[:, None])
+    """The largest convex curvature [1/m] of each design's pitch curve: its largest samples on ``grid``, each
+    refined where its slope changes sign between the sample's neighbours by the Illinois method on dk/dtheta = 0
+    (module docstring)."""
+    sampled = _curvature(prog, grid[None, :], prime[:, None], e[:, None])[0]
     lo, _, hi = _peaks(sampled, grid)
     prime, e = prime[:, None], e[:, None]
-    ratio = (np.sqrt(5.0) - 1.0) / 2.0
-    x1, x2 = hi - ratio * (hi - lo), lo + ratio * (hi - lo)
-    f1, f2 = _curvature(prog, x1, prime, e), _curvature(prog, x2, prime, e)
-    for _ in range(GOLDEN_STEPS):
-        left = f1 >= f2  # the largest lies in [lo, x2]
-        lo, hi = np.where(left, lo, x1), np.where(left, x2, hi)
-        x1, x2, f1, f2 = (np.where(left, hi - ratio * (hi - lo), x2), np.where(left, x1, lo + ratio * (hi - lo)),
-                          np.where(left, np.nan, f2), np.where(left, f1, np.nan))
-        fresh = _curvature(prog, np.where(left, x1, x2), prime, e)
-        f1, f2 = np.where(left, fresh, f1), np.where(left, f2, fresh)
-    return np.maximum(np.max(sampled, axis=1), np.max(np.maximum(f1, f2), axis=1))
+    f_lo, f_hi = _curvature(prog, lo, prime, e)[1], _curvature(prog, hi, prime, e)[1]
+    bracketed = (f_lo > 0) & (f_hi < 0)
+    for _ in range(SECANT_STEPS):
+        with np.errstate(divide="ignore", invalid="ignore"):
+            x = np.where(bracketed, (lo * f_hi - hi * f_lo) / (f_hi - f_lo), lo)
+        x = np.where(np.isfinite(x), np.clip(x, lo, hi), lo)
+        f = _curvature(prog, x, prime, e)[1]
+        left = f < 0  # the root lies in [lo, x]
+        lo, f_lo, hi, f_hi = (np.where(left, lo, x), np.where(left, f_lo * 0.5, f), np.where(left, x, hi),
+                              np.where(left, f, f_hi * 0.5))
+    refined = np.where(bracketed, _curvature(prog, x, prime, e)[0], -np.inf)
+    return np.maximum(np.max(sampled, axis=1), np.max(refined, axis=1))
 
 
 #: the local maxima refined per design: the largest of a cam's lies in one of its few rises and returns, and two
