@@ -61,6 +61,12 @@ def _apply(values: Mapping[str, Any], n: int, cyl: dict, mas: dict, line: dict) 
     return True
 
 
+def _over_turn(c: np.ndarray, k: int, theta: np.ndarray) -> np.ndarray:
+    """(N, S) Re(sum c e^{i k theta}) = Re C cos k theta - Im C sin k theta over the cylinders' c (N, C)."""
+    total = c.sum(axis=1)[:, None]
+    return total.real * np.cos(k * theta)[None, :] - total.imag * np.sin(k * theta)[None, :]
+
+
 def _two_term(cyl: dict[str, np.ndarray], speed: np.ndarray, reference: np.ndarray, samples: int,
               valid: np.ndarray) -> dict[str, np.ndarray]:
     """The two-term figures of N engines without their exact loads: the primary (order k = 1) and secondary
@@ -82,11 +88,9 @@ def _two_term(cyl: dict[str, np.ndarray], speed: np.ndarray, reference: np.ndarr
     out: dict[str, np.ndarray] = {}
     for name, k, size in (("primary", 1, amp), ("secondary", 2, amp / ratio)):
         a = size * np.exp(1j * k * (phase - axis))
-        turn = np.exp(1j * k * theta)[None, :]
-        fx, fy = ((a * ca).sum(axis=1)[:, None] * turn).real, ((a * sa).sum(axis=1)[:, None] * turn).real
-        mx = -((a * sa * zr).sum(axis=1)[:, None] * turn).real
-        my = ((a * ca * zr).sum(axis=1)[:, None] * turn).real
+        fx, fy = _over_turn(a * ca, k, theta), _over_turn(a * sa, k, theta)
         out[f"{name}_force"] = np.sqrt(np.max(fx * fx + fy * fy, axis=1))
+        mx, my = _over_turn(-a * sa * zr, k, theta), _over_turn(a * ca * zr, k, theta)
         out[f"{name}_couple"] = np.sqrt(np.max(mx * mx + my * my, axis=1))
     mr = m_rec * crank
     out["primary_direct"] = np.abs((mr / 2 * np.exp(1j * phase)).sum(axis=1))
