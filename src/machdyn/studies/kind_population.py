@@ -83,12 +83,11 @@ def kind_population_form(problem: Any, keys: Iterable[str],
 def sweep_at_once(problem: Any, parameter: str, values_si: Any, asked: Iterable[str]) -> dict[str, np.ndarray] | None:
     """The columns ``asked`` of a one-quantity sweep's variants by the kind's population form, (N,) arrays (NaN
     where a variant must be run whole to learn why it has no value), or None when the form cannot give them; the
-    user is told which."""
+    user is told when it does."""
     values = {parameter: np.asarray(values_si, dtype=float)}
     ready, why = kind_population_form(problem, asked, values)
     found = ready(values) if ready is not None else None
-    if found is None:
-        tell(f"sweep of {parameter}: {why or 'each design run whole'}")
+    if found is None:  # the sweep announces a long run of its variants itself
         return None
     tell(f"sweep of {parameter}: " + AT_ONCE.format(count=len(values[parameter]), kind=ready.kind if ready else ""))
     return found

@@ -167,7 +167,7 @@ def run_sweep(problem: Any, run_design: Any) -> RunSweep:
             status.append(_run_one(problem, plan.parameter, float(value), run_design, asked, row))
         for key, v in row.items():
             columns[key][i] = v
-        if i == 0:  # the first variant's time, for the whole sweep
+        if i == 0 and at_once is None:  # the first variant's time, for the whole sweep
             announce_estimate((time.perf_counter() - started) * n, f"{n} variants of {plan.parameter}, each run whole")
         if progress is not None:
             progress(i + 1, n)
