@@ -21,6 +21,7 @@ import numpy as np
 from ..errors import MachdynError
 from ..kinds import KINDS, kind
 from ..pipeline import import_object
+from .exploration.execution import current
 
 #: The message a study gives when the population form evaluates its designs.
 AT_ONCE = "population form: {count} designs at once ({kind} kind, one NumPy pass per population)"
@@ -49,8 +50,6 @@ class KindPopulation:
 def tell(text: str) -> None:
     """Say ``text`` to the user on the terminal, where the run has a channel for notes (the execution settings'
     ``estimate``)."""
-    from .exploration.execution import current
-
     report = current().estimate
     if report is not None and text:
         report(text)
