@@ -165,6 +165,10 @@ class ProblemKind:
     result_keys : ``(problem) -> {key: SI unit}``, the results a run of ``problem`` reports whose keys are made
         from its own names (a bearing's, a frame point's), for a kind whose catalogue entries are patterns; a study
         ([sweep] columns, [optimise] results) accepts only these of the pattern's keys. None: the patterns alone.
+    population : ``"package.module:function"``, the kind's population form: ``(problem, values, keys) -> {key: (N,)
+        array} | None`` with ``values`` the design variables' values by path (``{"cam.base_radius": (N,) array}``,
+        SI): every key asked for, for the N designs at once (NaN for a design whose run would fail), or None when
+        a path or a key is one it cannot vectorise (the studies then run each design whole). None: no such form.
     """
 
     name: str
@@ -180,6 +184,7 @@ class ProblemKind:
     dump: Callable[[Any], str] | None = None
     problem_type: Callable[[], type] | None = None
     result_keys: Callable[[Any], Mapping[str, str]] | None = None
+    population: str | None = None
 
     def owns(self, problem: Any) -> bool:
         """True if ``problem`` is a validated problem of this kind."""

@@ -422,4 +422,5 @@ KIND = ProblemKind(
     labels=LABELS,
     report="machdyn.report.cams:sections",
     result_keys=result_keys,
+    population="machdyn.cams.kind_population:population",
 )

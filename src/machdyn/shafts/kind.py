@@ -314,4 +314,5 @@ KIND = ProblemKind(
     labels=LABELS,
     report="machdyn.report.shafts:sections",
     result_keys=result_keys,
+    population="machdyn.shafts.kind_population:population",
 )

@@ -3,7 +3,8 @@ through the file's own stages (:mod:`machdyn.studies.per_design`), and the objec
 results by their catalogue keys (``shaft.engine.primary_couple``, ``cam.pressure_angle.max`` ...). The search is
 the linkage optimiser's (scipy's differential evolution, NSGA-II for several objectives) with the same Deb rules,
 history and verification; only the evaluation differs, one run per design instead of one engine call per
-population.
+population. A kind that declares a population form (:mod:`machdyn.studies.kind_population`) evaluates every
+population at once instead, when its form gives every result named for the variables' paths.
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from ...errors import ProblemFileError
+from ..kind_population import AT_ONCE, KindPopulation, kind_population_form, tell
 from ..per_design import KnownResults, RunDesign, capability_results, evaluate_designs, unit_of
 from .constraints import parse_goals, violations
 from .schema import OptimiseSpec
@@ -24,18 +26,28 @@ from .variables import search_space
 
 @dataclass
 class RunEvaluator(Evaluator):
-    """An :class:`~machdyn.studies.optimisation.search.Evaluator` whose designs are each run whole by ``run_design``."""
+    """An :class:`~machdyn.studies.optimisation.search.Evaluator` whose designs are each run whole by ``run_design``,
+    or evaluated all at once by the kind's population form (``at_once``)."""
+
+    at_once: KindPopulation | None = None
+    #: what evaluates the designs, for the user (the population form, or why each design is run whole)
+    note: str = ""
+    largest: int = 0
 
     def __call__(self, population) -> tuple[dict, np.ndarray, np.ndarray]:
         x = np.atleast_2d(np.asarray(population, dtype=float))
-        problems: list[Any] = []
-        for row in x:
-            try:
-                problems.append(self.space.problem_at(row))
-            except ProblemFileError:  # a design whose values break a field's rule: not buildable
-                problems.append(None)
-        results = self.design_results(problems, self.wanted)
-        built = np.array([p is not None for p in problems])
+        results = self._at_once(x)
+        if results is not None:
+            built = np.all([np.isfinite(v) for v in results.values()], axis=0) if results else np.ones(len(x), bool)
+        else:
+            problems: list[Any] = []
+            for row in x:
+                try:
+                    problems.append(self.space.problem_at(row))
+                except ProblemFileError:  # a design whose values break a field's rule: not buildable
+                    problems.append(None)
+            results = self.design_results(problems, self.wanted)
+            built = np.array([p is not None for p in problems])
         ran = np.all([np.isfinite(v) for v in results.values()], axis=0) if results else built
         results["regular"] = built & ran
         results["assembled_fraction"] = results["regular"].astype(float)  # a design that runs is whole
@@ -45,6 +57,22 @@ class RunEvaluator(Evaluator):
         self.evaluations += x.shape[0]
         self._track(x, results, viol)
         return results, costs, viol
+
+    def _at_once(self, x: np.ndarray) -> dict[str, np.ndarray] | None:
+        """The results of the population by the kind's form (designs that break a field's rule NaN), else None."""
+        if self.at_once is None:
+            return None
+        values = self.space.values(x)
+        found = self.at_once(values)
+        if found is None:
+            return None
+        broken, _reasons = self.space._broken(values) if values else (np.zeros(len(x), bool), [])
+        if len(x) > self.largest:  # the note names the largest population evaluated in one pass
+            if not self.largest:
+                tell(AT_ONCE.format(count=len(x), kind=self.at_once.kind))
+            self.largest = len(x)
+            self.note = AT_ONCE.format(count=len(x), kind=self.at_once.kind)
+        return {k: np.where(broken, np.nan, v) for k, v in found.items()}
 
     @property
     def per_design_wanted(self) -> set[str]:
@@ -77,7 +105,11 @@ def setup_by_runs(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None
 
     objectives, constraints = parse_goals(spec, names, unit, problems)
     wanted = frozenset(o.result for o in objectives) | frozenset(c.result for c in constraints)
-    return RunEvaluator(space, objectives, constraints, np.zeros(0), per_design_keys=wanted, run_design=run_design)
+    at_once, why = None, ""
+    if space is not None and not problems:
+        at_once, why = kind_population_form(problem, sorted(wanted), space.values(space.lower[None, :]))
+    return RunEvaluator(space, objectives, constraints, np.zeros(0), per_design_keys=wanted, run_design=run_design,
+                        at_once=at_once, note=why)
 
 
 def verify_by_runs(problem: Any, ev: RunEvaluator) -> tuple[dict[str, float], bool]:

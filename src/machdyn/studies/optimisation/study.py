@@ -123,6 +123,11 @@ def optimise(problem: Any, spec: OptimiseSpec, run_design: RunDesign | None = No
         assert history.hypervolume is not None
         converged, why = hypervolume_converged(history.hypervolume, FRONT_TOLERANCE, _window(spec.generations))
         message = f"NSGA-II ran {spec.generations} generations, {len(front_x)} designs on the front; {why}"
+    note = getattr(ev, "note", "")
+    if note:  # a kind's designs: evaluated by its population form, or each run whole (and why)
+        message = f"{message}; {note}"
+        if not note.startswith("population form"):
+            warnings.append(f"The designs were {note.replace('each design run whole', 'each run whole')}.")
     if not converged:
         warnings.append(
             f"The search did not converge within {spec.generations} generations ({message}); the best design "

@@ -36,6 +36,7 @@ from ...results.catalogue import find
 from ...results.labels import Label
 from ...results.names import did_you_mean_result, results_to_choose
 from ..exploration.execution import announce_estimate, current
+from ..kind_population import sweep_at_once
 from ..per_design import KnownResults, capability_results, unit_of
 from ..table import expand_sweep
 from .population import SweepRun
@@ -156,12 +157,17 @@ def run_sweep(problem: Any, run_design: Any) -> RunSweep:
     status = []
     progress = current().progress
     started = time.perf_counter()
+    at_once = sweep_at_once(problem, plan.parameter, plan.values_si, asked) if asked else None
     for i, value in enumerate(plan.values_si):
         row: dict[str, float] = {}
-        status.append(_run_one(problem, plan.parameter, float(value), run_design, asked, row))
+        if at_once is not None and all(np.isfinite(at_once[k][i]) for k in asked):  # the kind's population form
+            row = {k: float(at_once[k][i]) for k in asked}
+            status.append(REGULAR)
+        else:
+            status.append(_run_one(problem, plan.parameter, float(value), run_design, asked, row))
         for key, v in row.items():
             columns[key][i] = v
-        if i == 0:  # the first variant's time, for the whole sweep
+        if i == 0 and at_once is None:  # the first variant's time, for the whole sweep
             announce_estimate((time.perf_counter() - started) * n, f"{n} variants of {plan.parameter}, each run whole")
         if progress is not None:
             progress(i + 1, n)
