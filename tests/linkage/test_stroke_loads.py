@@ -49,3 +49,20 @@ def test_tables_outside_the_stroke_or_not_increasing_are_refused():
         stroke_load(PRESS, "bad", "slider.B", [0.0, 0.002, 0.001], [1.0, 1.0, 1.0])
     with pytest.raises(InputError, match="straight line"):
         stroke_load(PRESS, "pin", "crank.A", [0.0, 0.01], [1.0, 1.0])
+
+
+def test_design_variants_with_their_own_force_stroke_tables_analyse_as_each_alone():
+    """A sweep of the crank length stacks presses whose strokes differ, so each converts the same force-stroke
+    table to its own crank-angle table: the stacked population's driving torque equals each design's own run
+    (it used to stop with an internal error when the tables were stacked)."""
+    from machdyn.linkage import stack_designs
+
+    x, f = [0.0, 0.004], [60e3, 60e3]
+    designs = [slider_crank(r, 0.25, 0.0, masses=(12.0, 8.0, 60.0), slide_angle=-np.pi / 2) for r in (0.035, 0.045)]
+    alone = [replace(d, forces=(stroke_load(d, "punch", "slider.B", x, f).force,)) for d in designs]
+    phi = crank_angles(720)
+    stacked = analyse(stack_designs(alone), phi, 4.0).forces.driving_torque
+    for i, design in enumerate(alone):
+        own = analyse(design, phi, 4.0).forces.driving_torque
+        assert np.allclose(np.asarray(stacked)[i], own, rtol=1e-12, atol=1e-9)
+    assert not np.allclose(np.asarray(stacked)[0], np.asarray(stacked)[1])  # the two presses differ

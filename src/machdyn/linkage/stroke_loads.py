@@ -151,8 +151,21 @@ class PeriodicTable:
 
     def __call__(self, angle: np.ndarray) -> np.ndarray:
         grid = np.append(np.asarray(self.angles), 2 * np.pi)
-        data = np.append(np.asarray(self.values), self.values[0])
-        return np.interp(np.mod(np.asarray(angle, dtype=float), 2 * np.pi), grid, data)
+        at = np.mod(np.asarray(angle, dtype=float), 2 * np.pi)
+        if all(np.ndim(v) == 0 for v in self.values):
+            data = np.append(np.asarray(self.values, dtype=float), self.values[0])
+            return np.interp(at, grid, data)
+        # design variants stacked (machdyn.linkage.stack_designs): each angle's value is an array over the N
+        # designs, whose strokes differ; interpolate each design's own table -> (N, ...) at the angles
+        table = np.stack(np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in self.values)), axis=-1)
+        table = np.concatenate([table, table[:, :1]], axis=1)
+        i = np.clip(np.searchsorted(grid, at, side="right") - 1, 0, grid.size - 2)
+        w = (at - grid[i]) / (grid[i + 1] - grid[i])
+        if at.ndim == 2 and at.shape[0] == table.shape[0]:  # one row of angles per design
+            lo, hi = np.take_along_axis(table, i, axis=1), np.take_along_axis(table, i + 1, axis=1)
+        else:
+            lo, hi = table[:, i], table[:, i + 1]
+        return lo * (1 - w) + hi * w
 
 
 def _periodic(phi: np.ndarray, values: np.ndarray) -> Callable[[np.ndarray], np.ndarray]:
