@@ -228,11 +228,11 @@ def frame_population(problem: Any, forces: Any) -> dict[str, np.ndarray] | None:
         after = {p: np.concatenate(v) for p, v in acc["after"].items()}
         with np.errstate(divide="ignore", invalid="ignore"):
             for p in table.points:
-                out[f"frame.acceleration_reduction.{p}"] = (before[p] - after[p]) / before[p] * 100.0
+                out[f"frame.acceleration_reduction.{p}"] = (before[p] - after[p]) / before[p]  # a fraction (SI)
                 valid &= before[p] > 0  # the single path refuses a reduction of a level 0
             b = np.mean(np.stack(list(before.values())), axis=0)
             a_ = np.mean(np.stack(list(after.values())), axis=0)
-            out["frame.mean_acceleration_reduction"] = (b - a_) / b * 100.0
+            out["frame.mean_acceleration_reduction"] = (b - a_) / b
     return {key: np.where(valid, np.broadcast_to(v, (n,)), np.nan) for key, v in out.items()}
 
 
