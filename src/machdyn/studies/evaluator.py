@@ -111,7 +111,7 @@ class PopulationEvaluator:
         """``keys`` of each design's run (None: a design not run, NaN), as (count,) arrays."""
         if self.run_design is None:
             raise RuntimeError("results of a capability need a way to run a design (StageContext.run_design)")
-        return evaluate_designs(self.run_design, problems, keys, count)
+        return evaluate_designs(self.run_design, problems, keys, count, self.workers)
 
     def __call__(self, mechanism: Any, keys: Iterable[str], count: int, per_design: Iterable[str] = (),
                  problem_of: Callable[[int], Any] | None = None,
@@ -138,6 +138,17 @@ class PopulationEvaluator:
                                None if buildable is None else np.asarray(buildable)[part])
             _fill(out, found, part, count)
         return out
+
+    def at_once(self, mechanism: Any, keys: Iterable[str], count: int,
+                found: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+        """The ``keys`` that a capability's population form gives for the ``count`` designs (NaN for a design
+        that is not regular in ``found``, the designs' status columns), without running any design."""
+        if self.problem is None:
+            return {}
+        at_once = population_results(self.problem, list(keys), mechanism, self.speed, self.acceleration, count,
+                                     self.varied)
+        regular = np.asarray(found.get("regular", np.ones(count, dtype=bool)), dtype=bool)
+        return {k: np.where(regular, v, np.nan) for k, v in at_once.items()}
 
     def _call(self, mechanism: Any, speed: Any, acceleration: Any, keys: list[str], count: int,
               per_design: list[str], problem_of: Callable[[int], Any] | None,
