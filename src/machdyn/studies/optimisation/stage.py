@@ -15,6 +15,7 @@ from ...pipeline import Capability, Outcome, StageContext
 from ...problem.build import crank_angles
 from ...results.catalogue import find, label
 from ...results.labels import Label
+from ..capability_population import population_keys
 from ..exploration.execution import current
 from ..per_design import where_designs_ran
 from ..views import analysed, design_problem
@@ -157,9 +158,12 @@ def _where_designs_ran(ctx: StageContext) -> list[str]:
     if workers <= 1:
         return []
     try:
-        per_design = sorted(setup(ctx.problem, ctx.table, ctx.run_design).per_design_wanted)
+        ev = setup(ctx.problem, ctx.table, ctx.run_design)
     except ProblemFileError:
         return []
+    varied = [v.path for v in ev.space.variables if v.path is not None] + [f.path for f in ev.space.formulas]
+    at_once = population_keys(ctx.problem, ev.per_design_wanted, varied)
+    per_design = sorted(k for k in ev.per_design_wanted if k not in at_once)
     if not per_design:
         return []
     return [f"{', '.join(per_design)}: no population form, evaluated {where_designs_ran(workers)} (--workers)."]
