@@ -17,14 +17,15 @@ from __future__ import annotations
 
 import atexit
 import math
+import multiprocessing
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from concurrent.futures import Executor
+from concurrent.futures import Executor, ProcessPoolExecutor
 from typing import Any
 
 import numpy as np
 
 from ..errors import MachdynError
-from ..kinds import KINDS, catalogue, kind
+from ..kinds import KINDS, catalogue, kind, problem_model
 from ..results.catalogue import find
 
 #: The tables whose results are not a design's: the studies themselves.
@@ -157,8 +158,6 @@ class Portable:
 
 
 def _model_of(kind_name: str) -> Any:
-    from ..kinds import problem_model
-
     return problem_model(kind_name)
 
 
@@ -183,9 +182,6 @@ def pool(workers: int) -> Executor:
     can (a worker starts in a fraction of a second with machdyn already imported; it runs designs only, never
     the caller's other threads' work), else spawned (each worker imports machdyn afresh, a few seconds)."""
     if workers not in _POOL:
-        import multiprocessing
-        from concurrent.futures import ProcessPoolExecutor
-
         for old in _POOL.values():
             old.shutdown(wait=False, cancel_futures=True)
         _POOL.clear()

@@ -36,6 +36,7 @@ import numpy as np
 from pydantic import BaseModel, Field, field_validator, model_validator
 
 from ..errors import ProblemFileError
+from ..kinds import CAPABILITIES
 from ..problem.fields import Angle, FieldError, Unit, to_si
 from ..problem.paths import assign, quantity_unit
 from ..results.catalogue import ALIASES, canonical, find, population_quantities
@@ -58,8 +59,6 @@ EXPLORATION_KEYS = ("quantities", "method", "samples", "seed", "partition", "obj
 
 def _of_a_capability(producer: str) -> bool:
     """True for the producer of a capability's results (its table's name, ``parts``)."""
-    from ..kinds import CAPABILITIES
-
     return producer in CAPABILITIES
 
 

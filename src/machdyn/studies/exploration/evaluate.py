@@ -21,8 +21,10 @@ import numpy as np
 
 from ... import __version__
 from ...errors import ProblemFileError
+from ...kinds import CAPABILITIES, catalogue
 from ...linkage import stack_designs
 from ...problem.build import build_mechanism
+from ...results.catalogue import find
 from ...results.population import DEFAULT_MIN_TRANSMISSION_DEG, sweep_columns
 from ..evaluator import PopulationEvaluator
 from ..per_design import capability_results
@@ -141,9 +143,16 @@ def evaluate_designs(plan: ExplorePlan, values: np.ndarray) -> dict[str, np.ndar
 
 
 def capability_columns(plan: ExplorePlan) -> tuple[str, ...]:
-    """The ``[sweep] columns`` that are results of the file's capability tables (``parts.utilisation.max``)."""
+    """The ``[sweep] columns`` that are results of the file's capability tables (``parts.utilisation.max``), not
+    of its linkage (which the population's engine call gives)."""
     declared = capability_results(plan.problem)
-    return tuple(k for k in plan.extra_columns if k in declared)
+    quantities = catalogue()
+
+    def of_a_capability(key: str) -> bool:
+        found = find(key, quantities)
+        return key in declared and found is not None and found[0].producer in CAPABILITIES
+
+    return tuple(k for k in plan.extra_columns if of_a_capability(k))
 
 
 def _problem_of(plan: ExplorePlan, row: np.ndarray) -> Any:
