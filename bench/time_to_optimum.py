@@ -452,6 +452,7 @@ def main() -> None:
         print(name, flush=True)  # noqa: T201
         found[name] = bench_problem(make, args.seeds, args.quick, args.max_seconds, args.optimiser)
         print(f"  best known {found[name]['best_known']['value']:.10g}", flush=True)  # noqa: T201
+        print(json.dumps({"problem": name, **found[name]}), flush=True)  # noqa: T201 - kept if a later one stops
     print(json.dumps({"time_to_optimum": found, "seeds": args.seeds, "quick": args.quick,  # noqa: T201
                       "runtime_s": time.perf_counter() - t0}))
 

@@ -28,6 +28,7 @@ from typing import Any
 
 import numpy as np
 
+from ..linkage.engines import use_fused
 from ..results.population import DEFAULT_MIN_TRANSMISSION_DEG, evaluate_population
 from .capability_population import population_results
 from .per_design import RunDesign, evaluate_designs
@@ -97,15 +98,24 @@ class PopulationEvaluator:
         count = getattr(mechanism, "design_count", None) or 1
         if count <= self.chunk():
             return self._vectorised(mechanism, self.speed, self.acceleration, keys)
+        engine = self._engine_of(mechanism, count)
         out: dict[str, np.ndarray] = {}
         for part, model, speed, acceleration in self._chunks(mechanism, count):
-            _fill(out, self._vectorised(model, speed, acceleration, keys), part, count)
+            _fill(out, self._vectorised(model, speed, acceleration, keys, engine), part, count)
         return out
 
-    def _vectorised(self, mechanism: Any, speed: Any, acceleration: Any, keys: list[str]) -> dict[str, np.ndarray]:
+    def _engine_of(self, mechanism: Any, count: int) -> str:
+        """The engine of every chunk: the one the whole population would run on ("auto" compiles only above a
+        size, which a chunk may fall below), so that the chunks give the unchunked call's results."""
+        if self.engine != "auto":
+            return self.engine
+        return "fused" if use_fused("auto", mechanism, self.phi, count * int(np.size(self.phi))) else "auto"
+
+    def _vectorised(self, mechanism: Any, speed: Any, acceleration: Any, keys: list[str],
+                    engine: str | None = None) -> dict[str, np.ndarray]:
         return evaluate_population(mechanism, self.phi, speed, acceleration, keys, about=self.about,
                                    machine=self.machine, min_transmission_angle=self.min_transmission_angle,
-                                   engine=self.engine)
+                                   engine=engine or self.engine)
 
     def per_design(self, problems: Iterable[Any | None], keys: Iterable[str], count: int) -> dict[str, np.ndarray]:
         """``keys`` of each design's run (None: a design not run, NaN), as (count,) arrays."""
@@ -125,6 +135,7 @@ class PopulationEvaluator:
         if count <= self.chunk() or designs not in (None, count):
             return self._call(mechanism, self.speed, self.acceleration, keys, count, per_design, problem_of,
                               buildable)
+        engine = self._engine_of(mechanism, count)
         out: dict[str, np.ndarray] = {}
         for part, model, speed, acceleration in self._chunks(mechanism, count):
             start = part.start
@@ -135,7 +146,7 @@ class PopulationEvaluator:
 
             found = self._call(model, speed, acceleration, keys, part.stop - start, per_design,
                                of if problem_of is not None else None,
-                               None if buildable is None else np.asarray(buildable)[part])
+                               None if buildable is None else np.asarray(buildable)[part], engine)
             _fill(out, found, part, count)
         return out
 
@@ -152,9 +163,9 @@ class PopulationEvaluator:
 
     def _call(self, mechanism: Any, speed: Any, acceleration: Any, keys: list[str], count: int,
               per_design: list[str], problem_of: Callable[[int], Any] | None,
-              buildable: np.ndarray | None) -> dict[str, np.ndarray]:
+              buildable: np.ndarray | None, engine: str | None = None) -> dict[str, np.ndarray]:
         out = {k: np.broadcast_to(np.asarray(v), (count,)).copy()
-               for k, v in self._vectorised(mechanism, speed, acceleration, keys).items()}
+               for k, v in self._vectorised(mechanism, speed, acceleration, keys, engine).items()}
         wanted = list(per_design)
         if wanted and self.problem is not None:
             at_once = population_results(self.problem, wanted, mechanism, speed, acceleration, count,
