@@ -37,6 +37,7 @@ bench: $(BENCH_STAMP)
 	$(BIN)/python bench/cams.py
 	$(BIN)/python bench/walk.py
 	$(BIN)/python bench/capabilities.py
+	$(BIN)/python bench/time_to_optimum.py
 
 lint: $(STAMP)
 	$(BIN)/ruff check src tests bench

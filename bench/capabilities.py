@@ -35,8 +35,21 @@ largest relative difference of the compared figure over that subset (0 = identic
 - linkage (reference): largest |driving torque| of random four-bars (the population evaluator of the studies
   against ``kinetostatics`` per design).
 
+Beside the capabilities:
+
+- ``per_design_workers``: the per-design path of the studies (:func:`machdyn.studies.per_design.evaluate_designs`,
+  each design run whole through its file's stages) on the in-line four's shaft line, in this process and on 2
+  worker processes (``--workers 2``), the pool started before the timing (as a study's later generations find
+  it); ``overhead_per_design_s`` is the workers' busy time per design beyond a run in this process
+  (2 x wall time on the workers / designs - wall time in this process / designs), the cost of sending a design
+  and its results between the processes;
+- ``linkage_1e6``: 10^6 four-bar designs (72 crank positions, the largest |driving torque| and the worst
+  transmission angle) through the studies' evaluator in chunks of its memory budget, in a fresh process:
+  designs/s and the process's peak resident memory.
+
 Usage: ``python bench/capabilities.py [--quick] [--repeats N]``. The last line printed is one JSON object
-``{"capabilities": {name: {"designs_per_s", "per_design_per_s", "agreement", ...}}}``.
+``{"capabilities": {name: {"designs_per_s", "per_design_per_s", "agreement", ...}}, "per_design_workers": ...,
+"linkage_1e6": ...}``.
 """
 
 from __future__ import annotations
@@ -45,6 +58,7 @@ import argparse
 import json
 import math
 import statistics
+import subprocess
 import sys
 import time
 from pathlib import Path
@@ -402,6 +416,51 @@ def linkage(n, n_single, repeats, rng):
     return _entry(n, n_single, fast, slow, _agreement(fast[0][:n_single], slow[0]))
 
 
+def per_design_workers(n: int, repeats: int) -> dict:
+    from machdyn.problem.paths import design_problem
+    from machdyn.reading import load_problem
+    from machdyn.runner import design_results
+    from machdyn.studies.per_design import evaluate_designs
+
+    problem = load_problem(ROOT / "examples" / "shaft_inline_four_phases_optimise.toml")
+    designs = [design_problem(problem, {"cylinders[1].phase": float(p)}) for p in np.linspace(0.0, 6.0, n)]
+    keys = ("shaft.engine.primary_couple",)
+    evaluate_designs(design_results, designs[:4], keys, 4, workers=2)  # the pool started, as a study keeps it
+    here = _rate(lambda: evaluate_designs(design_results, designs, keys, n), n, repeats)
+    there = _rate(lambda: evaluate_designs(design_results, designs, keys, n, workers=2), n, repeats)
+    same = bool(np.array_equal(here[0][keys[0]], there[0][keys[0]], equal_nan=True))
+    return {"designs": n, "in_process_per_s": here[2], "in_process_min_max": [here[1], here[3]],
+            "workers": 2, "workers_per_s": there[2], "workers_min_max": [there[1], there[3]],
+            "overhead_per_design_s": 2.0 / there[2] - 1.0 / here[2], "same_results": same}
+
+
+def linkage_million(n: int) -> dict:
+    """In a fresh process: the studies' evaluator on ``n`` four-bar designs; designs/s and peak RSS."""
+    code = f"""
+import json, resource, sys, time
+import numpy as np
+sys.path.insert(0, {str(ROOT / "src")!r})
+from machdyn.linkage import crank_angles, four_bar
+from machdyn.studies import PopulationEvaluator
+rng = np.random.default_rng(1)
+n = {n}
+evaluator = PopulationEvaluator(crank_angles(72), 60.0, engine="fused")
+keys = ["driving_torque.max_abs", "transmission_angle.min"]
+evaluator(four_bar(0.04, 0.15, 0.12, 0.14, masses=(1.0, 3.0, 2.0)), keys, 1)  # compiled before the timing
+before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+mech = four_bar(rng.uniform(0.03, 0.06, n), rng.uniform(0.13, 0.17, n), 0.12, 0.14, masses=(1.0, 3.0, 2.0))
+t0 = time.perf_counter()
+out = evaluator(mech, keys, n)
+seconds = time.perf_counter() - t0
+print(json.dumps({{"designs": n, "designs_per_s": n / seconds, "seconds": seconds, "chunk": evaluator.chunk(),
+                  "memory_budget_mb": evaluator.memory_budget / 2**20, "rss_before_mb": before,
+                  "peak_rss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
+                  "regular": int(out["regular"].sum())}}))
+"""
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
 #: capability -> (function, population size, per-design designs), full run and --quick.
 CASES = {"cams": (cams, 20_000, 20, 2_000, 5), "parts": (parts, 5_000, 100, 500, 20),
          "clutch": (clutch, 200_000, 5_000, 20_000, 500), "shaft_balance": (shaft_balance, 100_000, 500, 10_000, 50),
@@ -426,7 +485,13 @@ def main() -> None:
         e = found[name]
         print(f"{name:14s} {e['designs_per_s']:12.4g} designs/s  per design {e['per_design_per_s']:10.4g}/s  "  # noqa: T201
               f"x{e['speed_ratio']:.4g}  agreement {e['agreement']:.2g}", flush=True)
-    print(json.dumps({"capabilities": found}))  # noqa: T201
+    workers = per_design_workers(40 if args.quick else 200, repeats)
+    print(f"per design     {workers['in_process_per_s']:10.4g}/s here, {workers['workers_per_s']:10.4g}/s on 2 "  # noqa: T201
+          f"workers, overhead {workers['overhead_per_design_s'] * 1e3:.3g} ms per design", flush=True)
+    million = linkage_million(100_000 if args.quick else 1_000_000)
+    print(f"linkage 1e6    {million['designs_per_s']:12.4g} designs/s  peak RSS {million['peak_rss_mb']:.0f} MB "  # noqa: T201
+          f"(chunks of {million['chunk']})", flush=True)
+    print(json.dumps({"capabilities": found, "per_design_workers": workers, "linkage_1e6": million}))  # noqa: T201
 
 
 if __name__ == "__main__":

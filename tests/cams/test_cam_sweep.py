@@ -200,11 +200,10 @@ def test_the_sweep_reports_its_progress_and_estimates_its_time(monkeypatch):
     assert len(said) == 1 and said[0].startswith("3 variants of cam.speed, each run whole: about ")
 
 
-def test_workers_asked_for_a_sweep_run_variant_by_variant_are_said_to_be_unused(tmp_path):
-    """--workers spreads a linkage exploration; a cam sweep runs its variants in this process, and says so (two
-    variants suffice)."""
+def test_workers_asked_for_a_sweep_run_variant_by_variant_run_its_variants(tmp_path):
+    """--workers spreads a cam sweep's variants over worker processes, and says so (two variants suffice)."""
     path = tmp_path / "two.toml"
     path.write_text(EXAMPLE.read_text(encoding="utf-8").replace("count = 9", "count = 2"), encoding="utf-8")
     ran = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "out"), "--workers", "2"])
     assert ran.exit_code == 0, ran.output
-    assert "ran one after another in this process" in ran.output
+    assert "ran per design, 2 workers" in ran.output

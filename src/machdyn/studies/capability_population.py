@@ -62,6 +62,19 @@ def population_results(problem: Any, keys: Iterable[str], mechanism: Any, speed:
     return out
 
 
+def population_keys(problem: Any, keys: Iterable[str], varied: Iterable[str] = ()) -> set[str]:
+    """The ``keys`` whose table declares a population form (and is not ``varied``): those a study takes from it
+    rather than from a run of each design (the form may still decline at run time)."""
+    touched = {path.split(".", 1)[0] for path in varied}
+    quantities = catalogue()
+    out = set()
+    for key in keys:
+        found = find(key, quantities)
+        if found is not None and found[0].producer not in touched and population_form(found[0].producer) is not None:
+            out.add(key)
+    return out
+
+
 def _forces(problem: Any, mechanism: Any, speed: Any, acceleration: Any) -> Any:
     def column(x: Any) -> Any:  # one value per design: a column against the crank positions
         return np.asarray(x, dtype=float)[:, None] if np.ndim(x) == 1 else x

@@ -7,18 +7,25 @@ This is general and exact — the optimiser sees what a run of the design report
 design (a flywheel's steady state: milliseconds to a second): the vectorised groups of
 :mod:`machdyn.results.population` stay the fast path for the linkage's own results. A design whose run fails (its
 drive cannot carry it, its linkage does not close) gets NaN, which the optimiser counts as infeasible.
+
+With ``workers`` > 1 (the command line's ``--workers``) the designs' runs are spread over that many local worker
+processes (:func:`run_in_parallel`, :mod:`concurrent.futures`), started once and kept for the later calls of the
+run; each design is still run whole and alone, so the results are the same as in this process.
 """
 
 from __future__ import annotations
 
+import atexit
 import math
-from collections.abc import Callable, Iterable, Mapping
+import multiprocessing
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from concurrent.futures import Executor, ProcessPoolExecutor
 from typing import Any
 
 import numpy as np
 
 from ..errors import MachdynError
-from ..kinds import CAPABILITIES, KINDS, capability, catalogue, kind
+from ..kinds import CAPABILITIES, KINDS, capability, catalogue, kind, problem_model
 from ..results.catalogue import find
 
 #: The tables whose results are not a design's: the studies themselves.
@@ -120,21 +127,108 @@ def _tables(problem: Any) -> list[str]:
 
 
 def evaluate_designs(run_design: RunDesign, problems: Iterable[Any | None], keys: Iterable[str],
-                     count: int) -> dict[str, np.ndarray]:
+                     count: int, workers: int = 1) -> dict[str, np.ndarray]:
     """(count,) arrays of ``keys`` over the designs: ``problems`` yields each design's validated problem (None
-    for a design that cannot be built), run by ``run_design``; NaN where a design's run fails or does not
-    report the key."""
-    wanted = list(keys)
+    for a design that cannot be built), run by ``run_design`` — on ``workers`` local processes when more than
+    one (``run_design`` and the problems must then pickle: a module's function, validated problems); NaN where a
+    design's run fails or does not report the key."""
+    wanted = tuple(keys)
     out = {k: np.full(count, math.nan) for k in wanted}
-    for i, problem in enumerate(problems):
-        if problem is None:
-            continue
-        try:
-            values = run_design(problem)
-        except (MachdynError, ArithmeticError, ValueError):  # a design the run refuses or cannot analyse
-            continue
-        for k in wanted:
-            v = values.get(k)
-            if v is not None and np.ndim(v) == 0 and math.isfinite(float(v)):
-                out[k][i] = float(v)
+    todo = [(i, problem) for i, problem in enumerate(problems) if problem is not None]
+    if workers > 1 and len(todo) > 1:
+        found = run_in_parallel(run_portable, [(run_design, Portable(p), wanted) for _i, p in todo], workers)
+    else:
+        found = [run_one(run_design, p, wanted) for _i, p in todo]
+    for (i, _problem), values in zip(todo, found, strict=True):
+        for k, v in (values or {}).items():
+            out[k][i] = v
     return out
+
+
+def run_one(run_design: RunDesign, problem: Any, keys: Sequence[str]) -> dict[str, float] | None:
+    """The finite scalar values of ``keys`` a run of one design reports, None where its run fails."""
+    try:
+        values = run_design(problem)
+    except (MachdynError, ArithmeticError, ValueError):  # a design the run refuses or cannot analyse
+        return None
+    found = {}
+    for k in keys:
+        v = values.get(k)
+        if v is not None and np.ndim(v) == 0 and math.isfinite(float(v)):
+            found[k] = float(v)
+    return found
+
+
+class Portable:
+    """A validated problem as a worker process receives it. A problem's class is made for its kind's tables
+    (:func:`machdyn.kinds.problem_model`), so pickle cannot find it by name: the problem travels as its kind
+    and its fields, and the worker puts them back into its own copy of that class (no validation again: the
+    values are the ones validated here); a problem of another class travels as itself."""
+
+    def __init__(self, problem: Any) -> None:
+        self.problem = problem
+
+    def __reduce__(self) -> tuple[Any, tuple]:
+        cls = type(self.problem)
+        name = next((k for k in KINDS if _model_of(k) is cls), None)
+        if name is None:
+            return (Portable, (self.problem,))
+        return (_restore, (name, self.problem.__getstate__()))
+
+
+def _model_of(kind_name: str) -> Any:
+    return problem_model(kind_name)
+
+
+def _restore(kind_name: str, state: Any) -> Portable:
+    cls = _model_of(kind_name)
+    problem = cls.__new__(cls)
+    problem.__setstate__(state)
+    return Portable(problem)
+
+
+def run_portable(run_design: RunDesign, design: Portable, keys: Sequence[str]) -> dict[str, float] | None:
+    """:func:`run_one` of a design sent to a worker process."""
+    return run_one(run_design, design.problem, keys)
+
+
+#: The pool of worker processes of the run (one size at a time), started at its first use.
+_POOL: dict[int, Executor] = {}
+
+
+def pool(workers: int) -> Executor:
+    """A pool of ``workers`` local processes, kept for the later calls of this process: forked where the platform
+    can (a worker starts in a fraction of a second with machdyn already imported; it runs designs only, never
+    the caller's other threads' work), else spawned (each worker imports machdyn afresh, a few seconds)."""
+    if workers not in _POOL:
+        for old in _POOL.values():
+            old.shutdown(wait=False, cancel_futures=True)
+        _POOL.clear()
+        method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
+        _POOL[workers] = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context(method))
+    return _POOL[workers]
+
+
+@atexit.register
+def _close_pools() -> None:
+    for executor in _POOL.values():
+        executor.shutdown(wait=True, cancel_futures=True)
+    _POOL.clear()
+
+
+def run_in_parallel(fn: Callable[..., Any], calls: Sequence[tuple], workers: int) -> list[Any]:
+    """``[fn(*args) for args in calls]``, in order, computed on ``workers`` local processes (a few calls per
+    task, so that a short run is not dominated by the messages between the processes)."""
+    chunk = max(1, math.ceil(len(calls) / (4 * workers)))
+    return list(pool(workers).map(_star, [(fn, args) for args in calls], chunksize=chunk))
+
+
+def _star(item: tuple[Callable[..., Any], tuple]) -> Any:
+    fn, args = item
+    return fn(*args)
+
+
+def where_designs_ran(workers: int) -> str:
+    """How a study's per-design runs ran, for its output: ``per design, 2 workers`` or ``per design, in this
+    process``."""
+    return f"per design, {workers} workers" if workers > 1 else "per design, in this process"

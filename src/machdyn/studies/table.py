@@ -36,6 +36,7 @@ import numpy as np
 from pydantic import BaseModel, Field, field_validator, model_validator
 
 from ..errors import ProblemFileError
+from ..kinds import CAPABILITIES
 from ..problem.fields import Angle, FieldError, Unit, to_si
 from ..problem.paths import assign, quantity_unit
 from ..results.catalogue import ALIASES, canonical, find, population_quantities
@@ -54,6 +55,11 @@ DEFAULT_OBJECTIVE = "driving_torque.max_abs"
 EXPLORATION_KEYS = ("quantities", "method", "samples", "seed", "partition", "objective", "scheduler", "workers",
                     "store")
 
+
+
+def _of_a_capability(producer: str) -> bool:
+    """True for the producer of a capability's results (its table's name, ``parts``)."""
+    return producer in CAPABILITIES
 
 
 def _values_rule(where: str, method: str, values, start, stop, count) -> None:
@@ -161,8 +167,10 @@ class SweepSpec(BaseModel):
                                  f"'{self.objective}'{hint}")
         for i, column in enumerate(self.columns or ()):
             found = find(canonical(column))
-            if found is None and not self.quantities and "." in column:
+            if found is None and "." in column:
                 continue  # perhaps a result of another table of the file: the sweep's check knows the file's tables
+            if found is not None and not found[0].group and _of_a_capability(found[0].producer):
+                continue  # a capability's result: its population form or each design's run gives it
             if found is None or not found[0].group or found[0].group == "status":
                 names = _objective_names()
                 hint = f"{did_you_mean_result(column, names)} ({results_to_choose(column, names)})"

@@ -21,10 +21,13 @@ import numpy as np
 
 from ... import __version__
 from ...errors import ProblemFileError
+from ...kinds import CAPABILITIES, catalogue
 from ...linkage import stack_designs
 from ...problem.build import build_mechanism
+from ...results.catalogue import find
 from ...results.population import DEFAULT_MIN_TRANSMISSION_DEG, sweep_columns
 from ..evaluator import PopulationEvaluator
+from ..per_design import capability_results
 from ..table import substitute
 from .sampling import DesignSpace
 
@@ -50,6 +53,9 @@ class ExplorePlan:
     min_transmission_angle: float = math.radians(DEFAULT_MIN_TRANSMISSION_DEG)
     #: results kept besides the default columns ([sweep] columns, catalogue keys)
     extra_columns: tuple[str, ...] = ()
+    #: runs one design's problem through the file's stages, for the columns of a capability that declares no
+    #: population form (:mod:`machdyn.studies.per_design`); None: such columns are NaN (a check without a run)
+    run_design: Any = None
 
     @property
     def fingerprint(self) -> str:
@@ -110,9 +116,21 @@ def evaluate_designs(plan: ExplorePlan, values: np.ndarray) -> dict[str, np.ndar
     :func:`~machdyn.results.population.sweep_columns` under their catalogue keys."""
     mech, speed, accel = build_designs(plan, values)
     machine = getattr(plan.problem.mechanism, "machine", None)
-    wanted = sweep_columns(mech, machine, plan.objective, plan.extra_columns)
-    evaluator = PopulationEvaluator(plan.angles, speed, accel, plan.about, machine, plan.min_transmission_angle)
-    res = evaluator.vectorised(mech, wanted)
+    by_capability = capability_columns(plan)
+    wanted = sweep_columns(mech, machine, plan.objective,
+                           tuple(k for k in plan.extra_columns if k not in by_capability))
+    evaluator = PopulationEvaluator(plan.angles, speed, accel, plan.about, machine, plan.min_transmission_angle,
+                                    run_design=plan.run_design, problem=plan.problem, varied=plan.space.names)
+    if by_capability:
+        # A capability's columns: from its population form, every design at once, where the capability declares
+        # one; else by a run of each regular design (NaN where no run is at hand, as in a check).
+        res = evaluator(mech, wanted, values.shape[0], by_capability if plan.run_design is not None else (),
+                        lambda i: _problem_of(plan, values[i]))
+        if plan.run_design is None:
+            res |= evaluator.at_once(mech, by_capability, values.shape[0], res)
+        res |= {k: np.full(values.shape[0], np.nan) for k in by_capability if k not in res}
+    else:
+        res = evaluator.vectorised(mech, wanted)
     missing = [(f"sweep.columns[{i}]", f"'{k}' is not a result of this mechanism")
                for i, k in enumerate(plan.extra_columns) if k not in res]
     if missing:
@@ -122,6 +140,24 @@ def evaluate_designs(plan: ExplorePlan, values: np.ndarray) -> dict[str, np.ndar
         if key != "assembled_fraction":
             columns[key] = data if data.dtype.kind in "fb" else data.astype(str)
     return columns
+
+
+def capability_columns(plan: ExplorePlan) -> tuple[str, ...]:
+    """The ``[sweep] columns`` that are results of the file's capability tables (``parts.utilisation.max``), not
+    of its linkage (which the population's engine call gives)."""
+    declared = capability_results(plan.problem)
+    quantities = catalogue()
+
+    def of_a_capability(key: str) -> bool:
+        found = find(key, quantities)
+        return key in declared and found is not None and found[0].producer in CAPABILITIES
+
+    return tuple(k for k in plan.extra_columns if of_a_capability(k))
+
+
+def _problem_of(plan: ExplorePlan, row: np.ndarray) -> Any:
+    """The validated problem of one design of the space (its quantities set), for a run of it."""
+    return substitute(plan.problem, {p: float(v) for p, v in zip(plan.space.names, row, strict=True)})
 
 
 def evaluate_partition(plan: ExplorePlan, index: int, values: np.ndarray) -> dict[str, np.ndarray]:

@@ -41,10 +41,12 @@ from .store import PartitionStore, read_exploration
 MAX_PARTITIONS = 1_000_000
 
 
-def plan_exploration(problem: Any) -> ExplorePlan:
+def plan_exploration(problem: Any, run_design: Any = None) -> ExplorePlan:
     """The plan of a linkage problem's ``[sweep]``: quantities checked, the space sized, the vectorised build
     of the models checked against design-by-design building on a few designs. Every mistake is reported with
-    its path (:class:`~machdyn.errors.ProblemFileError`)."""
+    its path (:class:`~machdyn.errors.ProblemFileError`). ``run_design`` runs one design's problem through the
+    file's stages, for the columns of a capability without a population form
+    (:func:`~machdyn.studies.exploration.evaluate.evaluate_designs`)."""
     spec = problem.sweep
     quantities = explore_quantities(problem)
     space = DesignSpace(quantities, spec.sampling, spec.samples, spec.seed or 0, spec.partition or DEFAULT_PARTITION)
@@ -57,7 +59,8 @@ def plan_exploration(problem: Any) -> ExplorePlan:
                                                     f"make more than {MAX_PARTITIONS:,} partitions; give a partition "
                                                     f"of at least {least:,} designs")])
     plan = ExplorePlan(problem, space, crank_angles(problem), tuple(problem.output.shaking_moment_about),
-                       spec.goal, min_transmission_angle=spec.transmission_limit, extra_columns=spec.extra_columns)
+                       spec.goal, min_transmission_angle=spec.transmission_limit, extra_columns=spec.extra_columns,
+                       run_design=run_design)
     _, first = next(partition_designs(space, [0]))
     probe = first[np.unique([0, first.shape[0] // 2, first.shape[0] - 1])]
     plan = replace(plan, vectorised=check_vectorised_build(plan, probe))
@@ -211,6 +214,7 @@ def explore(
     on_partition: Callable[[int], None] | None = None,
     source: str | None = None,
     replace: bool | None = None,
+    run_design: Any = None,
 ) -> Exploration:
     """Explore the design space of a linkage problem with a ``[sweep]`` table (a problem, a path or TOML text).
 
@@ -224,11 +228,14 @@ def explore(
     on_partition : ``on_partition(index)`` after each partition computed is written.
     replace : replace a store that is not this problem's (another problem file's, or partitions without a
         manifest) instead of refusing it (default: the execution settings').
+    run_design : runs one design's problem through the file's stages (a module's function, so that Dask can
+        send it), for the columns of a capability without a population form; the columns of a capability with
+        one come from it, every design of a partition at once.
     """
     if isinstance(problem, str | os.PathLike):
         loaded = read_problem(problem)
         problem, source = loaded.spec, loaded.source if source is None else source
-    plan = plan_exploration(problem)
+    plan = plan_exploration(problem, run_design)
     settings = current()
     folder = _store_folder(plan, store, settings.store, source)
     workers, scheduler = _where(workers, scheduler, problem.sweep)

@@ -21,7 +21,7 @@ import numpy as np
 from ...errors import MachdynError
 from ...results.population import DEFAULT_MIN_TRANSMISSION_DEG
 from ..evaluator import PopulationEvaluator
-from ..exploration.execution import announce_estimate
+from ..exploration.execution import announce_estimate, current
 from .constraints import CLOSES, violations
 from .result import History, NoFeasibleDesign
 
@@ -61,9 +61,11 @@ class Evaluator:
 
     def evaluator(self, speed: Any = 0.0, acceleration: Any = 0.0) -> PopulationEvaluator:
         """The studies' evaluator at the drive's ``speed`` and ``acceleration`` (one per design, or floats), on the
-        compiled pass of the population evaluator (:mod:`machdyn.linkage.fused_population`)."""
+        compiled pass of the population evaluator (:mod:`machdyn.linkage.fused_population`); the designs' own runs
+        on the worker processes the execution settings give (``--workers``)."""
         return PopulationEvaluator(self.phi, speed, acceleration, self.about, self.machine,
                                    self.min_transmission_angle, engine="fused", run_design=self.run_design,
+                                   workers=current().workers or 1,
                                    problem=self.space.problem,
                                    varied=tuple(v.path for v in self.space.variables if v.path is not None)
                                    + tuple(f.path for f in self.space.formulas))

@@ -15,6 +15,9 @@ from ...pipeline import Capability, Outcome, StageContext
 from ...problem.build import crank_angles
 from ...results.catalogue import find, label
 from ...results.labels import Label
+from ..capability_population import population_keys
+from ..exploration.execution import current
+from ..per_design import where_designs_ran
 from ..views import analysed, design_problem
 from .evaluate import result_unit
 from .objectives import direction_advice
@@ -79,7 +82,7 @@ def run(ctx: StageContext) -> Outcome:
         # A well-formed table whose constraints no design within the bounds meets: the design fails its
         # checks (the rest of the run is still written), with the tightest constraints listed.
         return Outcome(results=None, scalars={"optimise.feasible": 0.0}, summary=("optimise.feasible",),
-                       failed_checks=(str(exc),))
+                       failed_checks=(str(exc),), warnings=tuple(_where_designs_ran(ctx)))
     if ctx.mechanism is not None:  # a linkage: the nominal design and the optimum played side by side
         result = with_views(ctx.problem, result)
     mech = ctx.mechanism
@@ -146,11 +149,30 @@ def run(ctx: StageContext) -> Outcome:
         for j, o in enumerate(result.objectives):
             columns[o.result] = (result.front_f[:, j], "" if o.sense == "target" else o.unit)
         series["optimise_front"] = columns
+    warnings = list(result.warnings) + _where_designs_ran(ctx)
     failed = () if result.verified else (
         "The best design, rebuilt from its own problem file, breaks a constraint.",)
     return Outcome(results=result, scalars=scalars, labels=labels, series=series, summary=tuple(summary),
                    files={"best_design.toml": str(result.problem_text)},
-                   warnings=tuple(result.warnings), failed_checks=failed)
+                   warnings=tuple(warnings), failed_checks=failed)
+
+
+def _where_designs_ran(ctx: StageContext) -> list[str]:
+    """With ``--workers``: a line saying that the results no population form gives ran per design on the
+    workers (as an exploration says where its partitions ran)."""
+    workers = current().workers or 1
+    if workers <= 1:
+        return []
+    try:
+        ev = setup(ctx.problem, ctx.table, ctx.run_design)
+    except ProblemFileError:
+        return []
+    varied = [v.path for v in ev.space.variables if v.path is not None] + [f.path for f in ev.space.formulas]
+    at_once = population_keys(ctx.problem, ev.per_design_wanted, varied)
+    per_design = sorted(k for k in ev.per_design_wanted if k not in at_once)
+    if not per_design:
+        return []
+    return [f"{', '.join(per_design)}: no population form, evaluated {where_designs_ran(workers)} (--workers)."]
 
 
 def with_views(problem: Any, result: Any) -> Any:

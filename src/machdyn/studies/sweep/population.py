@@ -19,8 +19,10 @@ from ...results.catalogue import label
 from ...results.labels import Label
 from ...results.names import did_you_mean_result, results_to_choose
 from ...results.population import FAULTS, result_names, result_unit, sweep_columns
+from ..capability_population import population_keys as population_results_keys
 from ..evaluator import PopulationEvaluator
-from ..per_design import capability_results
+from ..exploration.execution import current
+from ..per_design import capability_results, where_designs_ran
 from ..table import expand_sweep
 from ..views import MAX_VIEWS, analysed, design_problem
 
@@ -106,11 +108,27 @@ def run_sweep(problem: Any, run_design: Any = None) -> SweepRun:
     by_run = {k: u for k, u in capability_results(problem).items() if k in problem.sweep.extra_columns}
     wanted = sweep_columns(mech, machine, extra=tuple(k for k in problem.sweep.extra_columns if k not in by_run))
     evaluator = PopulationEvaluator(angles, speed, accel, about, machine, problem.sweep.transmission_limit,
-                                    run_design=run_design, problem=problem, varied=(plan.parameter,))
+                                    run_design=run_design, problem=problem, varied=(plan.parameter,),
+                                    workers=current().workers or 1)
     per_design = by_run if run_design is not None else {}
     columns = evaluator(mech, wanted, len(plan.problems), per_design, plan.problems.__getitem__)
     units = {k: per_design[k] if k in per_design else result_unit(k, mech) for k in columns}
     return SweepRun(plan, columns, units)
+
+
+def _where_columns_ran(problem: Any, run_design: Any) -> list[str]:
+    """With ``--workers``: a line saying that the columns no population form gives ran per design on them."""
+    workers = current().workers or 1
+    if workers <= 1 or run_design is None:
+        return []
+    by_run = [k for k in capability_results(problem) if k in problem.sweep.extra_columns]
+    if not by_run:
+        return []
+    at_once = population_results_keys(problem, by_run)
+    per_design = sorted(k for k in by_run if k not in at_once)
+    if not per_design:
+        return []
+    return [f"{', '.join(per_design)}: no population form, evaluated {where_designs_ran(workers)} (--workers)."]
 
 
 def _shown(values: np.ndarray) -> list:
@@ -164,7 +182,7 @@ def run(ctx: StageContext) -> Outcome:
         values[key] = float(np.count_nonzero(status == fault))
         if values[key]:
             summary.append(key)
-    warnings = []
+    warnings = _where_columns_ran(ctx.problem, ctx.run_design)
     if regular.any():
         for key in RANKED:
             data = np.where(regular, cols[key], np.inf)

@@ -37,7 +37,14 @@ from ...results.labels import Label
 from ...results.names import did_you_mean_result, results_to_choose
 from ..exploration.execution import announce_estimate, current
 from ..kind_population import sweep_at_once
-from ..per_design import KnownResults, capability_results, unit_of
+from ..per_design import (
+    KnownResults,
+    Portable,
+    capability_results,
+    run_in_parallel,
+    unit_of,
+    where_designs_ran,
+)
 from ..table import expand_sweep
 from .population import SweepRun
 
@@ -145,6 +152,19 @@ def _run_one(problem: Any, path: str, value: float, run_design: Any, asked: tupl
     return f"{FAILED_CHECK}: {failed[0]}" if failed else REGULAR
 
 
+def _variant(problem: Any, path: str, value: float, run_design: Any,
+             asked: tuple[str, ...]) -> tuple[str, dict[str, float]]:
+    """(status, values) of one variant: :func:`_run_one` as one call a worker process can make."""
+    row: dict[str, float] = {}
+    return _run_one(problem, path, value, run_design, asked, row), row
+
+
+def _portable_variant(portable: Portable, path: str, value: float, run_design: Any,
+                      asked: tuple[str, ...]) -> tuple[str, dict[str, float]]:
+    """:func:`_variant` in a worker process, of the problem sent to it."""
+    return _variant(portable.problem, path, value, run_design, asked)
+
+
 def run_sweep(problem: Any, run_design: Any) -> RunSweep:
     """The variants of ``problem``'s ``[sweep]``, each run by ``run_design`` (a validated problem -> its results
     by key, SI): the columns asked for (NaN where a variant has no value), ``regular`` and ``status``."""
@@ -156,21 +176,37 @@ def run_sweep(problem: Any, run_design: Any) -> RunSweep:
     columns: dict[str, np.ndarray] = {key: np.full(n, math.nan) for key in asked}
     status = []
     progress = current().progress
+    workers = current().workers or 1
     started = time.perf_counter()
     at_once = sweep_at_once(problem, plan.parameter, plan.values_si, asked) if asked else None
-    for i, value in enumerate(plan.values_si):
-        row: dict[str, float] = {}
-        if at_once is not None and all(np.isfinite(at_once[k][i]) for k in asked):  # the kind's population form
-            row = {k: float(at_once[k][i]) for k in asked}
-            status.append(REGULAR)
+    # the kind's population form gives a variant at once; the others are run whole (on --workers processes)
+    done: dict[int, tuple[str, dict[str, float]]] = {}
+    whole = []
+    for i in range(n):
+        if at_once is not None and all(np.isfinite(at_once[k][i]) for k in asked):
+            done[i] = (REGULAR, {k: float(at_once[k][i]) for k in asked})
         else:
-            status.append(_run_one(problem, plan.parameter, float(value), run_design, asked, row))
+            whole.append(i)
+    if workers > 1 and len(whole) > 1:
+        portable = Portable(problem)
+        ran = run_in_parallel(_portable_variant, [(portable, plan.parameter, float(plan.values_si[i]), run_design,
+                                                   asked) for i in whole], workers)
+        done.update(zip(whole, ran, strict=True))
+    else:
+        for j, i in enumerate(whole):
+            done[i] = _variant(problem, plan.parameter, float(plan.values_si[i]), run_design, asked)
+            if j == 0 and at_once is None:  # the first variant's time, for the whole sweep
+                announce_estimate((time.perf_counter() - started) * n,
+                                  f"{n} variants of {plan.parameter}, each run whole")
+            if progress is not None:
+                progress(len(done), n)
+    if progress is not None and (not whole or (workers > 1 and len(whole) > 1)):  # else the loop said n of n
+        progress(n, n)
+    for i in range(n):
+        said, row = done[i]
+        status.append(said)
         for key, v in row.items():
             columns[key][i] = v
-        if i == 0 and at_once is None:  # the first variant's time, for the whole sweep
-            announce_estimate((time.perf_counter() - started) * n, f"{n} variants of {plan.parameter}, each run whole")
-        if progress is not None:
-            progress(i + 1, n)
     units = {key: unit_of(key, problem) or "" for key in asked}
     columns["regular"] = np.array([is_regular(s) for s in status], dtype=bool)
     columns["status"] = np.array(status, dtype=object)
@@ -221,8 +257,11 @@ def run(ctx: StageContext) -> Outcome:
     warnings = [f"sweep variant {i + 1} ({plan.parameter} = {plan.values_display[i]:.6g} {unit}) {status}"
                 for i, status in enumerate(values["sweep.status"]) if status != REGULAR]
     settings = current()
-    if settings.workers is not None or settings.scheduler is not None:
-        warnings.append("--workers and --scheduler spread a linkage exploration's designs; the variants of this "
+    if settings.workers is not None:
+        warnings.append(f"The variants of this sweep of {plan.parameter} ran {where_designs_ran(settings.workers)} "
+                        "(--workers).")
+    elif settings.scheduler is not None:
+        warnings.append("--scheduler spreads a linkage exploration's designs; the variants of this "
                         f"sweep of {plan.parameter} ran one after another in this process.")
     if not regular.any():
         warnings.append(f"No variant of the sweep of {plan.parameter} was built, ran and reported every column "

@@ -57,7 +57,7 @@ def run(ctx: StageContext) -> Outcome:
         return sweep_runs.run(ctx)
     if not ctx.table.is_exploration:
         return one_quantity.run(ctx)
-    return outcome(played(explore(ctx.problem, source=ctx.source)))
+    return outcome(played(explore(ctx.problem, source=ctx.source, run_design=ctx.run_design)))
 
 
 def _by_runs(problem: Any) -> bool:
