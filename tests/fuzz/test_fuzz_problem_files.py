@@ -32,7 +32,7 @@ from reproductions import replaced
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
 SEED = 20261123
-CASES = 600  # spread evenly over the shipped examples
+CASES = 400  # spread evenly over the shipped examples (8 a file; the seed set and the table fuzz add theirs)
 FULL_RUNS = 40
 
 # ------------------------------------------------------------------------------------ a minimal TOML writer
