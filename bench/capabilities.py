@@ -311,8 +311,8 @@ angle = "180 deg"
         out = []
         for i in range(n_single):
             one = mech.take_designs(i)
-            out.append(study_frame(problem.frame, one, analyse(one, phi, 60.0, diagnostics=False)).acceleration
-                       .mean_reduction)
+            study = study_frame(problem.frame, one, analyse(one, phi, 60.0, diagnostics=False))
+            out.append(study.acceleration.mean_reduction / 100.0)  # the study's percent; the key is a fraction
         return out
 
     slow = _rate(single, n_single, repeats)
