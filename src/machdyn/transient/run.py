@@ -480,3 +480,21 @@ def _result(model, scenario, t, y, n, nq, profile, held, segments, ended, counte
         force = np.zeros((0, t.size))
     return Transient(model, scenario, t, phi, omega, torque, q, dq, force, works, energy, ended, counter["calls"],
                      time.perf_counter() - counter["start"], rows, twists)
+
+
+def balance_scalars(run, final_speed: float, captured: bool) -> dict[str, float]:
+    """The results every ``[transient]`` run reports from its time history ``run`` (a :class:`Transient` or a
+    shaft line's run: ``works`` [J] of the drive, the loads, the mounts and the brake over time, ``energy`` [J],
+    ``energy_error``, ``evaluations``): the final speed [rad/s], capture (1/0) and the energy balance's terms."""
+    w = run.works[:, -1]
+    return {
+        "transient.final_speed": final_speed,
+        "transient.captured": float(captured),
+        "transient.motor_work": float(w[0]),
+        "transient.load_work": float(-w[1]),
+        "transient.mount_dissipation": float(w[2]),
+        "transient.brake_dissipation": float(w[3]),
+        "transient.energy_change": float(run.energy[-1] - run.energy[0]),
+        "transient.energy_error": run.energy_error,
+        "transient.evaluations": float(run.evaluations),
+    }

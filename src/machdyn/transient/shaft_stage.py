@@ -26,7 +26,7 @@ from ..shafts.frame6 import modes6
 from ..shafts.model import ShaftLine
 from ..shafts.model import build as build_line
 from .passage import AmplitudeCurve, Passage, amplitude_curve, capture, passages
-from .run import Scenario, TransientLimitError
+from .run import Scenario, TransientLimitError, balance_scalars
 from .shaft_model import shaft_frame_model
 from .shaft_run import ShaftTransient, run_shaft_scenario
 
@@ -208,17 +208,8 @@ def outcome_of(r: ShaftTransientRun) -> Outcome:
     run = r.run
     u = run.point_displacement(r.point)
     amp = np.sqrt(np.sum(u * u, axis=0))
-    w = run.works[:, -1]
     values: dict[str, Any] = {
-        "transient.final_speed": r.final_speed,
-        "transient.captured": float(r.captured),
-        "transient.motor_work": float(w[0]),
-        "transient.load_work": float(-w[1]),
-        "transient.mount_dissipation": float(w[2]),
-        "transient.brake_dissipation": float(w[3]),
-        "transient.energy_change": float(run.energy[-1] - run.energy[0]),
-        "transient.energy_error": run.energy_error,
-        "transient.evaluations": float(run.evaluations),
+        **balance_scalars(run, r.final_speed, r.captured),
         "transient.peak_amplitude": float(amp.max()),
         "transient.peak_rotation": float(np.sqrt(np.sum(run.q[3:] ** 2, axis=0)).max()),
         "transient.peak_mount_force": float(np.abs(run.mount_force).max()),

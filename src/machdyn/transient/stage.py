@@ -28,7 +28,7 @@ from .electric import MotorRun, motor_run
 from .model import Exciter, carried_frame, coupled_model
 from .motor_table import MOTOR_LABELS, MOTOR_SUMMARY, MotorSpec, dq_motor, motor_checks, motor_scalars, motor_series
 from .passage import AmplitudeCurve, Passage, amplitude_curve, capture, passages
-from .run import Scenario, Transient, TransientLimitError, run_scenario
+from .run import Scenario, Transient, TransientLimitError, balance_scalars, run_scenario
 from .shaft_stage import ShaftDriveSpec, ShaftTransientRun, check_shaft_transient, is_shaft_line, run_shaft_transient
 from .torsion import TorsionRun, torsion_run, torsional_line
 from .torsion_results import (
@@ -296,18 +296,7 @@ def _outcome(r: TransientRun) -> Outcome:
     amp = np.hypot(*run.point_displacement(r.point)) if r.direction is None else np.abs(
         math.cos(r.direction) * run.point_displacement(r.point)[0]
         + math.sin(r.direction) * run.point_displacement(r.point)[1])
-    w = run.works[:, -1]
-    values: dict[str, Any] = {
-        "transient.final_speed": r.final_speed,
-        "transient.captured": float(r.captured),
-        "transient.motor_work": float(w[0]),
-        "transient.load_work": float(-w[1]),
-        "transient.mount_dissipation": float(w[2]),
-        "transient.brake_dissipation": float(w[3]),
-        "transient.energy_change": float(run.energy[-1] - run.energy[0]),
-        "transient.energy_error": run.energy_error,
-        "transient.evaluations": float(run.evaluations),
-    }
+    values: dict[str, Any] = balance_scalars(run, r.final_speed, r.captured)
     if math.isfinite(r.free_speed):
         values["transient.free_speed"] = r.free_speed
     if run.phi.shape[0] > 1:
