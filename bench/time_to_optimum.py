@@ -367,13 +367,24 @@ def best_known(problem: Problem, quick: bool) -> dict[str, Any]:
     generations = max(problem.long_run[1] // (4 if quick else 1), 10)
     tracker = Tracker(-math.inf, 10**12, math.inf)
     t0 = time.perf_counter()
-    try:
-        from machdyn.studies.optimisation.search import differential_evolution
+    from machdyn.studies.optimisation.result import NoFeasibleDesign
+    from machdyn.studies.optimisation.search import differential_evolution
 
+    try:
         differential_evolution(_Tracked(problem.evaluator, tracker), population=population, generations=generations,
                                tolerance=1e-12, seed=12345)
     except Reached:
         pass
+    except NoFeasibleDesign:
+        if generations >= problem.long_run[1]:
+            raise
+        # a shortened (--quick) run found no feasible design: the full long run is the reference then
+        generations = problem.long_run[1]
+        try:
+            differential_evolution(_Tracked(problem.evaluator, tracker), population=population,
+                                   generations=generations, tolerance=1e-12, seed=12345)
+        except Reached:
+            pass
     return {"value": tracker.best, "population": population, "generations": generations,
             "designs": tracker.evaluations, "seconds": time.perf_counter() - t0}
 
