@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError, MachdynError
+from ..results.labels import Label
 from ..vibration.modes import modes
 from . import fast
 from .electric import electrical_drives
@@ -498,3 +499,26 @@ def balance_scalars(run, final_speed: float, captured: bool) -> dict[str, float]
         "transient.energy_error": run.energy_error,
         "transient.evaluations": float(run.evaluations),
     }
+
+
+def passage_results(passages, with_frequency: bool = False) -> tuple[dict[str, float], dict[str, Any]]:
+    """The results of a run's resonance passages (:class:`~machdyn.transient.passage.Passage`): the largest
+    amplitude [m] and mount force [N] of any, the time in their bands [s], and each passage's own figures
+    (``transient.passage_<i>.*``) with their labels; ``with_frequency`` names each mode's frequency [Hz] too."""
+    if not passages:
+        return {}, {}
+    values = {"transient.passage_peak_amplitude": max(p.peak_amplitude for p in passages),
+              "transient.passage_peak_mount_force": max(p.peak_mount_force for p in passages),
+              "transient.passage_time": sum(p.time_in_band for p in passages)}
+    labels = {}
+    for i, p in enumerate(passages, start=1):
+        key = f"transient.passage_{i}"
+        hz = f", {p.frequency / (2 * math.pi):.3g} Hz" if with_frequency else ""
+        what = f"passage {i} (mode {p.mode}{hz}, {p.direction})"
+        for field, value, text, unit in (("time", p.time, "time of crossing", "s"),
+                                         ("peak_amplitude", p.peak_amplitude, "peak displacement", "m"),
+                                         ("peak_mount_force", p.peak_mount_force, "peak mount force", "N"),
+                                         ("time_in_band", p.time_in_band, "time within the band", "s")):
+            values[f"{key}.{field}"] = float(value)
+            labels[f"{key}.{field}"] = Label(f"Transient: {what}, {text}", unit, "mm" if unit == "m" else None)
+    return values, labels

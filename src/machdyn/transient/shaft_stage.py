@@ -26,7 +26,7 @@ from ..shafts.frame6 import modes6
 from ..shafts.model import ShaftLine
 from ..shafts.model import build as build_line
 from .passage import AmplitudeCurve, Passage, amplitude_curve, capture, passages
-from .run import Scenario, TransientLimitError, balance_scalars
+from .run import Scenario, TransientLimitError, balance_scalars, passage_results
 from .shaft_model import shaft_frame_model
 from .shaft_run import ShaftTransient, run_shaft_scenario
 
@@ -228,19 +228,9 @@ def outcome_of(r: ShaftTransientRun) -> Outcome:
                 values["transient.time_to_speed"] = float(run.t[reached[0]])
     if run.ended == "stopped":
         values["transient.stop_time"] = float(run.t[-1])
-    if r.passages:
-        values |= {"transient.passage_peak_amplitude": max(p.peak_amplitude for p in r.passages),
-                   "transient.passage_peak_mount_force": max(p.peak_mount_force for p in r.passages),
-                   "transient.passage_time": sum(p.time_in_band for p in r.passages)}
-        for i, p in enumerate(r.passages, start=1):
-            key = f"transient.passage_{i}"
-            what = f"passage {i} (mode {p.mode}, {p.frequency / (2 * math.pi):.3g} Hz, {p.direction})"
-            for field, value, text, unit in (("time", p.time, "time of crossing", "s"),
-                                             ("peak_amplitude", p.peak_amplitude, "peak displacement", "m"),
-                                             ("peak_mount_force", p.peak_mount_force, "peak mount force", "N"),
-                                             ("time_in_band", p.time_in_band, "time within the band", "s")):
-                values[f"{key}.{field}"] = float(value)
-                labels[f"{key}.{field}"] = Label(f"Transient: {what}, {text}", unit, "mm" if unit == "m" else None)
+    found, passage_labels = passage_results(r.passages, with_frequency=True)
+    values |= found
+    labels |= passage_labels
     failed: list[str] = []
     warnings: list[str] = []
     if run.energy_error > ENERGY_TOLERANCE:

@@ -28,7 +28,7 @@ from .electric import MotorRun, motor_run
 from .model import Exciter, carried_frame, coupled_model
 from .motor_table import MOTOR_LABELS, MOTOR_SUMMARY, MotorSpec, dq_motor, motor_checks, motor_scalars, motor_series
 from .passage import AmplitudeCurve, Passage, amplitude_curve, capture, passages
-from .run import Scenario, Transient, TransientLimitError, balance_scalars, run_scenario
+from .run import Scenario, Transient, TransientLimitError, balance_scalars, passage_results, run_scenario
 from .shaft_stage import ShaftDriveSpec, ShaftTransientRun, check_shaft_transient, is_shaft_line, run_shaft_transient
 from .torsion import TorsionRun, torsion_run, torsional_line
 from .torsion_results import (
@@ -318,22 +318,8 @@ def _outcome(r: TransientRun) -> Outcome:
             values["transient.time_to_speed"] = float(run.t[reached[0]])
     if run.ended == "stopped":
         values["transient.stop_time"] = float(run.t[-1])
-    labels: dict[str, Label] = {}
-    if r.passages:
-        values |= {"transient.passage_peak_amplitude": max(p.peak_amplitude for p in r.passages),
-                   "transient.passage_peak_mount_force": max(p.peak_mount_force for p in r.passages),
-                   "transient.passage_time": sum(p.time_in_band for p in r.passages)}
-        for i, p in enumerate(r.passages, start=1):
-            key = f"transient.passage_{i}"
-            what = f"passage {i} (mode {p.mode}, {p.direction})"
-            for field, value, text, unit in (
-                    ("time", p.time, "time of crossing", "s"),
-                    ("peak_amplitude", p.peak_amplitude, "peak displacement", "m"),
-                    ("peak_mount_force", p.peak_mount_force, "peak mount force", "N"),
-                    ("time_in_band", p.time_in_band, "time within the band", "s")):
-                values[f"{key}.{field}"] = float(value)
-                labels[f"{key}.{field}"] = Label(f"Transient: {what}, {text}", unit,
-                                                 "mm" if unit == "m" else None)
+    found, labels = passage_results(r.passages)
+    values |= found
     warnings: list[str] = []
     failed: list[str] = []
     if run.energy_error > ENERGY_TOLERANCE:
