@@ -333,6 +333,10 @@ def analyse(problem: CamProblem, model: CamModel, step: Step) -> Outcome:
     each = strokes(model.program, model.follower, speed, sized, spring, model.arm)
     for stroke in each:
         values |= {stroke.key(name): value for name, value in stroke.figures.items()}
+    for name in ("max_velocity", "max_acceleration", "max_jerk"):  # the turn's peak is its strokes' exact one
+        exact = [stroke.figures[name] for stroke in each if name in stroke.figures]
+        if exact:
+            values[f"cam.{name}"] = max(values[f"cam.{name}"], *exact)
     labels |= stroke_labels(each, osc)
     result = CamResult(model, speed, chk, spring, forces, sim, cam.rotation == "cw",
                        None if cam.checks.face_width is None else float(cam.checks.face_width), each)
